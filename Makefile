@@ -1,0 +1,81 @@
+# bloom: fixed-point streaming bloom engine.
+#   make            library and host tools (build/)
+#   make test       every test (installs its Debian packages first if missing)
+#   make demo       a real image through the engine: before/after + error summary
+#   make freestanding  Cortex-M4 build of the core; proves it needs only memcpy/memset
+#   make tables     regenerate src/bloom_tables.c
+#   make deps       install the Debian packages the targets use
+
+CC ?= cc
+CLANG ?= clang
+ARM_CC ?= arm-none-eabi-gcc
+ARM_NM ?= arm-none-eabi-nm
+B := build
+
+WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
+        -Wcast-align -Wpointer-arith -Wvla
+CFLAGS ?= -O2 -g
+CPPFLAGS_CORE := -Iinclude -Isrc
+HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
+SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+
+CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c
+CORE_HDR := include/bloom.h include/bloom_config.h src/bloom_internal.h
+SIM_SRC := sim/bloom_model.c sim/imgio.c
+SIM_HDR := sim/bloom_model.h sim/imgio.h
+TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
+
+.PHONY: all test demo freestanding tables check-tables deps clean clang-build
+.DELETE_ON_ERROR:
+
+all: $(B)/libbloom.a $(B)/bloom_demo
+
+# ---- optimised host build ------------------------------------------------
+$(B)/obj/%.o: src/%.c $(CORE_HDR) | $(B)/obj
+	$(CC) $(WARN) $(CFLAGS) $(CPPFLAGS_CORE) -c $< -o $@
+$(B)/libbloom.a: $(patsubst src/%.c,$(B)/obj/%.o,$(CORE_SRC))
+	rm -f $@ && ar rcs $@ $^
+$(B)/bloom_demo: sim/bloom_demo.c $(SIM_SRC) $(SIM_HDR) $(B)/libbloom.a
+	$(CC) $(WARN) $(CFLAGS) $(HOST_CPPFLAGS) sim/bloom_demo.c $(SIM_SRC) $(B)/libbloom.a -lm -o $@
+$(B)/gen_tables: sim/gen_tables.c | $(B)
+	$(CC) $(WARN) -O2 $< -lm -o $@
+
+# ---- sanitized test build ------------------------------------------------
+$(B)/san/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) | $(B)/san
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
+
+# Same core with clang, warnings as errors (a compile check).
+clang-build: | $(B)/clang
+	$(CLANG) $(WARN) -O2 $(CPPFLAGS_CORE) -c $(CORE_SRC)
+	@mv -f *.o $(B)/clang/
+
+# Cortex-M4, freestanding: the core objects may reference memcpy/memset only.
+freestanding: | $(B)/arm
+	@for f in $(CORE_SRC); do \
+	  $(ARM_CC) $(WARN) -Os -mcpu=cortex-m4 -mthumb -ffreestanding $(CPPFLAGS_CORE) \
+	    -c $$f -o $(B)/arm/$$(basename $$f .c).o || exit 1; done
+	@$(ARM_CC) -r -nostdlib -o $(B)/arm/bloom_core.o $(patsubst src/%.c,$(B)/arm/%.o,$(CORE_SRC))
+	@undef=$$($(ARM_NM) -u $(B)/arm/bloom_core.o | awk '{print $$NF}' | sort -u); \
+	bad=$$(echo "$$undef" | grep -vx 'memcpy\|memset' | grep .); \
+	if [ -n "$$bad" ]; then echo "freestanding: the core needs more than memcpy/memset:" $$bad; exit 1; fi; \
+	echo "freestanding: Cortex-M4 core references only:" $$undef
+
+tables: $(B)/gen_tables
+	$(B)/gen_tables > src/bloom_tables.c
+check-tables: $(B)/gen_tables
+	$(B)/gen_tables | cmp -s - src/bloom_tables.c || { echo "src/bloom_tables.c is stale: run make tables"; exit 1; }
+
+deps:
+	sh tests/deps.sh
+
+test: deps $(addprefix $(B)/san/,$(TESTS))
+	BLOOM_DATA_DIR=tests/data sh tests/run.sh $(B)/san $(TESTS)
+
+demo: deps $(B)/bloom_demo
+	$(B)/bloom_demo tests/data/rocket_floodlights.ppm $(B)/demo
+
+$(B) $(B)/obj $(B)/san $(B)/clang $(B)/arm:
+	mkdir -p $@
+
+clean:
+	rm -rf $(B)

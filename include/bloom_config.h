@@ -1,0 +1,35 @@
+/* Compile-time switches of the bloom core.
+ *
+ * Every switch has a default here; override with -D on the command line or
+ * by defining it before this header is included (LVGL style). */
+#ifndef BLOOM_CONFIG_H
+#define BLOOM_CONFIG_H
+
+/* Pixel formats compiled into the row kernels. A format that is compiled out
+ * is refused by bloom_query()/bloom_init() with BLOOM_E_FORMAT. */
+#ifndef BLOOM_USE_RGB888
+#define BLOOM_USE_RGB888 1
+#endif
+#ifndef BLOOM_USE_XRGB8888
+#define BLOOM_USE_XRGB8888 1
+#endif
+#ifndef BLOOM_USE_RGB565
+#define BLOOM_USE_RGB565 1
+#endif
+#ifndef BLOOM_USE_RGBQ16
+#define BLOOM_USE_RGBQ16 1 /* linear Q16.16 words: HDR input and output */
+#endif
+
+/* Internal consistency checks of the row scheduler (cheap: per row, never
+ * per pixel). Keep them on unless code size is the last word. */
+#ifndef BLOOM_CHECK_RINGS
+#define BLOOM_CHECK_RINGS 1
+#endif
+
+/* Pixels per chunk of the fused output kernel: a stack buffer of
+ * 3 * 4 * BLOOM_OUT_CHUNK bytes. */
+#ifndef BLOOM_OUT_CHUNK
+#define BLOOM_OUT_CHUNK 16
+#endif
+
+#endif

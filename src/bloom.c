@@ -1,0 +1,567 @@
+/* The engine: configuration, the row scheduler, workspace carving.
+ *
+ * Scheduling is pull-driven: an output row asks for the U_1 rows it needs,
+ * each U_k row for the U_{k+1} rows and the D_k row it needs, each D_k row
+ * for the D_{k-1} rows below it, down to the source rows pushed so far. A
+ * request that cannot be met yet returns false and is resumed later, so the
+ * order of row computations is fixed by the frame geometry alone, whatever
+ * way the caller feeds rows. bloom_query() runs the same scheduler "dry"
+ * (counters only) to find how many rows each ring must hold.
+ *
+ * Levels 1 and 2 are never delayed: the up pass recomputes D_1 from source
+ * rows into a short ring (E1) and, when L >= 3, D_2 from E1, so only levels
+ * >= 3 keep delay lines (sim/docs/streaming.md). */
+#include <string.h>
+
+#include "bloom_internal.h"
+
+static inline int imin(int a, int b)
+{
+    return a < b ? a : b;
+}
+static inline int imax(int a, int b)
+{
+    return a > b ? a : b;
+}
+static inline int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+int bloom_format_bpp(bloom_format_t fmt)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        return 3;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        return 4;
+#endif
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        return 2;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        return 12;
+#endif
+    default:
+        return 0;
+    }
+}
+
+const char *bloom_status_str(bloom_status_t st)
+{
+    switch (st) {
+    case BLOOM_OK: return "ok";
+    case BLOOM_AGAIN: return "no output row ready: push more source rows";
+    case BLOOM_DONE: return "frame complete";
+    case BLOOM_E_NULL: return "null pointer argument";
+    case BLOOM_E_SIZE: return "width and height must be 1 .. 16384";
+    case BLOOM_E_LEVELS: return "levels must be 1 .. 16";
+    case BLOOM_E_THRESHOLD: return "threshold above 256.0 (Q16.16 16777216)";
+    case BLOOM_E_KNEE: return "soft knee above 1.0 (Q16.16 65536)";
+    case BLOOM_E_INTENSITY: return "intensity above 10.0 (Q16.16 655360)";
+    case BLOOM_E_FORMAT: return "pixel format unknown or compiled out";
+    case BLOOM_E_FLAGS: return "unknown flag bits";
+    case BLOOM_E_WORKSPACE: return "workspace smaller than bloom_workspace_size()";
+    case BLOOM_E_ALIGN: return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
+    case BLOOM_E_BUSY: return "source ring full: pull output rows before pushing more";
+    case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
+    case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
+    }
+    return "unknown status";
+}
+
+void bloom_config_default(bloom_config_t *cfg, int width, int height)
+{
+    memset(cfg, 0, sizeof *cfg);
+    cfg->width = width;
+    cfg->height = height;
+    cfg->in_fmt = cfg->out_fmt = BLOOM_FMT_RGB888;
+    cfg->levels = 5;
+    cfg->threshold = BLOOM_ONE;
+    cfg->soft_knee = BLOOM_ONE / 2u;
+    cfg->intensity = BLOOM_ONE;
+    cfg->flags = 0;
+}
+
+static bloom_status_t validate(const bloom_config_t *c)
+{
+    if (c->width < 1 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM)
+        return BLOOM_E_SIZE;
+    if (c->levels < 1 || c->levels > BLOOM_MAX_LEVELS)
+        return BLOOM_E_LEVELS;
+    if (c->threshold > BLOOM_MAX_THRESHOLD)
+        return BLOOM_E_THRESHOLD;
+    if (c->soft_knee > BLOOM_ONE)
+        return BLOOM_E_KNEE;
+    if (c->intensity > BLOOM_MAX_INTENSITY)
+        return BLOOM_E_INTENSITY;
+    if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
+        return BLOOM_E_FORMAT;
+    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE))
+        return BLOOM_E_FLAGS;
+    return BLOOM_OK;
+}
+
+/* Geometry and quantized parameters; no buffers. */
+static void setup(bloom_t *b, const bloom_config_t *cfg)
+{
+    memset(b, 0, sizeof *b);
+    b->cfg = *cfg;
+    b->w[0] = cfg->width;
+    b->h[0] = cfg->height;
+    b->L = 1;
+    for (int k = 1; k <= BLOOM_MAX_LEVELS; k++) {
+        int w = (b->w[k - 1] + 1) / 2, h = (b->h[k - 1] + 1) / 2;
+        if (k > 1 && (k > cfg->levels || imin(w, h) < 2))
+            break;
+        b->w[k] = w;
+        b->h[k] = h;
+        b->L = k;
+    }
+    b->knee.t = cfg->threshold;
+    b->knee.k = (uint32_t)(((uint64_t)cfg->threshold * cfg->soft_knee + 32768u) >> 16);
+    b->out.in_fmt = cfg->in_fmt;
+    b->out.out_fmt = cfg->out_fmt;
+    b->out.linear = (cfg->flags & BLOOM_FLAG_LINEAR) != 0;
+    b->out.debug = (cfg->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
+    b->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
+    b->src_bpp = bloom_format_bpp(cfg->in_fmt);
+    b->src_row_bytes = (size_t)cfg->width * (size_t)b->src_bpp;
+}
+
+/* ---- consumers of each ring: the oldest row anyone still reads ---------- */
+
+#define FAR (1 << 30)
+
+static int oldest_src(const bloom_t *b)
+{
+    int o = b->out_n < b->h[0] ? b->out_n : FAR;
+    if (b->d_next[1] < b->h[1])
+        o = imin(o, 2 * b->d_next[1] - 1);
+    if (b->L >= 2 && b->e_next < b->h[1])
+        o = imin(o, 2 * b->e_next - 1);
+    return imax(o, 0);
+}
+
+/* Whether the up pass recomputes D_2 (from E1) instead of delaying it. */
+static bool recompute_d2(const bloom_t *b)
+{
+    return b->L >= 3;
+}
+
+static int oldest_E1(const bloom_t *b)
+{
+    int o = b->u_next[1];
+    if (recompute_d2(b) && b->u_next[2] < b->h[2])
+        o = imin(o, 2 * b->u_next[2] - 1);
+    return imax(o, 0);
+}
+
+static int oldest_D(const bloom_t *b, int k)
+{
+    int o = FAR;
+    if (k < b->L && b->d_next[k + 1] < b->h[k + 1])
+        o = 2 * b->d_next[k + 1] - 1;
+    if (k == b->L) { /* U_L is D_L */
+        if (k == 1)
+            o = imin(o, (b->out_n >> 1) - 1);
+        else
+            o = imin(o, (b->u_next[k - 1] >> 1) - 1);
+    } else if (k >= 3 || (k == 2 && !recompute_d2(b))) {
+        o = imin(o, b->u_next[k]);
+    }
+    return imax(o, 0);
+}
+
+static int oldest_U(const bloom_t *b, int k)
+{
+    return imax(((k == 1 ? b->out_n : b->u_next[k - 1]) >> 1) - 1, 0);
+}
+
+/* Claim the slot for row r of a ring whose oldest live row is `oldest`. */
+static uint32_t *ring_put(bloom_t *b, bloom_ring_t *rg, int *need, int r, int oldest)
+{
+    if (b->dry) {
+        *need = imax(*need, r - oldest + 1);
+        return NULL;
+    }
+#if BLOOM_CHECK_RINGS
+    if (r - rg->cap >= oldest)
+        b->failed = true;
+#endif
+    (void)need;
+    (void)oldest;
+    rg->tag[r % rg->cap] = r;
+    return rg->buf + (size_t)(r % rg->cap) * (size_t)rg->width * 3u;
+}
+
+static const uint32_t *ring_get(bloom_t *b, const bloom_ring_t *rg, int r)
+{
+#if BLOOM_CHECK_RINGS
+    if (rg->tag[r % rg->cap] != r)
+        b->failed = true;
+#else
+    (void)b;
+#endif
+    return rg->buf + (size_t)(r % rg->cap) * (size_t)rg->width * 3u;
+}
+
+static const uint8_t *src_get(bloom_t *b, int r)
+{
+    const int slot = r % b->src_cap;
+#if BLOOM_CHECK_RINGS
+    if (b->src_tag[slot] != r)
+        b->failed = true;
+#endif
+    if (b->src_copy)
+        return b->src_copy + (size_t)slot * b->src_row_bytes;
+    return b->src_ptr[slot];
+}
+
+/* D_1 row r from source rows 2r-1 .. 2r+2, box then knee. */
+static void compute_d1(bloom_t *b, int r, uint32_t *dst)
+{
+    const uint8_t *s[4];
+    for (int i = 0; i < 4; i++)
+        s[i] = src_get(b, clampi(2 * r - 1 + i, 0, b->h[0] - 1));
+    bloom_row_box_src_c(s, b->cfg.in_fmt, b->out.linear, dst, b->w[1], b->w[0]);
+    bloom_row_knee_c(dst, b->w[1], &b->knee);
+}
+
+/* The three rows of the level below (k+1) that tent row r of level k reads. */
+static void tent_rows(bloom_t *b, int k, int r, const uint32_t *u[3])
+{
+    const bloom_ring_t *rg = (k + 1 == b->L) ? &b->D[k + 1] : &b->U[k + 1];
+    const int m = r >> 1, hb = b->h[k + 1];
+    for (int i = 0; i < 3; i++)
+        u[i] = ring_get(b, rg, clampi(m - 1 + i, 0, hb - 1));
+}
+
+static bool ensure_D(bloom_t *b, int k, int j)
+{
+    while (b->d_next[k] <= j) {
+        const int r = b->d_next[k];
+        const int top = imin(2 * r + 2, b->h[k - 1] - 1);
+        if (k == 1 ? top >= b->src_n : !ensure_D(b, k - 1, top))
+            return false;
+        uint32_t *dst = ring_put(b, &b->D[k], &b->need_D[k], r, oldest_D(b, k));
+        if (dst) {
+            if (k == 1) {
+                compute_d1(b, r, dst);
+            } else {
+                const uint32_t *s[4];
+                for (int i = 0; i < 4; i++)
+                    s[i] = ring_get(b, &b->D[k - 1], clampi(2 * r - 1 + i, 0, b->h[k - 1] - 1));
+                bloom_row_box_c(s, dst, b->w[k], b->w[k - 1]);
+            }
+        }
+        b->d_next[k]++;
+    }
+    return true;
+}
+
+/* E1: D_1 recomputed from the source for the up pass. */
+static bool ensure_E1(bloom_t *b, int j)
+{
+    while (b->e_next <= j) {
+        const int r = b->e_next;
+        if (imin(2 * r + 2, b->h[0] - 1) >= b->src_n)
+            return false;
+        uint32_t *dst = ring_put(b, &b->E1, &b->need_E1, r, oldest_E1(b));
+        if (dst)
+            compute_d1(b, r, dst);
+        b->e_next++;
+    }
+    return true;
+}
+
+static bool ensure_up(bloom_t *b, int k, int j);
+
+/* U_k row r = D_k row r + tent(rows of level k+1). */
+static bool ensure_U(bloom_t *b, int k, int j)
+{
+    while (b->u_next[k] <= j) {
+        const int r = b->u_next[k];
+        if (!ensure_up(b, k + 1, imin((r >> 1) + 1, b->h[k + 1] - 1)))
+            return false;
+        bool ok;
+        if (k == 1)
+            ok = ensure_E1(b, r);
+        else if (k == 2 && recompute_d2(b))
+            ok = ensure_E1(b, imin(2 * r + 2, b->h[1] - 1));
+        else
+            ok = ensure_D(b, k, r);
+        if (!ok)
+            return false;
+        uint32_t *dst = ring_put(b, &b->U[k], &b->need_U[k], r, oldest_U(b, k));
+        if (dst) {
+            const uint32_t *u[3];
+            tent_rows(b, k, r, u);
+            if (k == 2 && recompute_d2(b)) {
+                const uint32_t *s[4];
+                for (int i = 0; i < 4; i++)
+                    s[i] = ring_get(b, &b->E1, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
+                bloom_row_box_c(s, dst, b->w[2], b->w[1]);
+            } else {
+                const bloom_ring_t *d = k == 1 ? &b->E1 : &b->D[k];
+                memcpy(dst, ring_get(b, d, r), (size_t)b->w[k] * 3u * sizeof *dst);
+            }
+            bloom_row_tent_c(u, r & 1, dst, dst, 0, b->w[k], b->w[k + 1]);
+        }
+        b->u_next[k]++;
+    }
+    return true;
+}
+
+static bool ensure_up(bloom_t *b, int k, int j)
+{
+    return k == b->L ? ensure_D(b, k, j) : ensure_U(b, k, j);
+}
+
+/* ---- sizing and carving ---------------------------------------------- */
+
+static void dry_frame(bloom_t *b)
+{
+    b->dry = true;
+    for (int y = 0; y < b->h[0]; y++) {
+        b->need_src = imax(b->need_src, y - oldest_src(b) + 1);
+        b->src_n = y + 1;
+        while (b->out_n < b->h[0]) {
+            const int y_out = b->out_n;
+            if (!ensure_up(b, 1, imin((y_out >> 1) + 1, b->h[1] - 1)))
+                break;
+            b->latency = imax(b->latency, y - y_out);
+            b->out_n++;
+        }
+    }
+}
+
+static size_t align8(size_t n)
+{
+    return (n + 7u) & ~(size_t)7u;
+}
+
+/* Lay the rings out after the engine struct; with base NULL only count. */
+static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
+{
+    size_t off = align8(sizeof(bloom_t));
+    const int cap_src = imax(b->need_src, 1);
+#define TAKE(ptr, type, count)                                   \
+    do {                                                         \
+        if (base)                                                \
+            (ptr) = (type *)(void *)(base + off);                \
+        off = align8(off + sizeof(type) * (size_t)(count));      \
+    } while (0)
+    if (b->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
+        size_t before = off;
+        TAKE(b->src_copy, uint8_t, (size_t)cap_src * b->src_row_bytes);
+        if (per_level)
+            per_level[0] = off - before;
+    } else {
+        TAKE(b->src_ptr, const uint8_t *, cap_src);
+    }
+    TAKE(b->src_tag, int32_t, cap_src);
+    if (base)
+        b->src_cap = cap_src;
+    for (int k = 1; k <= b->L; k++) {
+        size_t before = off;
+        bloom_ring_t *rings[2] = {&b->D[k], k < b->L ? &b->U[k] : NULL};
+        const int caps[2] = {imax(b->need_D[k], 1), imax(b->need_U[k], 1)};
+        for (int i = 0; i < 2; i++) {
+            if (!rings[i])
+                continue;
+            TAKE(rings[i]->buf, uint32_t, (size_t)caps[i] * (size_t)b->w[k] * 3u);
+            TAKE(rings[i]->tag, int32_t, caps[i]);
+            if (base) {
+                rings[i]->cap = caps[i];
+                rings[i]->width = b->w[k];
+            }
+        }
+        if (k == 1 && b->L >= 2) {
+            const int cap = imax(b->need_E1, 1);
+            TAKE(b->E1.buf, uint32_t, (size_t)cap * (size_t)b->w[1] * 3u);
+            TAKE(b->E1.tag, int32_t, cap);
+            if (base) {
+                b->E1.cap = cap;
+                b->E1.width = b->w[1];
+            }
+        }
+        if (per_level)
+            per_level[k] = off - before;
+    }
+#undef TAKE
+    return off;
+}
+
+/* Configure b from cfg, including the dry run; no buffers yet. */
+static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *info)
+{
+    if (!cfg)
+        return BLOOM_E_NULL;
+    bloom_status_t st = validate(cfg);
+    if (st != BLOOM_OK)
+        return st;
+    setup(b, cfg);
+    dry_frame(b);
+    if (info) {
+        memset(info, 0, sizeof *info);
+        info->workspace_bytes = carve(b, NULL, info->ring_bytes);
+        info->levels = b->L;
+        for (int k = 0; k <= b->L; k++) {
+            info->level_w[k] = b->w[k];
+            info->level_h[k] = b->h[k];
+        }
+        info->latency_rows = b->latency;
+        info->source_rows = imax(b->need_src, 1);
+        info->threshold_q = b->knee.t;
+        info->knee_q = b->knee.k;
+        info->intensity_q = b->out.intensity;
+    }
+    return BLOOM_OK;
+}
+
+bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
+{
+    bloom_t tmp;
+    return plan(&tmp, cfg, info);
+}
+
+size_t bloom_workspace_size(const bloom_config_t *cfg)
+{
+    bloom_info_t info;
+    return bloom_query(cfg, &info) == BLOOM_OK ? info.workspace_bytes : 0u;
+}
+
+bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_config_t *cfg)
+{
+    if (!out || !ws || !cfg)
+        return BLOOM_E_NULL;
+    *out = NULL;
+    if ((uintptr_t)ws % BLOOM_WORKSPACE_ALIGN)
+        return BLOOM_E_ALIGN;
+    bloom_info_t info;
+    bloom_status_t st = bloom_query(cfg, &info);
+    if (st != BLOOM_OK)
+        return st;
+    if (ws_bytes < info.workspace_bytes)
+        return BLOOM_E_WORKSPACE;
+    bloom_t *b = (bloom_t *)ws;
+    plan(b, cfg, NULL);
+    b->dry = false;
+    size_t used = carve(b, (uint8_t *)ws, NULL);
+    if (used != info.workspace_bytes) /* the carving must end where sizing said */
+        return BLOOM_E_INTERNAL;
+    *out = b;
+    return bloom_begin(b);
+}
+
+/* ---- frames ------------------------------------------------------------ */
+
+bloom_status_t bloom_begin(bloom_t *b)
+{
+    if (!b)
+        return BLOOM_E_NULL;
+    b->src_n = b->out_n = b->e_next = 0;
+    memset(b->d_next, 0, sizeof b->d_next);
+    memset(b->u_next, 0, sizeof b->u_next);
+    b->failed = false;
+    for (int i = 0; i < b->src_cap; i++)
+        b->src_tag[i] = -1;
+    for (int k = 1; k <= b->L; k++) {
+        bloom_ring_t *rings[2] = {&b->D[k], k < b->L ? &b->U[k] : NULL};
+        for (int i = 0; i < 2; i++)
+            if (rings[i])
+                for (int s = 0; s < rings[i]->cap; s++)
+                    rings[i]->tag[s] = -1;
+    }
+    for (int s = 0; s < b->E1.cap; s++)
+        b->E1.tag[s] = -1;
+    return BLOOM_OK;
+}
+
+int bloom_rows_in(const bloom_t *b)
+{
+    return b->src_n;
+}
+
+int bloom_rows_out(const bloom_t *b)
+{
+    return b->out_n;
+}
+
+bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
+{
+    if (!b || !src_row)
+        return BLOOM_E_NULL;
+    if (b->src_n >= b->h[0])
+        return BLOOM_E_STATE;
+    const int r = b->src_n, slot = r % b->src_cap;
+    if (r - b->src_cap >= oldest_src(b))
+        return BLOOM_E_BUSY;
+    if (b->src_copy)
+        memcpy(b->src_copy + (size_t)slot * b->src_row_bytes, src_row, b->src_row_bytes);
+    else
+        b->src_ptr[slot] = (const uint8_t *)src_row;
+    b->src_tag[slot] = r;
+    b->src_n++;
+    return BLOOM_OK;
+}
+
+bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
+{
+    if (!b || !dst_row)
+        return BLOOM_E_NULL;
+    const int y = b->out_n;
+    if (y >= b->h[0])
+        return BLOOM_DONE;
+    if (y >= b->src_n || !ensure_up(b, 1, imin((y >> 1) + 1, b->h[1] - 1)))
+        return b->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
+    const uint32_t *u[3];
+    tent_rows(b, 0, y, u);
+    bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
+    if (b->failed)
+        return BLOOM_E_INTERNAL;
+    b->out_n++;
+    return BLOOM_OK;
+}
+
+bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows,
+                              void *dst, ptrdiff_t dst_stride)
+{
+    if (!b || !src || !dst)
+        return BLOOM_E_NULL;
+    const uint8_t *s = (const uint8_t *)src;
+    uint8_t *d = (uint8_t *)dst;
+    const int end = b->src_n + nrows;
+    if (nrows < 0 || end > b->h[0])
+        return BLOOM_E_STATE;
+    for (;;) {
+        bloom_status_t st;
+        do
+            st = bloom_pull_row(b, d + (ptrdiff_t)b->out_n * dst_stride);
+        while (st == BLOOM_OK);
+        if (st < 0)
+            return st;
+        if (b->src_n == end)
+            return BLOOM_OK;
+        st = bloom_push_row(b, s + (ptrdiff_t)b->src_n * src_stride);
+        if (st < 0)
+            return st; /* BUSY cannot happen right after a full drain */
+    }
+}
+
+bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
+                             ptrdiff_t dst_stride)
+{
+    bloom_status_t st = bloom_begin(b);
+    if (st == BLOOM_OK)
+        st = bloom_run_rows(b, src, src_stride, b->h[0], dst, dst_stride);
+    if (st == BLOOM_OK && b->out_n != b->h[0])
+        st = BLOOM_E_INTERNAL;
+    return st;
+}

@@ -1,0 +1,93 @@
+/* Internal declarations of the bloom core: tables, row kernels, engine state.
+ * Nothing here is API; tests include it to reach the row kernels. */
+#ifndef BLOOM_INTERNAL_H
+#define BLOOM_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "bloom.h"
+
+extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
+extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];
+
+/* Knee parameters, Q16.16 (docs/fixed-point.md step 3). */
+typedef struct {
+    uint32_t t, k;
+} bloom_knee_t;
+
+/* How the output kernel turns B into pixels. */
+typedef struct {
+    bloom_format_t in_fmt, out_fmt;
+    bool linear, debug;
+    uint32_t intensity; /* I_q */
+} bloom_out_t;
+
+/* floor(n / d) where the quotient is known to fit in 32 bits. */
+uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d);
+/* The portable shift-subtract loop behind it (tested against '/'). */
+uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d);
+/* srgb_to_linear of a gamma-space Q16.16 value, integer only. */
+uint32_t bloom_srgb_to_linear_q16(uint32_t i);
+
+/* Row kernels. Samples are interleaved R, G, B uint32_t (Q16.16).
+ * bloom_row_box: 4x4 box down of four source rows s[0..3] (width sw) into
+ * dst (width dw = ceil(sw / 2)). */
+void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
+/* The same, reading encoded pixels of fmt (decoding on the fly). */
+void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
+                         uint32_t *dst, int dw, int sw);
+/* The soft knee on a row of level-1 pixels, in place. */
+void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn);
+/* Tent up: destination columns x0 .. x0+n-1 of the row whose parity is odd,
+ * from rows u[0..2] (width sw). dst[i] (and add[i] if add is not NULL) is
+ * column x0 + i; dst = tent + add. add may equal dst. */
+void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                      int x0, int n, int sw);
+/* Output: tent of u[0..2] onto the full-resolution row, composite with the
+ * source row src, encode into dst. */
+void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
+                     int sw, const bloom_out_t *o);
+
+/* Pixel access (bloom_pixel.c). */
+void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
+void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
+
+/* A ring of rows of one pyramid level. tag[slot] is the row held there. */
+typedef struct {
+    uint32_t *buf;
+    int32_t *tag;
+    int cap;    /* rows */
+    int width;  /* pixels */
+} bloom_ring_t;
+
+struct bloom {
+    bloom_config_t cfg;
+    int L;
+    int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
+    bloom_knee_t knee;
+    bloom_out_t out;
+    int src_bpp;
+    size_t src_row_bytes;
+
+    bloom_ring_t D[BLOOM_MAX_LEVELS + 1]; /* D[1..L] */
+    bloom_ring_t U[BLOOM_MAX_LEVELS + 1]; /* U[1..L-1] */
+    bloom_ring_t E1;                      /* D_1 recomputed for the up pass */
+    const uint8_t **src_ptr;              /* source ring: pointers ... */
+    uint8_t *src_copy;                    /* ... or copies (COPY_SOURCE) */
+    int32_t *src_tag;
+    int src_cap;
+
+    /* progress */
+    int src_n, out_n;
+    int d_next[BLOOM_MAX_LEVELS + 1], u_next[BLOOM_MAX_LEVELS + 1], e_next;
+    bool failed;
+
+    /* dry run (sizing): no buffers, only the largest ring occupancy */
+    bool dry;
+    int need_src, need_D[BLOOM_MAX_LEVELS + 1], need_U[BLOOM_MAX_LEVELS + 1], need_E1;
+    int latency;
+};
+
+#endif
