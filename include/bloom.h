@@ -4,7 +4,7 @@
  * configuration needs, bloom_init() carves the engine out of the caller's
  * buffer. Frames go through row by row (bloom_push_row / bloom_pull_row) or
  * whole (bloom_process, a thin loop over the row calls). The maths is
- * docs/bloom-model.md; the integer formats are docs/fixed-point.md. */
+ * sim/docs/bloom-model.md; the integer formats are sim/docs/fixed-point.md. */
 #ifndef BLOOM_H
 #define BLOOM_H
 
@@ -80,7 +80,8 @@ typedef struct {
                                  source_rows pushed rows must stay readable
                                  (pointer mode) or are copied (COPY_SOURCE) */
     size_t ring_bytes[BLOOM_MAX_LEVELS + 1]; /* row memory per level; [0] = source copy */
-    uint32_t threshold_q, knee_q, intensity_q; /* quantized parameters (Q16.16) */
+    uint32_t threshold_q, knee_q; /* quantized threshold and knee, Q12.20 */
+    uint32_t intensity_q;         /* linear intensity I_q, Q16.16 */
 } bloom_info_t;
 
 typedef struct bloom bloom_t;

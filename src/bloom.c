@@ -123,8 +123,8 @@ static void setup(bloom_t *b, const bloom_config_t *cfg)
         b->h[k] = h;
         b->L = k;
     }
-    b->knee.t = cfg->threshold;
-    b->knee.k = (uint32_t)(((uint64_t)cfg->threshold * cfg->soft_knee + 32768u) >> 16);
+    b->knee.t = cfg->threshold << 4; /* Q16.16 -> Q12.20, exact */
+    b->knee.k = (uint32_t)(((uint64_t)b->knee.t * cfg->soft_knee + 32768u) >> 16);
     b->out.in_fmt = cfg->in_fmt;
     b->out.out_fmt = cfg->out_fmt;
     b->out.linear = (cfg->flags & BLOOM_FLAG_LINEAR) != 0;

@@ -9,10 +9,16 @@
 
 #include "bloom.h"
 
+/* Internal linear samples are Q12.20 (sim/docs/fixed-point.md): 16x finer
+ * than the Q16.16 of the API, same 256.0 ceiling. */
+#define BLOOM_LIN_BITS 20
+#define BLOOM_LIN_ONE (1u << BLOOM_LIN_BITS)
+#define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << 4) /* 2^28 - 16 */
+
 extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
 extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];
 
-/* Knee parameters, Q16.16 (docs/fixed-point.md step 3). */
+/* Knee parameters, Q12.20 (sim/docs/fixed-point.md step 3). */
 typedef struct {
     uint32_t t, k;
 } bloom_knee_t;
@@ -21,7 +27,7 @@ typedef struct {
 typedef struct {
     bloom_format_t in_fmt, out_fmt;
     bool linear, debug;
-    uint32_t intensity; /* I_q */
+    uint32_t intensity; /* I_q, Q16.16 */
 } bloom_out_t;
 
 /* floor(n / d) where the quotient is known to fit in 32 bits. */
@@ -32,7 +38,7 @@ uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d);
 uint32_t bloom_srgb_to_linear_q16(uint32_t i);
 
 /* Row kernels. Samples are interleaved R, G, B uint32_t (Q16.16).
- * bloom_row_box: 4x4 box down of four source rows s[0..3] (width sw) into
+ * Samples are Q12.20. bloom_row_box: 4x4 box down of four source rows s[0..3] (width sw) into
  * dst (width dw = ceil(sw / 2)). */
 void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 /* The same, reading encoded pixels of fmt (decoding on the fly). */

@@ -1,12 +1,12 @@
 /* Pixel formats: decode a pixel to Q16.16 linear samples, encode back to
- * codes (docs/fixed-point.md steps 1 and 7). */
+ * codes (sim/docs/fixed-point.md steps 1 and 7). Internal samples: Q12.20. */
 #include <string.h>
 
 #include "bloom_internal.h"
 
 static inline uint32_t dec_linear(uint32_t c, uint32_t n)
 {
-    return (c * 65536u + (n - 1u) / 2u) / n; /* n is a constant per call site */
+    return (c * BLOOM_LIN_ONE + (n - 1u) / 2u) / n; /* n is a constant per call site */
 }
 
 /* Number of c in 1..n with v >= t[c]: a binary search over the thresholds. */
@@ -21,9 +21,9 @@ static inline uint32_t enc_srgb(uint32_t v, const uint32_t *t, uint32_t n)
 
 static inline uint32_t enc_linear(uint32_t v, uint32_t n)
 {
-    if (v > 65536u)
-        v = 65536u;
-    return (v * n + 32768u) >> 16;
+    if (v > BLOOM_LIN_ONE)
+        v = BLOOM_LIN_ONE;
+    return (v * n + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
 }
 
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3])
@@ -53,7 +53,7 @@ void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint3
         uint32_t w[3];
         memcpy(w, p, sizeof w);
         for (int c = 0; c < 3; c++)
-            rgb[c] = w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c];
+            rgb[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << 4;
         return;
     }
 #endif
@@ -105,8 +105,10 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 #if BLOOM_USE_RGBQ16
     case BLOOM_FMT_RGBQ16: {
         uint32_t w[3];
-        for (int c = 0; c < 3; c++)
-            w[c] = v[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : v[c];
+        for (int c = 0; c < 3; c++) {
+            uint32_t q = (v[c] >> 4) + ((v[c] >> 3) & 1u); /* round to Q16.16 */
+            w[c] = q > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : q;
+        }
         memcpy(p, w, sizeof w);
         return;
     }

@@ -1,5 +1,5 @@
 /* Row kernels: one row of output from a few rows of input, rounding written
- * out in full (docs/fixed-point.md steps 2-7). Samples are interleaved
+ * out in full (sim/docs/fixed-point.md steps 2-7). Samples are interleaved
  * R, G, B uint32_t, Q16.16. The frame-level code only schedules these. */
 #include "bloom_internal.h"
 
@@ -96,13 +96,16 @@ void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
     }
 }
 
-/* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. */
+/* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
+ * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
+ * Cortex-M); the results fit in 32 again. */
 static inline void vtent(const uint32_t *const u[3], int odd, int c, uint32_t v[3])
 {
     const size_t i = (size_t)c * 3u;
-    const uint32_t wa = odd ? 1u : 3u, wc = odd ? 3u : 1u;
+    const uint64_t wa = odd ? 1u : 3u, wc = odd ? 3u : 1u;
     for (int ch = 0; ch < 3; ch++)
-        v[ch] = (wa * u[0][i + ch] + 4u * u[1][i + ch] + wc * u[2][i + ch] + 4u) >> 3;
+        v[ch] = (uint32_t)((wa * u[0][i + ch] + 4u * (uint64_t)u[1][i + ch] +
+                            wc * u[2][i + ch] + 4u) >> 3);
 }
 
 void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
@@ -117,14 +120,14 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
         vtent(u, odd, imin(m + 1, sw - 1), vn);
         if (!(x & 1)) { /* even column: (3, 4, 1) */
             for (int ch = 0; ch < 3; ch++) {
-                uint32_t t = (3u * vp[ch] + 4u * vc[ch] + vn[ch] + 4u) >> 3;
+                uint32_t t = (uint32_t)((3u * (uint64_t)vp[ch] + 4u * (uint64_t)vc[ch] + vn[ch] + 4u) >> 3);
                 dst[3 * (x - x0) + ch] = t + (add ? add[3 * (x - x0) + ch] : 0u);
             }
             x++;
         }
         if (x < end) { /* odd column: (1, 4, 3) */
             for (int ch = 0; ch < 3; ch++) {
-                uint32_t t = (vp[ch] + 4u * vc[ch] + 3u * vn[ch] + 4u) >> 3;
+                uint32_t t = (uint32_t)(((uint64_t)vp[ch] + 4u * (uint64_t)vc[ch] + 3u * (uint64_t)vn[ch] + 4u) >> 3);
                 dst[3 * (x - x0) + ch] = t + (add ? add[3 * (x - x0) + ch] : 0u);
             }
             x++;

@@ -1,0 +1,88 @@
+/* Reference model of the bloom engine: the maths of sim/docs/bloom-model.md in
+ * double precision (float mode), or the integer pipeline of
+ * sim/docs/fixed-point.md one rounding point at a time (bit-true mode).
+ *
+ * Full-frame, heap-allocated, plain loops: this is the readable
+ * specification, not a fast implementation. */
+#ifndef BLOOM_MODEL_H
+#define BLOOM_MODEL_H
+
+#include <stdint.h>
+
+#define BLOOM_MODEL_MAX_LEVELS 16
+
+typedef struct {
+    int width, height;        /* source size, >= 1 each */
+    int levels;               /* requested N, 1..16; the level-count rule of bloom-model.md decides L */
+    int linear;               /* 1: no sRGB curves (linear input decode and linear output encode) */
+    int debug_view;           /* 1: out = I*B instead of S + I*B */
+    int bittrue;              /* 0: float model; 1: bit-true model */
+    /* float model parameters (real values; intensity in gamma space as the user gives it) */
+    double threshold, soft_knee, intensity;
+    /* bit-true parameters: the core's quantized values (bloom_info_t): T_q and K_q
+     * in Q12.20, I_q in Q16.16 (fixed-point.md) */
+    uint32_t threshold_q, knee_q, intensity_q;
+} bloom_model_params_t;
+
+/* src: width*height pixels, 3 words each (R,G,B), row-major, top row first.
+ * src_max[c] is the largest code of channel c (255, 63 or 31), or 0 meaning the
+ * word is a linear Q16.16 value (the RGBQ16 format; the bit-true mode clamps it to 2^24-1
+ * as the core does; the float model uses word/65536 unclamped).
+ * dst_codes (may be NULL): width*height*3 output codes; dst_max[c] as src_max
+ * (0 = Q16.16 output: bit-true min((v + 8) >> 4, 2^24-1); float: round-half-up(v*65536) clamped to [0, 2^24-1]).
+ * dst_value (may be NULL): width*height*3 doubles, the linear value v before encoding
+ * (in bit-true mode: the Q12.20 integer v / 2^20).
+ * Returns the number of levels L actually used (>= 1), or -1 on bad arguments.
+ *
+ * Bad arguments (also -1): a NULL pointer that is required, a size < 1,
+ * levels outside 1..16, a max code outside 0..65535, a source code above its
+ * max, float threshold < 0, soft_knee outside [0, 1], intensity < 0 (or any
+ * of them not finite); bit-true threshold_q > 2^28, knee_q > threshold_q
+ * (the core's K_q = (T_q*s + 32768) >> 16 never exceeds T_q), intensity_q > 2^24.
+ * Out of memory also returns -1. */
+int bloom_model_run(const bloom_model_params_t *p, const uint32_t *src, const int src_max[3],
+                    uint32_t *dst_codes, const int dst_max[3], double *dst_value);
+
+/* helpers, also used by tests */
+double bloom_srgb_to_linear(double x);   /* the sRGB curve of bloom-model.md, extended unchanged above 1 */
+double bloom_linear_to_srgb(double x);   /* its inverse, for x >= 0 */
+int bloom_model_levels(int w, int h, int requested);  /* L by the level-count rule; -1 on bad arguments */
+
+/* ---- Inspection hooks (tests, debugging) --------------------------------
+ * Values are in model units: real linear light in float mode, Q12.20
+ * integers (not divided by 2^20) in bit-true mode. */
+
+typedef struct {
+    int w, h;
+    double *px;               /* w*h*3 values (R,G,B), row-major */
+} bloom_model_image_t;
+
+typedef struct {
+    int levels;                                   /* L */
+    bloom_model_image_t S;                        /* decoded source, level 0 */
+    bloom_model_image_t D[BLOOM_MODEL_MAX_LEVELS + 1]; /* D[1..L]; D[1] after the knee */
+    bloom_model_image_t U[BLOOM_MODEL_MAX_LEVELS + 1]; /* U[1..L]; U[L] = D[L] */
+    bloom_model_image_t B;                        /* tentup(U[1]), full resolution */
+} bloom_model_pyramid_t;
+
+/* Runs decode, down chain, knee and up chain (everything before the
+ * composite). Returns L, or -1 as bloom_model_run (then *out holds nothing
+ * to free). Release with bloom_model_pyramid_free. */
+int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, const int src_max[3],
+                        bloom_model_pyramid_t *out);
+void bloom_model_pyramid_free(bloom_model_pyramid_t *pyr);
+
+/* Single stages. dst is allocated here (free with bloom_model_image_free).
+ * box_down gives ceil(w/2) x ceil(h/2); tent_up gives w x h and requires
+ * ceil(w/2) x ceil(h/2) == low's size. Both return 0, or -1 on bad size or
+ * out of memory. */
+int bloom_model_box_down(const bloom_model_image_t *src, bloom_model_image_t *dst, int bittrue);
+int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_model_image_t *dst,
+                        int bittrue);
+void bloom_model_image_free(bloom_model_image_t *im);
+
+/* The prefilter (soft knee) on one pixel in place, with p's mode and
+ * parameters (p is not otherwise validated). */
+void bloom_model_knee(const bloom_model_params_t *p, double rgb[3]);
+
+#endif

@@ -1,0 +1,47 @@
+/* Image file I/O for the host tools: binary PGM/PPM (P5/P6, 8- and 16-bit)
+ * and PFM (PF/Pf, either byte order on read, little-endian on write).
+ * Host-only code: allocates on the heap, uses POSIX mkstemp/rename. */
+#ifndef BLOOM_IMGIO_H
+#define BLOOM_IMGIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    int width, height, channels;   /* channels 1 or 3 */
+    int maxval;                    /* PPM/PGM: 1..65535; 0 for float images (PFM) */
+    uint16_t *u16;                 /* integer samples (PPM/PGM), row-major, top row first,
+                                      channels interleaved; NULL for float */
+    float *f32;                    /* float samples (PFM), top row first (PFM stores
+                                      bottom-to-top: flipped on read/write); NULL for integer */
+} img_t;
+
+/* Each returns 0 on success. On failure returns -1, leaves *img empty (all
+ * zero, nothing allocated) and writes into err (size errlen; may be NULL/0)
+ * a message naming the file and what is wrong, e.g.
+ * "data/x.ppm: truncated: expected 921600 bytes of pixel data, got 1000". */
+
+/* Reads P5, P6 (8-bit, or 16-bit big-endian when maxval > 255), PF, Pf
+ * (negative scale = little-endian); the format is detected by magic.
+ * Integer samples above maxval are an error; float samples (NaN, Inf,
+ * negative) are returned as stored. Trailing bytes after the pixels are
+ * ignored. */
+int img_read(const char *path, img_t *img, char *err, size_t errlen);
+
+/* Writes P5 (channels 1) or P6 (channels 3), 16-bit when maxval > 255.
+ * Writers go through "path.tmp-XXXXXX" and rename() over path only when
+ * everything was written, so a failed write never clobbers an old file. */
+int img_write_ppm(const char *path, const img_t *img, char *err, size_t errlen);
+
+/* Writes little-endian PF (channels 3) or Pf (channels 1), scale -1.0. */
+int img_write_pfm(const char *path, const img_t *img, char *err, size_t errlen);
+
+/* Frees the samples and zeroes *img; safe on an empty image or NULL. */
+void img_free(img_t *img);
+
+/* Allocates zeroed samples: u16 when maxval is 1..65535, f32 when maxval is
+ * 0. Returns -1 (and leaves *img empty) on bad arguments (w, h outside
+ * 1..65535, channels not 1 or 3) or out of memory. */
+int img_alloc(img_t *img, int w, int h, int channels, int maxval);
+
+#endif

@@ -1,0 +1,169 @@
+/* Running the core and the reference model side by side on one frame, and
+ * the error statistics between them. Shared by the conformance tests. */
+#ifndef BLOOM_CONFORM_H
+#define BLOOM_CONFORM_H
+
+#include <math.h>
+
+#include "bloom_model.h"
+#include "testutil.h"
+
+typedef struct {
+    long long n, exact, over1;
+    int peak;
+    double sum_abs, sum_sq;
+} errstat_t;
+
+static inline void errstat_add(errstat_t *e, long long d)
+{
+    long long a = d < 0 ? -d : d;
+    e->n++;
+    e->exact += a == 0;
+    e->over1 += a > 1;
+    if (a > e->peak)
+        e->peak = (int)a;
+    e->sum_abs += (double)a;
+    e->sum_sq += (double)a * (double)a;
+}
+
+static inline void errstat_merge(errstat_t *into, const errstat_t *e)
+{
+    into->n += e->n;
+    into->exact += e->exact;
+    into->over1 += e->over1;
+    into->peak = e->peak > into->peak ? e->peak : into->peak;
+    into->sum_abs += e->sum_abs;
+    into->sum_sq += e->sum_sq;
+}
+
+static inline double errstat_exact_pct(const errstat_t *e)
+{
+    return e->n ? 100.0 * (double)e->exact / (double)e->n : 100.0;
+}
+
+static inline void errstat_print(const char *what, const errstat_t *e)
+{
+    printf("%-34s peak %d LSB, mean %.5f LSB, MSE %.5f, exact %.3f%% of %lld samples\n", what,
+           e->peak, e->n ? e->sum_abs / (double)e->n : 0.0, e->n ? e->sum_sq / (double)e->n : 0.0,
+           errstat_exact_pct(e), e->n);
+}
+
+static inline void fmt_max(bloom_format_t f, int m[3])
+{
+    m[0] = m[1] = m[2] = f == BLOOM_FMT_RGBQ16 ? 0 : 255;
+    if (f == BLOOM_FMT_RGB565) {
+        m[0] = m[2] = 31;
+        m[1] = 63;
+    }
+}
+
+/* Channel codes (or Q16 words) of every pixel, R, G, B. */
+static inline uint32_t *frame_codes(const frame_t *f)
+{
+    uint32_t *c = (uint32_t *)xmalloc((size_t)f->w * (size_t)f->h * 3u * sizeof *c);
+    for (int y = 0; y < f->h; y++)
+        for (int x = 0; x < f->w; x++) {
+            const uint8_t *p = f->p + (size_t)y * f->stride + (size_t)x * (size_t)f->bpp;
+            uint32_t *o = c + ((size_t)y * (size_t)f->w + (size_t)x) * 3u;
+            switch (f->fmt) {
+            case BLOOM_FMT_RGBQ16:
+                memcpy(o, p, 12);
+                break;
+            case BLOOM_FMT_RGB565: {
+                uint32_t w = (uint32_t)p[0] | ((uint32_t)p[1] << 8);
+                o[0] = w >> 11;
+                o[1] = (w >> 5) & 63u;
+                o[2] = w & 31u;
+                break;
+            }
+            case BLOOM_FMT_XRGB8888:
+                o[0] = p[2];
+                o[1] = p[1];
+                o[2] = p[0];
+                break;
+            default:
+                o[0] = p[0];
+                o[1] = p[1];
+                o[2] = p[2];
+            }
+        }
+    return c;
+}
+
+static inline void model_params(const bloom_config_t *c, const bloom_info_t *info, int bittrue,
+                         bloom_model_params_t *p)
+{
+    memset(p, 0, sizeof *p);
+    p->width = c->width;
+    p->height = c->height;
+    p->levels = c->levels;
+    p->linear = (c->flags & BLOOM_FLAG_LINEAR) != 0;
+    p->debug_view = (c->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
+    p->bittrue = bittrue;
+    p->threshold = c->threshold / 65536.0;
+    p->soft_knee = c->soft_knee / 65536.0;
+    p->intensity = c->intensity / 65536.0;
+    p->threshold_q = info->threshold_q;
+    p->knee_q = info->knee_q;
+    p->intensity_q = info->intensity_q;
+}
+
+typedef struct {
+    errstat_t vs_float;   /* core against the float model, output codes */
+    long long bittrue_diff; /* samples where core and bit-true model differ */
+    long long untouched, untouched_changed; /* samples with B == 0, and how many changed */
+    int ok;               /* the model ran */
+} conform_t;
+
+/* Run src through the core (config c) and both models; compare. */
+static inline conform_t conform_run(const bloom_config_t *c, const frame_t *src)
+{
+    conform_t r;
+    memset(&r, 0, sizeof r);
+    bloom_info_t info;
+    if (bloom_query(c, &info) != BLOOM_OK)
+        return r;
+    engine_t e = engine_new(c);
+    frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
+    if (bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride) != BLOOM_OK) {
+        frame_free(&out);
+        engine_free(&e);
+        return r;
+    }
+    const size_t n = (size_t)c->width * (size_t)c->height * 3u;
+    uint32_t *in = frame_codes(src), *core = frame_codes(&out);
+    uint32_t *bt = (uint32_t *)xmalloc(n * sizeof *bt), *fl = (uint32_t *)xmalloc(n * sizeof *fl);
+    int smax[3], dmax[3];
+    fmt_max(c->in_fmt, smax);
+    fmt_max(c->out_fmt, dmax);
+    bloom_model_params_t pb, pf;
+    model_params(c, &info, 1, &pb);
+    model_params(c, &info, 0, &pf);
+    bloom_model_pyramid_t pyr;
+    int lb = bloom_model_run(&pb, in, smax, bt, dmax, NULL);
+    int lf = bloom_model_run(&pf, in, smax, fl, dmax, NULL);
+    int lp = bloom_model_pyramid(&pb, in, smax, &pyr);
+    r.ok = lb == info.levels && lf == info.levels && lp == info.levels;
+    if (r.ok) {
+        const int same_fmt = c->in_fmt == c->out_fmt && !(c->flags & BLOOM_FLAG_DEBUG_VIEW);
+        for (size_t i = 0; i < n; i++) {
+            r.bittrue_diff += core[i] != bt[i];
+            errstat_add(&r.vs_float, (long long)core[i] - (long long)fl[i]);
+            if (same_fmt && pyr.B.px[i - i % 3] == 0 && pyr.B.px[i - i % 3 + 1] == 0 &&
+                pyr.B.px[i - i % 3 + 2] == 0) {
+                r.untouched++;
+                r.untouched_changed += core[i] != in[i];
+            }
+        }
+        bloom_model_pyramid_free(&pyr);
+    }
+    free(in);
+    free(core);
+    free(bt);
+    free(fl);
+    frame_free(&out);
+    engine_free(&e);
+    return r;
+}
+
+#endif

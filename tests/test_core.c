@@ -1,0 +1,275 @@
+/* The engine through its API: configuration errors, workspace sizing and
+ * canaries, streaming invariance, and answers worked out by hand. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "bloom.h"
+#include "harness.h"
+#include "testutil.h"
+
+static void test_validation(void)
+{
+    bloom_config_t c;
+    bloom_info_t info;
+    bloom_config_default(&c, 64, 48);
+    CHECK(bloom_query(&c, &info) == BLOOM_OK);
+    CHECK(bloom_query(NULL, &info) == BLOOM_E_NULL);
+    bloom_config_t bad;
+#define EXPECT(field_assign, st)                                              \
+    do {                                                                      \
+        bad = c;                                                              \
+        field_assign;                                                         \
+        bloom_status_t got = bloom_query(&bad, &info);                        \
+        CHECKF(got == (st), "%s: got %d (%s)", #field_assign, got, bloom_status_str(got)); \
+        CHECK(bloom_workspace_size(&bad) == 0);                               \
+    } while (0)
+    EXPECT(bad.width = 0, BLOOM_E_SIZE);
+    EXPECT(bad.height = -3, BLOOM_E_SIZE);
+    EXPECT(bad.width = BLOOM_MAX_DIM + 1, BLOOM_E_SIZE);
+    EXPECT(bad.levels = 0, BLOOM_E_LEVELS);
+    EXPECT(bad.levels = 17, BLOOM_E_LEVELS);
+    EXPECT(bad.levels = 1000, BLOOM_E_LEVELS);
+    EXPECT(bad.threshold = BLOOM_MAX_THRESHOLD + 1, BLOOM_E_THRESHOLD);
+    EXPECT(bad.soft_knee = BLOOM_ONE + 1, BLOOM_E_KNEE);
+    EXPECT(bad.intensity = BLOOM_MAX_INTENSITY + 1, BLOOM_E_INTENSITY);
+    EXPECT(bad.in_fmt = (bloom_format_t)0, BLOOM_E_FORMAT);
+    EXPECT(bad.out_fmt = (bloom_format_t)99, BLOOM_E_FORMAT);
+    EXPECT(bad.flags = 1u << 7, BLOOM_E_FLAGS);
+#undef EXPECT
+    /* Every status has a message naming the problem. */
+    for (int st = -13; st <= 2; st++)
+        CHECK(strcmp(bloom_status_str((bloom_status_t)st), "unknown status") != 0);
+    /* The limits themselves are accepted. */
+    bad = c;
+    bad.levels = 16;
+    bad.threshold = BLOOM_MAX_THRESHOLD;
+    bad.soft_knee = BLOOM_ONE;
+    bad.intensity = BLOOM_MAX_INTENSITY;
+    CHECK(bloom_query(&bad, &info) == BLOOM_OK);
+}
+
+static void test_workspace(void)
+{
+    const int sizes[][2] = {{1, 1}, {2, 2}, {3, 1}, {1, 7}, {64, 48}, {257, 131}, {640, 480}};
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        for (int lv = 1; lv <= 16; lv += 3) {
+            for (int copy = 0; copy <= 1; copy++) {
+                bloom_config_t c;
+                bloom_config_default(&c, sizes[si][0], sizes[si][1]);
+                c.levels = lv;
+                c.flags = copy ? BLOOM_FLAG_COPY_SOURCE : 0;
+                const size_t need = bloom_workspace_size(&c);
+                CHECK(need > 0);
+                CHECK(bloom_workspace_size(&c) == need); /* pure */
+                CHECKF(BLOOM_WORKSPACE_MAX(c.width, c.height, lv, 3, copy) >= need,
+                       "%dx%d L%d copy%d: macro %zu < %zu", c.width, c.height, lv, copy,
+                       (size_t)BLOOM_WORKSPACE_MAX(c.width, c.height, lv, 3, copy), need);
+                guarded_t ws = guarded_alloc(need);
+                bloom_t *b = NULL;
+                CHECK(bloom_init(&b, ws.p, need - 1, &c) == BLOOM_E_WORKSPACE);
+                CHECK(b == NULL);
+                CHECK(bloom_init(&b, ws.p + 1, need, &c) == BLOOM_E_ALIGN);
+                CHECK(bloom_init(&b, ws.p, need, &c) == BLOOM_OK);
+                frame_t src = frame_random(&c, c.in_fmt, 1234u + (unsigned)si);
+                frame_t dst = frame_alloc(c.width, c.height, c.out_fmt, 0);
+                CHECK(bloom_process(b, src.p, src.stride, dst.p, dst.stride) == BLOOM_OK);
+                CHECK(guarded_intact(&ws));
+                CHECK(frame_intact(&dst));
+                frame_free(&src);
+                frame_free(&dst);
+                guarded_free(&ws);
+            }
+        }
+    }
+    /* The memory targets of the issue, from the sizing function. */
+    bloom_config_t c;
+    bloom_config_default(&c, 1920, 1080);
+    CHECK(bloom_workspace_size(&c) <= 1920u * 1080u * 3u / 16u);
+    bloom_config_default(&c, 320, 240);
+    c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
+    CHECK(bloom_workspace_size(&c) <= 48u * 1024u);
+}
+
+/* The same frame fed one row at a time, in bands of every height, whole,
+ * with copied source rows, and in place: identical output. */
+static void test_streaming(void)
+{
+    const int sizes[][2] = {{257, 131}, {33, 70}, {5, 200}, {1, 9}, {64, 1}};
+    for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
+        for (int lv = 1; lv <= 8; lv++) {
+            bloom_config_t c;
+            bloom_config_default(&c, sizes[si][0], sizes[si][1]);
+            c.levels = lv;
+            c.threshold = BLOOM_Q16(0.4);
+            frame_t src = frame_random(&c, c.in_fmt, 99u + (unsigned)lv);
+            frame_t ref = frame_alloc(c.width, c.height, c.out_fmt, 0);
+            frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
+            engine_t e = engine_new(&c);
+            CHECK(bloom_process(e.b, src.p, src.stride, ref.p, ref.stride) == BLOOM_OK);
+
+            /* row by row with the push/pull calls */
+            bloom_begin(e.b);
+            memset(out.p, 0, out.bytes);
+            int ok = 1;
+            for (int y = 0; y < c.height; y++) {
+                ok &= bloom_push_row(e.b, src.p + (size_t)y * src.stride) == BLOOM_OK;
+                while (bloom_pull_row(e.b, out.p + (size_t)bloom_rows_out(e.b) * out.stride) == BLOOM_OK)
+                    ;
+            }
+            ok &= bloom_pull_row(e.b, out.p) == BLOOM_DONE;
+            CHECK(ok);
+            CHECK(frame_equal(&ref, &out));
+            CHECK(bloom_push_row(e.b, src.p) == BLOOM_E_STATE);
+
+            /* bands of 1, 2, 3, 7 and 64 rows */
+            const int bands[] = {1, 2, 3, 7, 64};
+            for (size_t bi = 0; bi < sizeof bands / sizeof bands[0]; bi++) {
+                memset(out.p, 0, out.bytes);
+                bloom_begin(e.b);
+                bloom_status_t st = BLOOM_OK;
+                for (int y = 0; y < c.height && st == BLOOM_OK; y += bands[bi]) {
+                    int n = c.height - y < bands[bi] ? c.height - y : bands[bi];
+                    st = bloom_run_rows(e.b, src.p, src.stride, n, out.p, out.stride);
+                }
+                CHECK(st == BLOOM_OK && bloom_rows_out(e.b) == c.height);
+                CHECK(frame_equal(&ref, &out));
+            }
+            engine_free(&e);
+
+            /* the engine keeps its own copies of the source rows */
+            c.flags = BLOOM_FLAG_COPY_SOURCE;
+            e = engine_new(&c);
+            memset(out.p, 0, out.bytes);
+            bloom_begin(e.b);
+            frame_t row = frame_alloc(c.width, 1, c.in_fmt, 0);
+            for (int y = 0; y < c.height; y++) {
+                memcpy(row.p, src.p + (size_t)y * src.stride, row.bytes);
+                CHECK(bloom_push_row(e.b, row.p) == BLOOM_OK);
+                memset(row.p, 0xA5, row.bytes); /* the caller reuses its line buffer */
+                while (bloom_pull_row(e.b, out.p + (size_t)bloom_rows_out(e.b) * out.stride) == BLOOM_OK)
+                    ;
+            }
+            CHECK(bloom_rows_out(e.b) == c.height);
+            CHECK(frame_equal(&ref, &out));
+            frame_free(&row);
+            engine_free(&e);
+
+            /* in place */
+            c.flags = 0;
+            e = engine_new(&c);
+            memcpy(out.p, src.p, src.bytes);
+            CHECK(bloom_process(e.b, out.p, out.stride, out.p, out.stride) == BLOOM_OK);
+            CHECK(frame_equal(&ref, &out));
+            engine_free(&e);
+            frame_free(&src);
+            frame_free(&ref);
+            frame_free(&out);
+        }
+    }
+}
+
+/* A push beyond what the source ring holds is refused, not lost. */
+static void test_busy(void)
+{
+    bloom_config_t c;
+    bloom_config_default(&c, 40, 300);
+    c.flags = BLOOM_FLAG_COPY_SOURCE;
+    bloom_info_t info;
+    CHECK(bloom_query(&c, &info) == BLOOM_OK);
+    engine_t e = engine_new(&c);
+    frame_t src = frame_random(&c, c.in_fmt, 5);
+    int y = 0;
+    while (y < c.height && bloom_push_row(e.b, src.p + (size_t)y * src.stride) == BLOOM_OK)
+        y++;
+    CHECKF(y == info.source_rows, "accepted %d rows, source_rows %d", y, info.source_rows);
+    CHECK(bloom_push_row(e.b, src.p + (size_t)y * src.stride) == BLOOM_E_BUSY);
+    CHECK(bloom_rows_in(e.b) == y);
+    frame_free(&src);
+    engine_free(&e);
+}
+
+/* Hand-worked answers. */
+static void test_known(void)
+{
+    /* A constant frame stays constant. Linear, threshold 0: D_k = S on every
+     * level, B = L*S, out = S*(1 + L*I) with I = 1 and L = 4: code 10 -> 50. */
+    bloom_config_t c;
+    bloom_config_default(&c, 37, 23);
+    c.flags = BLOOM_FLAG_LINEAR;
+    c.threshold = 0;
+    c.soft_knee = 0;
+    bloom_info_t info;
+    CHECK(bloom_query(&c, &info) == BLOOM_OK);
+    CHECK(info.levels == 4); /* 37x23 -> 19x12, 10x6, 5x3, 3x2, (2x1 stops) */
+    CHECK(info.intensity_q == 65536);
+    frame_t src = frame_alloc(c.width, c.height, c.in_fmt, 10);
+    frame_t dst = frame_alloc(c.width, c.height, c.out_fmt, 0);
+    engine_t e = engine_new(&c);
+    CHECK(bloom_process(e.b, src.p, src.stride, dst.p, dst.stride) == BLOOM_OK);
+    int allsame = 1;
+    for (size_t i = 0; i < (size_t)c.width * c.height * 3; i++)
+        allsame &= frame_byte(&dst, i) == 50; /* S = 2570 (10/255), 5*S encodes to 50 */
+    CHECK(allsame);
+    engine_free(&e);
+    frame_free(&src);
+    frame_free(&dst);
+
+    /* One bright pixel, one level, Q16 in and out, bloom-only view: B is
+     * the tent of the box. V = 16.0 at (x0, y0) = (10, 6) of a 24x16 frame:
+     * D1 = 1.0 at x in {4, 5}, y in {2, 3} (4x4 box weights 1/16), and
+     * B(X, Y) = sum over those cells of tent weights wx * wy / 64. */
+    bloom_config_default(&c, 24, 16);
+    c.levels = 1;
+    c.in_fmt = c.out_fmt = BLOOM_FMT_RGBQ16;
+    c.threshold = 0;
+    c.soft_knee = 0;
+    c.flags = BLOOM_FLAG_DEBUG_VIEW;
+    src = frame_alloc(c.width, c.height, c.in_fmt, 0);
+    dst = frame_alloc(c.width, c.height, c.out_fmt, 0);
+    frame_set_q16(&src, 10, 6, 16u << 16);
+    e = engine_new(&c);
+    CHECK(bloom_process(e.b, src.p, src.stride, dst.p, dst.stride) == BLOOM_OK);
+    int exact = 1;
+    for (int y = 0; y < c.height; y++)
+        for (int x = 0; x < c.width; x++) {
+            uint32_t want = 1024u * tent_weight_sum(x, 4, 5) * tent_weight_sum(y, 2, 3);
+            exact &= frame_get_q16(&dst, x, y) == want;
+        }
+    CHECK(exact);
+    CHECK(frame_get_q16(&dst, 10, 6) == 1024u * 7u * 7u); /* peak: 4 + 3 eighths per axis */
+    engine_free(&e);
+    frame_free(&src);
+    frame_free(&dst);
+
+    /* 1x1, 1xN and Nx1 frames keep one level and a constant result. */
+    const int tiny[][2] = {{1, 1}, {1, 17}, {17, 1}, {2, 1}, {1, 2}};
+    for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; i++) {
+        bloom_config_default(&c, tiny[i][0], tiny[i][1]);
+        c.levels = 16;
+        c.flags = BLOOM_FLAG_LINEAR;
+        c.threshold = 0;
+        c.soft_knee = 0;
+        CHECK(bloom_query(&c, &info) == BLOOM_OK && info.levels == 1);
+        src = frame_alloc(c.width, c.height, c.in_fmt, 20);
+        dst = frame_alloc(c.width, c.height, c.out_fmt, 0);
+        e = engine_new(&c);
+        CHECK(bloom_process(e.b, src.p, src.stride, dst.p, dst.stride) == BLOOM_OK);
+        int same = 1;
+        for (size_t k = 0; k < (size_t)c.width * c.height * 3; k++)
+            same &= frame_byte(&dst, k) == 40; /* S + 1*S */
+        CHECK(same);
+        engine_free(&e);
+        frame_free(&src);
+        frame_free(&dst);
+    }
+}
+
+int main(void)
+{
+    test_validation();
+    test_workspace();
+    test_streaming();
+    test_busy();
+    test_known();
+    return harness_finish();
+}
