@@ -44,10 +44,11 @@ $(B)/gen_tables: sim/gen_tables.c | $(B)
 $(B)/san/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) | $(B)/san
 	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
 
-# Same core with clang, warnings as errors (a compile check).
+# Everything with clang too, warnings as errors (a compile check).
 clang-build: | $(B)/clang
-	$(CLANG) $(WARN) -O2 $(CPPFLAGS_CORE) -c $(CORE_SRC)
-	@mv -f *.o $(B)/clang/
+	@for f in $(CORE_SRC); do \
+	  $(CLANG) $(WARN) -O2 $(CPPFLAGS_CORE) -c $$f -o $(B)/clang/$$(basename $$f .c).o || exit 1; done
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(SIM_SRC) sim/bloom_demo.c sim/gen_tables.c tests/*.c
 
 # Cortex-M4, freestanding: the core objects may reference memcpy/memset only.
 freestanding: | $(B)/arm
@@ -72,7 +73,8 @@ test: deps $(addprefix $(B)/san/,$(TESTS))
 	BLOOM_DATA_DIR=tests/data sh tests/run.sh $(B)/san $(TESTS)
 
 demo: deps $(B)/bloom_demo
-	$(B)/bloom_demo tests/data/rocket_floodlights.ppm $(B)/demo
+	$(B)/bloom_demo tests/data/rocket_floodlights.ppm $(B)/demo/rocket --threshold 0.6 --intensity 1.5
+	$(B)/bloom_demo tests/data/studio_lamps.pfm $(B)/demo/studio --threshold 2
 
 $(B) $(B)/obj $(B)/san $(B)/clang $(B)/arm:
 	mkdir -p $@

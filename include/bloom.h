@@ -130,14 +130,16 @@ int bloom_format_bpp(bloom_format_t fmt);
 const char *bloom_status_str(bloom_status_t st);
 
 /* Static workspace: an upper bound of bloom_workspace_size() usable in a
- * constant expression (tests check that it is never below the exact size).
- * src_bpp is the input bytes per pixel, copy 1 with BLOOM_FLAG_COPY_SOURCE. */
-#define BLOOM__RING_ROWS(levels) (4u * (1u << (levels)) + 16u)
-#define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                              \
-    (4096u + 24u * (size_t)BLOOM__RING_ROWS(levels) +                                \
-     12u * (size_t)((w) / 2u + (levels) + 1u) * (16u + 2u * (size_t)(levels) + 2u) + \
-     12u * (size_t)((w) / 4u + 1u) * (size_t)(4u * (1u << (levels)) / 3u + 8u) +      \
-     ((copy) ? (size_t)BLOOM__RING_ROWS(levels) * (size_t)(w) * (size_t)(src_bpp) : 0u))
+ * constant expression (tests check it against the exact size over a grid of
+ * sizes and depths). src_bpp is the input bytes per pixel, copy 1 with
+ * BLOOM_FLAG_COPY_SOURCE. Rows held per level (sim/docs/streaming.md): 12 at
+ * level 1, 8 at level 2, 2^(L-k+2) + 4 at level k >= 3, of w/2^k + 1 pixels of
+ * 12 bytes; that sums to below w*(2^L + 96) + 12*2^L; the source ring holds
+ * fewer than 4*2^L + 8 rows (pointers, or copies). */
+#define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                   \
+    ((size_t)6144u + (size_t)(w) * (((size_t)1u << (levels)) + 96u) +                     \
+     ((size_t)64u << (levels)) + (size_t)64u * (size_t)(levels) +                          \
+     ((copy) ? (((size_t)4u << (levels)) + 8u) * (size_t)(w) * (size_t)(src_bpp) : 0u))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) \
     static uint64_t name[((bytes) + 7u) / 8u]
 

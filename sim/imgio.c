@@ -463,3 +463,13 @@ int img_write_pfm(const char *path, const img_t *img, char *err, size_t errlen)
 {
     return write_image(path, img, true, err, errlen);
 }
+
+uint32_t img_float_to_q16(float v)
+{
+    if (!(v > 0.0f)) /* NaN, negative, zero */
+        return 0;
+    if (v >= 256.0f)
+        return (1u << 24) - 1u;
+    uint32_t q = (uint32_t)((double)v * 65536.0 + 0.5);
+    return q > (1u << 24) - 1u ? (1u << 24) - 1u : q;
+}

@@ -44,4 +44,10 @@ void img_free(img_t *img);
  * 1..65535, channels not 1 or 3) or out of memory. */
 int img_alloc(img_t *img, int w, int h, int channels, int maxval);
 
+/* The rule for float (PFM) samples entering the engine's linear Q16.16
+ * format: NaN and negative -> 0 (lossy-codec ringing and garbage carry no
+ * light), at or above 256.0 and +Inf -> 2^24 - 1 (the engine's largest
+ * value), otherwise round half up of v * 65536. */
+uint32_t img_float_to_q16(float v);
+
 #endif

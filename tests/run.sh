@@ -15,7 +15,8 @@ count() { # name, exit status, log file
     [ "$2" -ne 0 ] && [ "$f" -eq 0 ] && f=1
     pass=$((pass + p)); fail=$((fail + f))
     printf '%-22s %s\n' "$1" "${line:-exit $2}"
-    [ "$f" -ne 0 ] && sed 's/^/    /' "$3" | tail -n 40
+    # the figures a test prints (and, on failure, what failed)
+    grep -vE '^[0-9]+ passed, [0-9]+ failed' "$3" | sed 's/^/    /' | tail -n 40
 }
 for t in "$@"; do
     "$bindir/$t" >"$log" 2>&1; count "$t" $? "$log"

@@ -89,8 +89,7 @@ static void test_random(void)
     CHECK(untouched > 0 && untouched_changed == 0);
 }
 
-/* PFM to RGBQ16: negative and NaN -> 0, above the range (and +Inf) -> the
- * largest value; the rule of sim/imgio users (sim/docs). */
+/* PPM to RGB888, PFM to RGBQ16 (img_float_to_q16's rule). */
 static frame_t frame_from_img(const img_t *im, bloom_format_t *fmt)
 {
     *fmt = im->f32 ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888;
@@ -102,10 +101,7 @@ static frame_t frame_from_img(const img_t *im, bloom_format_t *fmt)
                            (size_t)(im->channels == 3 ? ch : 0);
                 uint8_t *p = f.p + (size_t)y * f.stride + (size_t)x * (size_t)f.bpp;
                 if (im->f32) {
-                    double v = im->f32[i];
-                    uint32_t q = !(v > 0) ? 0u : v >= 256.0 ? BLOOM_MAX_LINEAR : (uint32_t)(v * 65536.0 + 0.5);
-                    if (q > BLOOM_MAX_LINEAR)
-                        q = BLOOM_MAX_LINEAR;
+                    uint32_t q = img_float_to_q16(im->f32[i]);
                     memcpy(p + 4 * ch, &q, 4);
                 } else {
                     p[ch] = (uint8_t)(im->u16[i] * 255u / (unsigned)im->maxval);

@@ -84,10 +84,63 @@ static void test_workspace(void)
     /* The memory targets of the issue, from the sizing function. */
     bloom_config_t c;
     bloom_config_default(&c, 1920, 1080);
-    CHECK(bloom_workspace_size(&c) <= 1920u * 1080u * 3u / 16u);
+    size_t n = bloom_workspace_size(&c);
+    printf("workspace 1920x1080 RGB888, 5 levels: %zu bytes = 1/%.1f of one frame (target <= 1/16)\n",
+           n, 1920.0 * 1080.0 * 3.0 / (double)n);
+    CHECK(n <= 1920u * 1080u * 3u / 16u);
     bloom_config_default(&c, 320, 240);
     c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
-    CHECK(bloom_workspace_size(&c) <= 48u * 1024u);
+    n = bloom_workspace_size(&c);
+    printf("workspace 320x240 RGB565, 5 levels: %zu bytes (target <= 49152)\n", n);
+    CHECK(n <= 48u * 1024u);
+}
+
+/* The compile-time bound is never below the exact size, and not loose. */
+static void test_workspace_macro(void)
+{
+    const int ws[] = {1, 2, 3, 5, 64, 257, 320, 640, 1280, 1920, 4000, 16384};
+    const int hs[] = {1, 2, 7, 131, 240, 480, 1080, 3000, 16384};
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888,
+                                   BLOOM_FMT_RGBQ16};
+    int ok = 1, n = 0;
+    double worst = 0;
+    for (size_t wi = 0; wi < sizeof ws / sizeof ws[0]; wi++)
+        for (size_t hi = 0; hi < sizeof hs / sizeof hs[0]; hi++)
+            for (int lv = 1; lv <= 16; lv++)
+                for (int copy = 0; copy <= 1; copy++) {
+                    bloom_config_t c;
+                    bloom_config_default(&c, ws[wi], hs[hi]);
+                    c.levels = lv;
+                    c.in_fmt = fmts[(wi + hi + (size_t)lv) % 4];
+                    c.flags = copy ? BLOOM_FLAG_COPY_SOURCE : 0;
+                    const size_t exact = bloom_workspace_size(&c);
+                    const size_t bound = BLOOM_WORKSPACE_MAX(c.width, c.height, lv,
+                                                             bloom_format_bpp(c.in_fmt), copy);
+                    n++;
+                    if (bound < exact) {
+                        ok = 0;
+                        fprintf(stderr, "%dx%d L%d copy%d: bound %zu < exact %zu\n", c.width,
+                                c.height, lv, copy, bound, exact);
+                    }
+                    bloom_info_t info;
+                    bloom_query(&c, &info);
+                    if (info.levels == lv && lv == 5 && !copy && c.width >= 320 &&
+                        (double)bound / exact > worst)
+                        worst = (double)bound / exact;
+                }
+    CHECK(ok);
+    printf("BLOOM_WORKSPACE_MAX: %d configurations, none below the exact size; at 5 levels "
+           "built (width >= 320) at most %.2fx the exact size\n", n, worst);
+    CHECK(worst < 1.5);
+
+    /* A static workspace sized by the macro, as firmware declares it. */
+    BLOOM_WORKSPACE_DEFINE(static_ws, BLOOM_WORKSPACE_MAX(320, 240, 5, 2, 0));
+    bloom_config_t c;
+    bloom_config_default(&c, 320, 240);
+    c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
+    bloom_t *b = NULL;
+    CHECK(bloom_init(&b, static_ws, sizeof static_ws, &c) == BLOOM_OK);
+    CHECK(sizeof static_ws <= 50u * 1024u);
 }
 
 /* The same frame fed one row at a time, in bands of every height, whole,
@@ -268,6 +321,7 @@ int main(void)
 {
     test_validation();
     test_workspace();
+    test_workspace_macro();
     test_streaming();
     test_busy();
     test_known();
