@@ -4,6 +4,7 @@
 #   make demo       a real image through the engine: before/after + error summary
 #   make freestanding  Cortex-M4 build of the core; proves it needs only memcpy/memset
 #   make tables     regenerate src/bloom_tables.c
+#   make memtable   the workspace/latency table of README
 #   make deps       install the Debian packages the targets use
 
 CC ?= cc
@@ -25,10 +26,10 @@ SIM_SRC := sim/bloom_model.c sim/imgio.c
 SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 
-.PHONY: all test demo freestanding tables check-tables deps clean clang-build
+.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable
 .DELETE_ON_ERROR:
 
-all: $(B)/libbloom.a $(B)/bloom_demo
+all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
 
 # ---- optimised host build ------------------------------------------------
 $(B)/obj/%.o: src/%.c $(CORE_HDR) | $(B)/obj
@@ -37,6 +38,10 @@ $(B)/libbloom.a: $(patsubst src/%.c,$(B)/obj/%.o,$(CORE_SRC))
 	rm -f $@ && ar rcs $@ $^
 $(B)/bloom_demo: sim/bloom_demo.c $(SIM_SRC) $(SIM_HDR) $(B)/libbloom.a
 	$(CC) $(WARN) $(CFLAGS) $(HOST_CPPFLAGS) sim/bloom_demo.c $(SIM_SRC) $(B)/libbloom.a -lm -o $@
+$(B)/bloom_info: sim/bloom_info.c $(B)/libbloom.a
+	$(CC) $(WARN) $(CFLAGS) $(CPPFLAGS_CORE) $< $(B)/libbloom.a -o $@
+memtable: $(B)/bloom_info
+	$(B)/bloom_info
 $(B)/gen_tables: sim/gen_tables.c | $(B)
 	$(CC) $(WARN) -O2 $< -lm -o $@
 
@@ -48,7 +53,7 @@ $(B)/san/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_H
 clang-build: | $(B)/clang
 	@for f in $(CORE_SRC); do \
 	  $(CLANG) $(WARN) -O2 $(CPPFLAGS_CORE) -c $$f -o $(B)/clang/$$(basename $$f .c).o || exit 1; done
-	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(SIM_SRC) sim/bloom_demo.c sim/gen_tables.c tests/*.c
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(SIM_SRC) sim/bloom_demo.c sim/bloom_info.c sim/gen_tables.c tests/*.c
 
 # Cortex-M4, freestanding: the core objects may reference memcpy/memset only.
 freestanding: | $(B)/arm
