@@ -42,12 +42,9 @@ static void test_worst_case(void)
     c.flags = BLOOM_FLAG_DEBUG_VIEW;
     expect_bittrue("all at max, bloom-only view", &c, &src);
     /* the bloom-only value: I * L * M, clamped at the largest output */
-    engine_t e = engine_new(&c);
-    frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
-    CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, out.p, (ptrdiff_t)out.stride) == BLOOM_OK);
+    frame_t out = run_engine(&c, &src);
     CHECK(frame_get_q16(&out, 0, 0) == BLOOM_MAX_LINEAR && frame_get_q16(&out, 517, 1023) == BLOOM_MAX_LINEAR);
     frame_free(&out);
-    engine_free(&e);
     frame_free(&src);
 
     /* Words above the range read as the largest value. */
@@ -56,14 +53,9 @@ static void test_worst_case(void)
     c.threshold = BLOOM_Q16(2.0);
     frame_t a = frame_q16_fill(c.width, c.height, 0xFFFFFFFFu);
     frame_t b = frame_q16_fill(c.width, c.height, BLOOM_MAX_LINEAR);
-    frame_t oa = frame_alloc(c.width, c.height, c.out_fmt, 0);
-    frame_t ob = frame_alloc(c.width, c.height, c.out_fmt, 0);
-    e = engine_new(&c);
-    CHECK(bloom_process(e.b, a.p, (ptrdiff_t)a.stride, oa.p, (ptrdiff_t)oa.stride) == BLOOM_OK);
-    CHECK(bloom_process(e.b, b.p, (ptrdiff_t)b.stride, ob.p, (ptrdiff_t)ob.stride) == BLOOM_OK);
+    frame_t oa = run_engine(&c, &a), ob = run_engine(&c, &b);
     CHECK(frame_equal(&oa, &ob));
     expect_bittrue("words above 2^24 clamp", &c, &a);
-    engine_free(&e);
     frame_free(&a);
     frame_free(&b);
     frame_free(&oa);
@@ -89,9 +81,7 @@ static void test_hot_pixel(void)
         frame_set_q16(&src, 150, 130, BLOOM_MAX_LINEAR);
         conform_t r = conform_run(&c, &src);
         CHECKF(r.ok && r.bittrue_diff == 0, "hot pixel L%d: %lld differ", lv, r.bittrue_diff);
-        engine_t e = engine_new(&c);
-        frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
-        CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, out.p, (ptrdiff_t)out.stride) == BLOOM_OK);
+        frame_t out = run_engine(&c, &src);
         double sum = 0;
         for (int y = 0; y < c.height; y++)
             for (int x = 0; x < c.width; x++)
@@ -109,7 +99,6 @@ static void test_hot_pixel(void)
             printf("hot pixel at 256.0, L%-2d: glow energy %.5f of L*(M-16T); vs float peak %d LSB\n",
                    info.levels, sum / want, r.vs_float.peak);
         frame_free(&out);
-        engine_free(&e);
         frame_free(&src);
     }
 }
@@ -126,15 +115,12 @@ static void test_saturation(void)
         c.intensity = BLOOM_MAX_INTENSITY;
         /* every output clamped: white out everywhere */
         frame_t src = frame_alloc(c.width, c.height, c.in_fmt, 200);
-        engine_t e = engine_new(&c);
-        frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
+        frame_t out = run_engine(&c, &src);
         frame_t white = frame_alloc(c.width, c.height, c.out_fmt, 255);
-        CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, out.p, (ptrdiff_t)out.stride) == BLOOM_OK);
         CHECK(frame_equal(&out, &white));
         expect_bittrue("every output clamped", &c, &src);
         frame_free(&white);
         frame_free(&out);
-        engine_free(&e);
         frame_free(&src);
     }
     /* all black: nothing blooms, the output is the input */
@@ -142,12 +128,9 @@ static void test_saturation(void)
     bloom_config_default(&c, 64, 64);
     c.threshold = 0;
     frame_t black = frame_alloc(c.width, c.height, c.in_fmt, 0);
-    engine_t e = engine_new(&c);
-    frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 77);
-    CHECK(bloom_process(e.b, black.p, (ptrdiff_t)black.stride, out.p, (ptrdiff_t)out.stride) == BLOOM_OK);
+    frame_t out = run_engine(&c, &black);
     CHECK(frame_equal(&out, &black));
     frame_free(&out);
-    engine_free(&e);
     frame_free(&black);
 
     /* parameters at their limits, random content */
@@ -178,12 +161,9 @@ static void test_saturation(void)
             if (lim[li].i == 0 || (lim[li].t == BLOOM_MAX_THRESHOLD && lim[li].s == 0)) {
                 /* nothing added: the output is the input, Q16 words too */
                 c.out_fmt = c.in_fmt;
-                engine_t en = engine_new(&c);
-                frame_t o = frame_alloc(c.width, c.height, c.out_fmt, 0);
-                CHECK(bloom_process(en.b, src.p, (ptrdiff_t)src.stride, o.p, (ptrdiff_t)o.stride) == BLOOM_OK);
+                frame_t o = run_engine(&c, &src);
                 CHECK(frame_equal(&o, &src));
                 frame_free(&o);
-                engine_free(&en);
             }
             frame_free(&src);
         }

@@ -200,6 +200,22 @@ static inline engine_t engine_new(const bloom_config_t *c)
     return e;
 }
 
+static inline void engine_free(engine_t *e);
+
+/* src through a fresh engine for c; the output frame (exits on failure). */
+static inline frame_t run_engine(const bloom_config_t *c, const frame_t *src)
+{
+    engine_t e = engine_new(c);
+    frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
+    bloom_status_t st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride);
+    if (st != BLOOM_OK) {
+        fprintf(stderr, "bloom_process: %s\n", bloom_status_str(st));
+        exit(2);
+    }
+    engine_free(&e);
+    return out;
+}
+
 static inline void engine_free(engine_t *e)
 {
     if (!guarded_intact(&e->ws)) {
