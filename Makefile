@@ -25,6 +25,9 @@ CORE_HDR := include/bloom.h include/bloom_config.h src/bloom_internal.h
 SIM_SRC := sim/bloom_model.c sim/imgio.c
 SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
+# Make targets `make test` runs after the test binaries, one pass/fail each;
+# a target that prints a line starting "skipped:" counts as skipped.
+CHECKS := freestanding clang-build check-tables
 
 .PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable
 .DELETE_ON_ERROR:
@@ -75,7 +78,7 @@ deps:
 	sh tests/deps.sh
 
 test: deps $(addprefix $(B)/san/,$(TESTS))
-	BLOOM_DATA_DIR=tests/data sh tests/run.sh $(B)/san $(TESTS)
+	BLOOM_DATA_DIR=tests/data sh tests/run.sh $(B)/san $(TESTS) -- $(CHECKS)
 
 demo: deps $(B)/bloom_demo
 	$(B)/bloom_demo tests/data/rocket_floodlights.ppm $(B)/demo/rocket --threshold 0.6 --intensity 1.5
@@ -86,3 +89,6 @@ $(B) $(B)/obj $(B)/san $(B)/clang $(B)/arm:
 
 clean:
 	rm -rf $(B)
+
+# Ports, cross builds and host tools keep their rules in their own fragments.
+-include $(wildcard port/*/*.mk sim/*.mk tests/*.mk)
