@@ -46,6 +46,35 @@ static int emit_encode(const char *name, int n)
     return bad;
 }
 
+/* Encode buckets: lut[i] = the code of value i << shift (how many
+ * thresholds are <= it). With at most one threshold inside any bucket, the
+ * code of v is lut[v >> shift] plus one compare against the next threshold.
+ * One entry more covers v == 2^20 exactly; larger v are clamped first. */
+static int emit_bucket(const char *name, int n, int shift)
+{
+    int bad = 0, size = (1 << 20 >> shift) + 1;
+    unsigned long t[256];
+    for (int c = 1; c <= n; c++)
+        t[c] = (unsigned long)ceil(srgb_to_linear((c - 0.5) / n) * 1048576.0);
+    printf("const uint8_t %s[%d] = {", name, size);
+    int code = 0;
+    for (int i = 0; i < size; i++) {
+        unsigned long lo = (unsigned long)i << shift, hi = lo + (1ul << shift);
+        while (code < n && t[code + 1] <= lo)
+            code++;
+        int inside = 0;
+        for (int c = code + 1; c <= n && t[c] < hi; c++)
+            inside++;
+        if (inside > 1) {
+            fprintf(stderr, "gen_tables: %s bucket %d holds %d thresholds\n", name, i, inside);
+            bad = 1;
+        }
+        printf("%s%d,", i % 16 ? " " : "\n    ", code);
+    }
+    printf("\n};\n\n");
+    return bad;
+}
+
 int main(void)
 {
     int bad = 0;
@@ -61,5 +90,9 @@ int main(void)
     bad |= emit_encode("bloom_srgb_enc8", 255);
     bad |= emit_encode("bloom_srgb_enc6", 63);
     bad |= emit_encode("bloom_srgb_enc5", 31);
+    printf("/* Encode buckets (shift 8, 10, 11): the code at the start of each bucket. */\n");
+    bad |= emit_bucket("bloom_srgb_bkt8", 255, 8);
+    bad |= emit_bucket("bloom_srgb_bkt6", 63, 10);
+    bad |= emit_bucket("bloom_srgb_bkt5", 31, 11);
     return bad ? EXIT_FAILURE : EXIT_SUCCESS;
 }

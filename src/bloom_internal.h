@@ -17,6 +17,7 @@
 
 extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
 extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];
+extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bkt5[513];
 
 /* Knee parameters, Q12.20 (sim/docs/fixed-point.md step 3). */
 typedef struct {

@@ -1,22 +1,19 @@
-/* Pixel formats: decode a pixel to Q16.16 linear samples, encode back to
- * codes (sim/docs/fixed-point.md steps 1 and 7). Internal samples: Q12.20. */
+/* Pixel formats: decode rows to Q12.20 linear samples, encode back to codes
+ * (sim/docs/fixed-point.md steps 1 and 7). Each (format, curve) pair gets its
+ * own loop so no per-pixel branch remains. */
 #include <string.h>
 
-#include "bloom_internal.h"
+#include "bloom_pixel.h"
 
-static inline uint32_t dec_linear(uint32_t c, uint32_t n)
+/* sRGB encode: the code at the bucket start, then one compare against the
+ * next threshold (gen_tables checks no bucket holds two thresholds). */
+static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
+                                uint32_t n)
 {
-    return (c * BLOOM_LIN_ONE + (n - 1u) / 2u) / n; /* n is a constant per call site */
-}
-
-/* Number of c in 1..n with v >= t[c]: a binary search over the thresholds. */
-static inline uint32_t enc_srgb(uint32_t v, const uint32_t *t, uint32_t n)
-{
-    uint32_t c = 0;
-    for (uint32_t step = (n + 1u) >> 1; step; step >>= 1)
-        if (c + step <= n && v >= t[c + step])
-            c += step;
-    return c;
+    if (v > BLOOM_LIN_ONE)
+        v = BLOOM_LIN_ONE;
+    uint32_t c = bkt[v >> shift];
+    return c + (c < n && v >= t[c + 1]);
 }
 
 static inline uint32_t enc_linear(uint32_t v, uint32_t n)
@@ -26,109 +23,106 @@ static inline uint32_t enc_linear(uint32_t v, uint32_t n)
     return (v * n + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
 }
 
-void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3])
+#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, bloom_srgb_bkt8, 8, bloom_srgb_enc8, 255))
+#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, bloom_srgb_bkt6, 10, bloom_srgb_enc6, 63))
+#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, bloom_srgb_bkt5, 11, bloom_srgb_enc5, 31))
+
+/* One loop per format; `lin` is a constant at each call site, so the
+ * compiler drops the other curve. */
+static inline void decode_rows(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *o, int n)
 {
-    uint32_t r, g, b;
     switch (fmt) {
 #if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565: {
-        uint32_t w = (uint32_t)p[0] | ((uint32_t)p[1] << 8);
-        r = w >> 11;
-        g = (w >> 5) & 63u;
-        b = w & 31u;
-        if (linear) {
-            rgb[0] = dec_linear(r, 31);
-            rgb[1] = dec_linear(g, 63);
-            rgb[2] = dec_linear(b, 31);
-        } else {
-            rgb[0] = bloom_srgb_dec5[r];
-            rgb[1] = bloom_srgb_dec6[g];
-            rgb[2] = bloom_srgb_dec5[b];
-        }
+    case BLOOM_FMT_RGB565:
+        for (int i = 0; i < n; i++, p += 2, o += 3)
+            BLOOM_DEC_RGB565(p, o, lin);
         return;
-    }
 #endif
 #if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16: {
-        uint32_t w[3];
-        memcpy(w, p, sizeof w);
-        for (int c = 0; c < 3; c++)
-            rgb[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << 4;
+    case BLOOM_FMT_RGBQ16:
+        for (int i = 0; i < n; i++, p += 12, o += 3)
+            BLOOM_DEC_RGBQ16(p, o);
         return;
-    }
 #endif
 #if BLOOM_USE_XRGB8888
     case BLOOM_FMT_XRGB8888:
-        r = p[2];
-        g = p[1];
-        b = p[0];
-        break;
+        for (int i = 0; i < n; i++, p += 4, o += 3)
+            BLOOM_DEC_XRGB8888(p, o, lin);
+        return;
 #endif
-    default: /* BLOOM_FMT_RGB888 */
-        r = p[0];
-        g = p[1];
-        b = p[2];
-        break;
+    default:
+        for (int i = 0; i < n; i++, p += 3, o += 3)
+            BLOOM_DEC_RGB888(p, o, lin);
+        return;
     }
-    if (linear) {
-        rgb[0] = dec_linear(r, 255);
-        rgb[1] = dec_linear(g, 255);
-        rgb[2] = dec_linear(b, 255);
-    } else {
-        rgb[0] = bloom_srgb_dec8[r];
-        rgb[1] = bloom_srgb_dec8[g];
-        rgb[2] = bloom_srgb_dec8[b];
+}
+
+void bloom_decode_row(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n)
+{
+    if (linear)
+        decode_rows(fmt, true, src, dst, n);
+    else
+        decode_rows(fmt, false, src, dst, n);
+}
+
+static inline void encode_rows(bloom_format_t fmt, bool lin, const uint32_t *v, uint8_t *p, int n)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        for (int i = 0; i < n; i++, p += 2, v += 3) {
+            uint32_t w = (ENC5(v[0], lin) << 11) | (ENC6(v[1], lin) << 5) | ENC5(v[2], lin);
+            p[0] = (uint8_t)w;
+            p[1] = (uint8_t)(w >> 8);
+        }
+        return;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        for (int i = 0; i < n; i++, p += 12, v += 3) {
+            uint32_t w[3];
+            for (int c = 0; c < 3; c++) { /* Q12.20 -> Q16.16, round half up */
+                uint32_t q = (v[c] >> 4) + ((v[c] >> 3) & 1u);
+                w[c] = q > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : q;
+            }
+            memcpy(p, w, sizeof w);
+        }
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        for (int i = 0; i < n; i++, p += 4, v += 3) {
+            p[0] = (uint8_t)ENC8(v[2], lin);
+            p[1] = (uint8_t)ENC8(v[1], lin);
+            p[2] = (uint8_t)ENC8(v[0], lin);
+            p[3] = 0xFF;
+        }
+        return;
+#endif
+    default:
+        for (int i = 0; i < n; i++, p += 3, v += 3) {
+            p[0] = (uint8_t)ENC8(v[0], lin);
+            p[1] = (uint8_t)ENC8(v[1], lin);
+            p[2] = (uint8_t)ENC8(v[2], lin);
+        }
+        return;
     }
+}
+
+void bloom_encode_row(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_t *dst, int n)
+{
+    if (linear)
+        encode_rows(fmt, true, v, dst, n);
+    else
+        encode_rows(fmt, false, v, dst, n);
+}
+
+void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3])
+{
+    bloom_decode_row(fmt, linear, p, rgb, 1);
 }
 
 void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p)
 {
-    switch (fmt) {
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565: {
-        uint32_t r, g, b;
-        if (linear) {
-            r = enc_linear(v[0], 31);
-            g = enc_linear(v[1], 63);
-            b = enc_linear(v[2], 31);
-        } else {
-            r = enc_srgb(v[0], bloom_srgb_enc5, 31);
-            g = enc_srgb(v[1], bloom_srgb_enc6, 63);
-            b = enc_srgb(v[2], bloom_srgb_enc5, 31);
-        }
-        uint32_t w = (r << 11) | (g << 5) | b;
-        p[0] = (uint8_t)w;
-        p[1] = (uint8_t)(w >> 8);
-        return;
-    }
-#endif
-#if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16: {
-        uint32_t w[3];
-        for (int c = 0; c < 3; c++) {
-            uint32_t q = (v[c] >> 4) + ((v[c] >> 3) & 1u); /* round to Q16.16 */
-            w[c] = q > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : q;
-        }
-        memcpy(p, w, sizeof w);
-        return;
-    }
-#endif
-    default:
-        break;
-    }
-    uint32_t c8[3];
-    for (int c = 0; c < 3; c++)
-        c8[c] = linear ? enc_linear(v[c], 255) : enc_srgb(v[c], bloom_srgb_enc8, 255);
-#if BLOOM_USE_XRGB8888
-    if (fmt == BLOOM_FMT_XRGB8888) {
-        p[0] = (uint8_t)c8[2];
-        p[1] = (uint8_t)c8[1];
-        p[2] = (uint8_t)c8[0];
-        p[3] = 0xFF;
-        return;
-    }
-#endif
-    p[0] = (uint8_t)c8[0];
-    p[1] = (uint8_t)c8[1];
-    p[2] = (uint8_t)c8[2];
+    bloom_encode_row(fmt, linear, v, p, 1);
 }

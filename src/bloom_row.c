@@ -1,7 +1,9 @@
 /* Row kernels: one row of output from a few rows of input, rounding written
  * out in full (sim/docs/fixed-point.md steps 2-7). Samples are interleaved
  * R, G, B uint32_t, Q16.16. The frame-level code only schedules these. */
-#include "bloom_internal.h"
+#include <string.h>
+
+#include "bloom_pixel.h"
 
 static inline int imin(int a, int b)
 {
@@ -32,36 +34,99 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     }
 }
 
-static inline void colsum4_src(const uint8_t *const s[4], bloom_format_t fmt, bool linear, int bpp,
-                               int c, uint32_t out[3])
+#if defined(__GNUC__)
+#define BLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define BLOOM_ALWAYS_INLINE inline
+#endif
+
+/* One decoded pixel; fmt and lin are constants after inlining. */
+static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *o)
 {
-    uint32_t px[3];
-    out[0] = out[1] = out[2] = 0;
-    for (int r = 0; r < 4; r++) {
-        bloom_pixel_decode(fmt, linear, s[r] + (size_t)c * (size_t)bpp, px);
-        out[0] += px[0];
-        out[1] += px[1];
-        out[2] += px[2];
+    switch (fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        BLOOM_DEC_RGB565(p, o, lin);
+        return;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        BLOOM_DEC_RGBQ16(p, o);
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        BLOOM_DEC_XRGB8888(p, o, lin);
+        return;
+#endif
+    default:
+        BLOOM_DEC_RGB888(p, o, lin);
+        return;
+    }
+}
+
+static BLOOM_ALWAYS_INLINE void colsum4_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
+                                            size_t off, uint32_t out[3])
+{
+    uint32_t a[3], b[3], c[3], d[3];
+    dec_px(fmt, lin, s[0] + off, a);
+    dec_px(fmt, lin, s[1] + off, b);
+    dec_px(fmt, lin, s[2] + off, c);
+    dec_px(fmt, lin, s[3] + off, d);
+    for (int ch = 0; ch < 3; ch++)
+        out[ch] = a[ch] + b[ch] + c[ch] + d[ch];
+}
+
+static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
+                                        size_t bpp, uint32_t *dst, int dw, int sw)
+{
+    uint32_t a[3], b[3], c[3], d[3];
+    colsum4_src(s, fmt, lin, 0, a); /* column 2x-1 = -1 clamps to 0 */
+    b[0] = a[0];
+    b[1] = a[1];
+    b[2] = a[2];
+    for (int x = 0; x < dw; x++, dst += 3) {
+        colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp, c);
+        colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 2, sw - 1) * bpp, d);
+        for (int ch = 0; ch < 3; ch++) {
+            dst[ch] = (a[ch] + b[ch] + c[ch] + d[ch] + 8u) >> 4;
+            a[ch] = c[ch];
+            b[ch] = d[ch];
+        }
     }
 }
 
 void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
                          uint32_t *dst, int dw, int sw)
 {
-    const int bpp = bloom_format_bpp(fmt);
-    uint32_t a[3], b[3], c[3], d[3];
-    colsum4_src(s, fmt, linear, bpp, 0, a);
-    b[0] = a[0];
-    b[1] = a[1];
-    b[2] = a[2];
-    for (int x = 0; x < dw; x++) {
-        colsum4_src(s, fmt, linear, bpp, imin(2 * x + 1, sw - 1), c);
-        colsum4_src(s, fmt, linear, bpp, imin(2 * x + 2, sw - 1), d);
-        for (int ch = 0; ch < 3; ch++) {
-            dst[3 * x + ch] = (a[ch] + b[ch] + c[ch] + d[ch] + 8u) >> 4;
-            a[ch] = c[ch];
-            b[ch] = d[ch];
-        }
+    switch (fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        if (linear)
+            box_src(s, BLOOM_FMT_RGB565, true, 2, dst, dw, sw);
+        else
+            box_src(s, BLOOM_FMT_RGB565, false, 2, dst, dw, sw);
+        return;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        box_src(s, BLOOM_FMT_RGBQ16, false, 12, dst, dw, sw);
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        if (linear)
+            box_src(s, BLOOM_FMT_XRGB8888, true, 4, dst, dw, sw);
+        else
+            box_src(s, BLOOM_FMT_XRGB8888, false, 4, dst, dw, sw);
+        return;
+#endif
+    default:
+        if (linear)
+            box_src(s, BLOOM_FMT_RGB888, true, 3, dst, dw, sw);
+        else
+            box_src(s, BLOOM_FMT_RGB888, false, 3, dst, dw, sw);
+        return;
     }
 }
 
@@ -99,37 +164,47 @@ void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
 /* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
  * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
  * Cortex-M); the results fit in 32 again. */
-static inline void vtent(const uint32_t *const u[3], int odd, int c, uint32_t v[3])
+static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
+                                      uint64_t wa, uint64_t wc, uint32_t v[3])
 {
-    const size_t i = (size_t)c * 3u;
-    const uint64_t wa = odd ? 1u : 3u, wc = odd ? 3u : 1u;
     for (int ch = 0; ch < 3; ch++)
-        v[ch] = (uint32_t)((wa * u[0][i + ch] + 4u * (uint64_t)u[1][i + ch] +
-                            wc * u[2][i + ch] + 4u) >> 3);
+        v[ch] = (uint32_t)((wa * u0[ch] + 4u * (uint64_t)u1[ch] + wc * u2[ch] + 4u) >> 3);
 }
 
-void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                      int x0, int n, int sw)
+static BLOOM_ALWAYS_INLINE uint32_t htent(uint64_t a, uint64_t b, uint64_t c)
 {
-    int x = x0, end = x0 + n;
-    int m = x >> 1;
+    return (uint32_t)((a + 4u * b + c + 4u) >> 3);
+}
+
+static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const uint32_t *add,
+                                     uint32_t *dst, int x0, int n, int sw, bool has_add)
+{
+    const uint64_t wa = odd ? 1u : 3u, wc = odd ? 3u : 1u;
+    const uint32_t *u0 = u[0], *u1 = u[1], *u2 = u[2];
+    int x = x0, m = x0 >> 1;
+    const int end = x0 + n;
     uint32_t vp[3], vc[3], vn[3];
-    vtent(u, odd, m > 0 ? m - 1 : 0, vp);
-    vtent(u, odd, m, vc);
+    size_t i = (size_t)(m > 0 ? m - 1 : 0) * 3u;
+    vtent(u0 + i, u1 + i, u2 + i, wa, wc, vp);
+    i = (size_t)m * 3u;
+    vtent(u0 + i, u1 + i, u2 + i, wa, wc, vc);
+    uint32_t *d = dst;
+    const uint32_t *ad = add;
     while (x < end) {
-        vtent(u, odd, imin(m + 1, sw - 1), vn);
+        i = (size_t)imin(m + 1, sw - 1) * 3u;
+        vtent(u0 + i, u1 + i, u2 + i, wa, wc, vn);
         if (!(x & 1)) { /* even column: (3, 4, 1) */
-            for (int ch = 0; ch < 3; ch++) {
-                uint32_t t = (uint32_t)((3u * (uint64_t)vp[ch] + 4u * (uint64_t)vc[ch] + vn[ch] + 4u) >> 3);
-                dst[3 * (x - x0) + ch] = t + (add ? add[3 * (x - x0) + ch] : 0u);
-            }
+            for (int ch = 0; ch < 3; ch++)
+                d[ch] = htent(3u * (uint64_t)vp[ch], vc[ch], vn[ch]) + (has_add ? ad[ch] : 0u);
+            d += 3;
+            ad += has_add ? 3 : 0;
             x++;
         }
         if (x < end) { /* odd column: (1, 4, 3) */
-            for (int ch = 0; ch < 3; ch++) {
-                uint32_t t = (uint32_t)(((uint64_t)vp[ch] + 4u * (uint64_t)vc[ch] + 3u * (uint64_t)vn[ch] + 4u) >> 3);
-                dst[3 * (x - x0) + ch] = t + (add ? add[3 * (x - x0) + ch] : 0u);
-            }
+            for (int ch = 0; ch < 3; ch++)
+                d[ch] = htent(vp[ch], vc[ch], 3u * (uint64_t)vn[ch]) + (has_add ? ad[ch] : 0u);
+            d += 3;
+            ad += has_add ? 3 : 0;
             x++;
         }
         for (int ch = 0; ch < 3; ch++) {
@@ -140,26 +215,32 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
     }
 }
 
+void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                      int x0, int n, int sw)
+{
+    if (add)
+        tent(u, odd, add, dst, x0, n, sw, true);
+    else
+        tent(u, odd, NULL, dst, x0, n, sw, false);
+}
+
 void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
                      int sw, const bloom_out_t *o)
 {
-    const int ibpp = bloom_format_bpp(o->in_fmt), obpp = bloom_format_bpp(o->out_fmt);
-    uint32_t bl[3 * BLOOM_OUT_CHUNK];
+    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const uint64_t I = o->intensity;
+    uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
         const int n = imin(BLOOM_OUT_CHUNK, w - x0);
-        bloom_row_tent_c(u, odd, NULL, bl, x0, n, sw);
-        for (int i = 0; i < n; i++) {
-            const size_t x = (size_t)(x0 + i);
-            uint32_t s[3], v[3];
-            if (!o->debug)
-                bloom_pixel_decode(o->in_fmt, o->linear, src + x * (size_t)ibpp, s);
-            for (int ch = 0; ch < 3; ch++) {
-                uint64_t p = ((uint64_t)o->intensity * bl[3 * i + ch] + 32768u) >> 16;
-                if (!o->debug)
-                    p += s[ch];
-                v[ch] = p > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)p;
-            }
-            bloom_pixel_encode(o->out_fmt, o->linear, v, dst + x * (size_t)obpp);
+        tent(u, odd, NULL, bl, x0, n, sw, false);
+        if (o->debug)
+            memset(sv, 0, sizeof sv);
+        else
+            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
+        for (int i = 0; i < 3 * n; i++) {
+            uint64_t v = ((I * bl[i] + 32768u) >> 16) + sv[i];
+            bl[i] = v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
         }
+        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
     }
 }

@@ -1,0 +1,63 @@
+/* Decoding one pixel of each format to Q12.20 samples, inline, so that the
+ * row loops of bloom_pixel.c and bloom_row.c specialize per format and
+ * curve (`lin` is a constant at every call site). */
+#ifndef BLOOM_PIXEL_H
+#define BLOOM_PIXEL_H
+
+#include <string.h>
+
+#include "bloom_internal.h"
+
+/* Linear decode: round(c / n * 2^20); n is odd, so there is no tie. */
+static inline uint32_t bloom_dec_linear(uint32_t c, uint32_t n)
+{
+    return (c * BLOOM_LIN_ONE + (n - 1u) / 2u) / n;
+}
+
+static inline void bloom_dec3(uint32_t r, uint32_t g, uint32_t b, uint32_t *o, bool lin)
+{
+    if (lin) {
+        o[0] = bloom_dec_linear(r, 255);
+        o[1] = bloom_dec_linear(g, 255);
+        o[2] = bloom_dec_linear(b, 255);
+    } else {
+        o[0] = bloom_srgb_dec8[r];
+        o[1] = bloom_srgb_dec8[g];
+        o[2] = bloom_srgb_dec8[b];
+    }
+}
+
+#define BLOOM_DEC_RGB888(p, o, lin) bloom_dec3((p)[0], (p)[1], (p)[2], (o), (lin))
+#define BLOOM_DEC_XRGB8888(p, o, lin) bloom_dec3((p)[2], (p)[1], (p)[0], (o), (lin))
+
+static inline void bloom_dec_rgb565(const uint8_t *p, uint32_t *o, bool lin)
+{
+    const uint32_t w = (uint32_t)p[0] | ((uint32_t)p[1] << 8);
+    const uint32_t r = w >> 11, g = (w >> 5) & 63u, b = w & 31u;
+    if (lin) {
+        o[0] = bloom_dec_linear(r, 31);
+        o[1] = bloom_dec_linear(g, 63);
+        o[2] = bloom_dec_linear(b, 31);
+    } else {
+        o[0] = bloom_srgb_dec5[r];
+        o[1] = bloom_srgb_dec6[g];
+        o[2] = bloom_srgb_dec5[b];
+    }
+}
+#define BLOOM_DEC_RGB565(p, o, lin) bloom_dec_rgb565((p), (o), (lin))
+
+/* Linear Q16.16 words, clamped to the largest value, to Q12.20. */
+static inline void bloom_dec_rgbq16(const uint8_t *p, uint32_t *o)
+{
+    uint32_t w[3];
+    memcpy(w, p, sizeof w);
+    for (int c = 0; c < 3; c++)
+        o[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << 4;
+}
+#define BLOOM_DEC_RGBQ16(p, o) bloom_dec_rgbq16((p), (o))
+
+/* Rows: n pixels from src (packed) to dst (3 samples each) and back. */
+void bloom_decode_row(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n);
+void bloom_encode_row(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_t *dst, int n);
+
+#endif
