@@ -27,9 +27,9 @@ SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # Make targets `make test` runs after the test binaries, one pass/fail each;
 # a target that prints a line starting "skipped:" counts as skipped.
-CHECKS := freestanding clang-build check-tables
+CHECKS := freestanding clang-build check-tables test-small
 
-.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable
+.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
@@ -68,6 +68,15 @@ freestanding: | $(B)/arm
 	bad=$$(echo "$$undef" | grep -vx 'memcpy\|memset' | grep .); \
 	if [ -n "$$bad" ]; then echo "freestanding: the core needs more than memcpy/memset:" $$bad; exit 1; fi; \
 	echo "freestanding: Cortex-M4 core references only:" $$undef
+
+# The size-optimized core (BLOOM_SMALL) must compute the same bits.
+$(B)/small/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
+	@mkdir -p $(B)/small
+	$(CC) $(WARN) -O2 -DBLOOM_SMALL=1 $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
+test-small: $(B)/small/test_conformance $(B)/small/test_core
+	@echo "BLOOM_SMALL=1 (binary-search encoder, no per-format copies):"
+	@BLOOM_DATA_DIR=tests/data $(B)/small/test_conformance | tail -n 1
+	@$(B)/small/test_core | tail -n 1
 
 tables: $(B)/gen_tables
 	$(B)/gen_tables > src/bloom_tables.c

@@ -26,6 +26,13 @@
 #define BLOOM_CHECK_RINGS 1
 #endif
 
+/* Smallest code over speed: the sRGB encoder searches the thresholds
+ * instead of using its 5.6 KB of bucket tables, and the row kernels are not
+ * copied per pixel format. Same results bit for bit (tested). */
+#ifndef BLOOM_SMALL
+#define BLOOM_SMALL 0
+#endif
+
 /* Pixels per chunk of the fused output kernel: a stack buffer of
  * 3 * 4 * BLOOM_OUT_CHUNK bytes. */
 #ifndef BLOOM_OUT_CHUNK

@@ -7,6 +7,21 @@
 
 /* sRGB encode: the code at the bucket start, then one compare against the
  * next threshold (gen_tables checks no bucket holds two thresholds). */
+#if BLOOM_SMALL
+/* The number of c in 1..n with v >= t[c], by binary search. */
+static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
+                                uint32_t n)
+{
+    (void)bkt;
+    (void)shift;
+    uint32_t c = 0;
+    for (uint32_t step = (n + 1u) >> 1; step; step >>= 1)
+        if (c + step <= n && v >= t[c + step])
+            c += step;
+    return c;
+}
+#define BKT(name) NULL
+#else
 static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
                                 uint32_t n)
 {
@@ -15,6 +30,8 @@ static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const
     uint32_t c = bkt[v >> shift];
     return c + (c < n && v >= t[c + 1]);
 }
+#define BKT(name) name
+#endif
 
 static inline uint32_t enc_linear(uint32_t v, uint32_t n)
 {
@@ -23,9 +40,9 @@ static inline uint32_t enc_linear(uint32_t v, uint32_t n)
     return (v * n + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
 }
 
-#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, bloom_srgb_bkt8, 8, bloom_srgb_enc8, 255))
-#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, bloom_srgb_bkt6, 10, bloom_srgb_enc6, 63))
-#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, bloom_srgb_bkt5, 11, bloom_srgb_enc5, 31))
+#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, BKT(bloom_srgb_bkt8), 8, bloom_srgb_enc8, 255))
+#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, BKT(bloom_srgb_bkt6), 10, bloom_srgb_enc6, 63))
+#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, BKT(bloom_srgb_bkt5), 11, bloom_srgb_enc5, 31))
 
 /* One loop per format; `lin` is a constant at each call site, so the
  * compiler drops the other curve. */
@@ -50,9 +67,13 @@ static inline void decode_rows(bloom_format_t fmt, bool lin, const uint8_t *p, u
             BLOOM_DEC_XRGB8888(p, o, lin);
         return;
 #endif
-    default:
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
         for (int i = 0; i < n; i++, p += 3, o += 3)
             BLOOM_DEC_RGB888(p, o, lin);
+        return;
+#endif
+    default: /* refused by bloom_query */
         return;
     }
 }
@@ -99,12 +120,16 @@ static inline void encode_rows(bloom_format_t fmt, bool lin, const uint32_t *v, 
         }
         return;
 #endif
-    default:
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
         for (int i = 0; i < n; i++, p += 3, v += 3) {
             p[0] = (uint8_t)ENC8(v[0], lin);
             p[1] = (uint8_t)ENC8(v[1], lin);
             p[2] = (uint8_t)ENC8(v[2], lin);
         }
+        return;
+#endif
+    default: /* refused by bloom_query */
         return;
     }
 }

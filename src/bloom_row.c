@@ -34,7 +34,7 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     }
 }
 
-#if defined(__GNUC__)
+#if defined(__GNUC__) && !BLOOM_SMALL
 #define BLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
 #else
 #define BLOOM_ALWAYS_INLINE inline
@@ -59,8 +59,13 @@ static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8
         BLOOM_DEC_XRGB8888(p, o, lin);
         return;
 #endif
-    default:
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
         BLOOM_DEC_RGB888(p, o, lin);
+        return;
+#endif
+    default: /* refused by bloom_query */
+        o[0] = o[1] = o[2] = 0;
         return;
     }
 }
@@ -121,11 +126,15 @@ void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool lin
             box_src(s, BLOOM_FMT_XRGB8888, false, 4, dst, dw, sw);
         return;
 #endif
-    default:
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
         if (linear)
             box_src(s, BLOOM_FMT_RGB888, true, 3, dst, dw, sw);
         else
             box_src(s, BLOOM_FMT_RGB888, false, 3, dst, dw, sw);
+        return;
+#endif
+    default: /* refused by bloom_query */
         return;
     }
 }

@@ -8,7 +8,9 @@ bindir=$1; shift
 pass=0; fail=0; skip=0
 log=$(mktemp)
 count() { # name, exit status, log file
-    line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$3" | tail -n 1)
+    # sum every closing line the program printed (a check may run several)
+    line=$(awk '/^[0-9]+ passed, [0-9]+ failed/ { p += $1; f += $3; n++ }
+                END { if (n) printf "%d passed, %d failed", p, f }' "$3")
     if [ -n "$line" ]; then
         p=${line%% passed*}; f=${line#*, }; f=${f%% failed*}
     else
