@@ -37,8 +37,10 @@ typedef enum {
 enum {
     BLOOM_FLAG_LINEAR = 1u << 0,      /* no sRGB decode/encode: codes are linear */
     BLOOM_FLAG_DEBUG_VIEW = 1u << 1,  /* output I*B only (bloom-only view) */
-    BLOOM_FLAG_COPY_SOURCE = 1u << 2  /* engine copies the source rows it still
+    BLOOM_FLAG_COPY_SOURCE = 1u << 2, /* engine copies the source rows it still
                                          needs; without it, it keeps pointers */
+    BLOOM_FLAG_NO_SKIP = 1u << 3      /* compute rows known to be zero anyway
+                                         (for tests and benchmarks) */
 };
 
 typedef enum {
@@ -134,10 +136,11 @@ const char *bloom_status_str(bloom_status_t st);
  * sizes and depths). src_bpp is the input bytes per pixel, copy 1 with
  * BLOOM_FLAG_COPY_SOURCE. Rows held per level (sim/docs/streaming.md): 12 at
  * level 1, 8 at level 2, 2^(L-k+2) + 4 at level k >= 3, of w/2^k + 1 pixels of
- * 12 bytes; that sums to below w*(2^L + 96) + 12*2^L; the source ring holds
- * fewer than 4*2^L + 8 rows (pointers, or copies). */
+ * 12 bytes, plus one zero row of w/2 pixels; that sums to below
+ * w*(2^L + 104) + 12*2^L; the source ring holds fewer than 4*2^L + 8 rows
+ * (pointers, or copies). */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                   \
-    ((size_t)6144u + (size_t)(w) * (((size_t)1u << (levels)) + 96u) +                     \
+    ((size_t)6144u + (size_t)(w) * (((size_t)1u << (levels)) + 104u) +                    \
      ((size_t)64u << (levels)) + (size_t)64u * (size_t)(levels) +                          \
      ((copy) ? (((size_t)4u << (levels)) + 8u) * (size_t)(w) * (size_t)(src_bpp) : 0u))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) \

@@ -102,9 +102,39 @@ static bloom_status_t validate(const bloom_config_t *c)
         return BLOOM_E_INTENSITY;
     if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
-    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE))
+    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
+                               BLOOM_FLAG_NO_SKIP))
         return BLOOM_E_FLAGS;
     return BLOOM_OK;
+}
+
+/* The largest code of each width whose decoded value the knee zeroes
+ * (bmax <= t - k): rows without a larger code contribute nothing. */
+static uint32_t dark_code(uint32_t cut, bool linear, const uint32_t *table, uint32_t n)
+{
+    uint32_t c = 0;
+    while (c < n) {
+        const uint32_t next = linear ? ((c + 1u) * BLOOM_LIN_ONE + (n - 1u) / 2u) / n : table[c + 1];
+        if (next > cut)
+            break;
+        c++;
+    }
+    return c;
+}
+
+static void set_dark(bloom_t *b)
+{
+    const uint32_t cut = b->knee.t > b->knee.k ? b->knee.t - b->knee.k : 0u;
+    const bool lin = b->out.linear;
+    (void)lin;
+#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
+    b->dark.c8 = dark_code(cut, lin, bloom_srgb_dec8, 255);
+#endif
+#if BLOOM_USE_RGB565
+    b->dark.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
+    b->dark.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
+#endif
+    b->dark.q16 = cut >> 4; /* min(w, 2^24 - 1) << 4 <= cut */
 }
 
 /* Geometry and quantized parameters; no buffers. */
@@ -131,6 +161,8 @@ static void setup(bloom_t *b, const bloom_config_t *cfg)
     b->out.debug = (cfg->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
     b->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
     b->src_bpp = bloom_format_bpp(cfg->in_fmt);
+    b->skip = !(cfg->flags & BLOOM_FLAG_NO_SKIP);
+    set_dark(b);
     b->src_row_bytes = (size_t)cfg->width * (size_t)b->src_bpp;
 }
 
@@ -183,6 +215,11 @@ static int oldest_U(const bloom_t *b, int k)
     return imax(((k == 1 ? b->out_n : b->u_next[k - 1]) >> 1) - 1, 0);
 }
 
+/* Ring tags hold the row number; ZBIT marks a row known to be all zero
+ * (never written: readers get the shared zero row) or, in the source ring,
+ * a dark row (nothing in it passes the knee). Rows are < 2^30. */
+#define ZBIT 0x40000000
+
 /* Claim the slot for row r of a ring whose oldest live row is `oldest`. */
 static uint32_t *ring_put(bloom_t *b, bloom_ring_t *rg, int *need, int r, int oldest)
 {
@@ -200,14 +237,25 @@ static uint32_t *ring_put(bloom_t *b, bloom_ring_t *rg, int *need, int r, int ol
     return rg->buf + (size_t)(r % rg->cap) * (size_t)rg->width * 3u;
 }
 
+static void ring_mark_zero(bloom_ring_t *rg, int r)
+{
+    rg->tag[r % rg->cap] = r | ZBIT;
+}
+
+static bool ring_zero(const bloom_ring_t *rg, int r)
+{
+    return (rg->tag[r % rg->cap] & ZBIT) != 0;
+}
+
 static const uint32_t *ring_get(bloom_t *b, const bloom_ring_t *rg, int r)
 {
+    const int32_t tag = rg->tag[r % rg->cap];
 #if BLOOM_CHECK_RINGS
-    if (rg->tag[r % rg->cap] != r)
+    if ((tag & ~ZBIT) != r)
         b->failed = true;
-#else
-    (void)b;
 #endif
+    if (tag & ZBIT)
+        return b->zero_row;
     return rg->buf + (size_t)(r % rg->cap) * (size_t)rg->width * 3u;
 }
 
@@ -215,7 +263,7 @@ static const uint8_t *src_get(bloom_t *b, int r)
 {
     const int slot = r % b->src_cap;
 #if BLOOM_CHECK_RINGS
-    if (b->src_tag[slot] != r)
+    if ((b->src_tag[slot] & ~ZBIT) != r)
         b->failed = true;
 #endif
     if (b->src_copy)
@@ -223,20 +271,45 @@ static const uint8_t *src_get(bloom_t *b, int r)
     return b->src_ptr[slot];
 }
 
-/* D_1 row r from source rows 2r-1 .. 2r+2, box then knee. */
-static void compute_d1(bloom_t *b, int r, uint32_t *dst)
+/* Whether the `n` rows of a ring from `first` (clamped to the level) are
+ * all zero; always false when skipping is off. */
+static bool rows_zero(const bloom_t *b, const bloom_ring_t *rg, int first, int n, int h)
+{
+    if (!b->skip)
+        return false;
+    for (int i = 0; i < n; i++)
+        if (!ring_zero(rg, clampi(first + i, 0, h - 1)))
+            return false;
+    return true;
+}
+
+/* D_1 row r from source rows 2r-1 .. 2r+2, box then knee; false when the
+ * row is all zero (then dst is not written). */
+static bool compute_d1(bloom_t *b, int r, uint32_t *dst)
 {
     const uint8_t *s[4];
-    for (int i = 0; i < 4; i++)
-        s[i] = src_get(b, clampi(2 * r - 1 + i, 0, b->h[0] - 1));
+    bool dark = b->skip;
+    for (int i = 0; i < 4; i++) {
+        const int row = clampi(2 * r - 1 + i, 0, b->h[0] - 1);
+        s[i] = src_get(b, row);
+        dark = dark && (b->src_tag[row % b->src_cap] & ZBIT);
+    }
+    if (dark)
+        return false;
     bloom_row_box_src_c(s, b->cfg.in_fmt, b->out.linear, dst, b->w[1], b->w[0]);
-    bloom_row_knee_c(dst, b->w[1], &b->knee);
+    return bloom_row_knee_c(dst, b->w[1], &b->knee) || !b->skip;
+}
+
+/* The ring tent row r of level k reads from: U_{k+1}, or D_L at the bottom. */
+static const bloom_ring_t *below(const bloom_t *b, int k)
+{
+    return (k + 1 == b->L) ? &b->D[k + 1] : &b->U[k + 1];
 }
 
 /* The three rows of the level below (k+1) that tent row r of level k reads. */
 static void tent_rows(bloom_t *b, int k, int r, const uint32_t *u[3])
 {
-    const bloom_ring_t *rg = (k + 1 == b->L) ? &b->D[k + 1] : &b->U[k + 1];
+    const bloom_ring_t *rg = below(b, k);
     const int m = r >> 1, hb = b->h[k + 1];
     for (int i = 0; i < 3; i++)
         u[i] = ring_get(b, rg, clampi(m - 1 + i, 0, hb - 1));
@@ -249,10 +322,14 @@ static bool ensure_D(bloom_t *b, int k, int j)
         const int top = imin(2 * r + 2, b->h[k - 1] - 1);
         if (k == 1 ? top >= b->src_n : !ensure_D(b, k - 1, top))
             return false;
-        uint32_t *dst = ring_put(b, &b->D[k], &b->need_D[k], r, oldest_D(b, k));
+        bloom_ring_t *rg = &b->D[k];
+        uint32_t *dst = ring_put(b, rg, &b->need_D[k], r, oldest_D(b, k));
         if (dst) {
             if (k == 1) {
-                compute_d1(b, r, dst);
+                if (!compute_d1(b, r, dst))
+                    ring_mark_zero(rg, r);
+            } else if (rows_zero(b, &b->D[k - 1], 2 * r - 1, 4, b->h[k - 1])) {
+                ring_mark_zero(rg, r);
             } else {
                 const uint32_t *s[4];
                 for (int i = 0; i < 4; i++)
@@ -273,8 +350,8 @@ static bool ensure_E1(bloom_t *b, int j)
         if (imin(2 * r + 2, b->h[0] - 1) >= b->src_n)
             return false;
         uint32_t *dst = ring_put(b, &b->E1, &b->need_E1, r, oldest_E1(b));
-        if (dst)
-            compute_d1(b, r, dst);
+        if (dst && !compute_d1(b, r, dst))
+            ring_mark_zero(&b->E1, r);
         b->e_next++;
     }
     return true;
@@ -287,31 +364,44 @@ static bool ensure_U(bloom_t *b, int k, int j)
 {
     while (b->u_next[k] <= j) {
         const int r = b->u_next[k];
+        const bool d2 = k == 2 && recompute_d2(b);
         if (!ensure_up(b, k + 1, imin((r >> 1) + 1, b->h[k + 1] - 1)))
             return false;
         bool ok;
         if (k == 1)
             ok = ensure_E1(b, r);
-        else if (k == 2 && recompute_d2(b))
+        else if (d2)
             ok = ensure_E1(b, imin(2 * r + 2, b->h[1] - 1));
         else
             ok = ensure_D(b, k, r);
         if (!ok)
             return false;
-        uint32_t *dst = ring_put(b, &b->U[k], &b->need_U[k], r, oldest_U(b, k));
+        bloom_ring_t *rg = &b->U[k];
+        uint32_t *dst = ring_put(b, rg, &b->need_U[k], r, oldest_U(b, k));
         if (dst) {
-            const uint32_t *u[3];
-            tent_rows(b, k, r, u);
-            if (k == 2 && recompute_d2(b)) {
-                const uint32_t *s[4];
-                for (int i = 0; i < 4; i++)
-                    s[i] = ring_get(b, &b->E1, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
-                bloom_row_box_c(s, dst, b->w[2], b->w[1]);
+            const bloom_ring_t *dring = k == 1 ? &b->E1 : d2 ? &b->E1 : &b->D[k];
+            const bool dzero = d2 ? rows_zero(b, dring, 2 * r - 1, 4, b->h[1])
+                                  : rows_zero(b, dring, r, 1, b->h[k]);
+            const bool uzero = rows_zero(b, below(b, k), (r >> 1) - 1, 3, b->h[k + 1]);
+            if (dzero && uzero) {
+                ring_mark_zero(rg, r);
             } else {
-                const bloom_ring_t *d = k == 1 ? &b->E1 : &b->D[k];
-                memcpy(dst, ring_get(b, d, r), (size_t)b->w[k] * 3u * sizeof *dst);
+                if (dzero) {
+                    /* the tent alone */
+                } else if (d2) {
+                    const uint32_t *s[4];
+                    for (int i = 0; i < 4; i++)
+                        s[i] = ring_get(b, dring, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
+                    bloom_row_box_c(s, dst, b->w[2], b->w[1]);
+                } else {
+                    memcpy(dst, ring_get(b, dring, r), (size_t)b->w[k] * 3u * sizeof *dst);
+                }
+                if (!uzero) {
+                    const uint32_t *u[3];
+                    tent_rows(b, k, r, u);
+                    bloom_row_tent_c(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
+                }
             }
-            bloom_row_tent_c(u, r & 1, dst, dst, 0, b->w[k], b->w[k + 1]);
         }
         b->u_next[k]++;
     }
@@ -366,6 +456,7 @@ static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
         TAKE(b->src_ptr, const uint8_t *, cap_src);
     }
     TAKE(b->src_tag, int32_t, cap_src);
+    TAKE(b->zero_row, uint32_t, (size_t)b->w[1] * 3u);
     if (base)
         b->src_cap = cap_src;
     for (int k = 1; k <= b->L; k++) {
@@ -456,6 +547,7 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
     size_t used = carve(b, (uint8_t *)ws, NULL);
     if (used != info.workspace_bytes) /* the carving must end where sizing said */
         return BLOOM_E_INTERNAL;
+    memset(b->zero_row, 0, (size_t)b->w[1] * 3u * sizeof *b->zero_row);
     *out = b;
     return bloom_begin(b);
 }
@@ -507,7 +599,8 @@ bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
         memcpy(b->src_copy + (size_t)slot * b->src_row_bytes, src_row, b->src_row_bytes);
     else
         b->src_ptr[slot] = (const uint8_t *)src_row;
-    b->src_tag[slot] = r;
+    const bool dark = b->skip && bloom_row_dark(b->cfg.in_fmt, (const uint8_t *)src_row, b->w[0], &b->dark);
+    b->src_tag[slot] = r | (dark ? ZBIT : 0);
     b->src_n++;
     return BLOOM_OK;
 }
@@ -521,9 +614,13 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
         return BLOOM_DONE;
     if (y >= b->src_n || !ensure_up(b, 1, imin((y >> 1) + 1, b->h[1] - 1)))
         return b->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
-    const uint32_t *u[3];
-    tent_rows(b, 0, y, u);
-    bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
+    if (rows_zero(b, below(b, 0), (y >> 1) - 1, 3, b->h[1])) { /* B = 0 here */
+        bloom_row_copy_c(src_get(b, y), (uint8_t *)dst_row, b->w[0], &b->out);
+    } else {
+        const uint32_t *u[3];
+        tent_rows(b, 0, y, u);
+        bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
+    }
     if (b->failed)
         return BLOOM_E_INTERNAL;
     b->out_n++;

@@ -24,6 +24,12 @@ typedef struct {
     uint32_t t, k;
 } bloom_knee_t;
 
+/* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
+ * source row with no channel above them is dark. */
+typedef struct {
+    uint32_t c8, c6, c5, q16;
+} bloom_dark_t;
+
 /* How the output kernel turns B into pixels. */
 typedef struct {
     bloom_format_t in_fmt, out_fmt;
@@ -46,7 +52,7 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
                          uint32_t *dst, int dw, int sw);
 /* The soft knee on a row of level-1 pixels, in place. */
-void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn);
+bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn); /* any non-zero */
 /* Tent up: destination columns x0 .. x0+n-1 of the row whose parity is odd,
  * from rows u[0..2] (width sw). dst[i] (and add[i] if add is not NULL) is
  * column x0 + i; dst = tent + add. add may equal dst. */
@@ -59,6 +65,10 @@ void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, ui
 
 /* Pixel access (bloom_pixel.c). */
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
+/* Whether no channel of the n pixels exceeds the dark codes. */
+bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+/* A row with B = 0: the source decoded and encoded again (no tent). */
+void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
 void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
 
 /* A ring of rows of one pyramid level. tag[slot] is the row held there. */
@@ -90,6 +100,9 @@ struct bloom {
     int src_n, out_n;
     int d_next[BLOOM_MAX_LEVELS + 1], u_next[BLOOM_MAX_LEVELS + 1], e_next;
     bool failed;
+    bool skip;                /* zero-row shortcuts on (not BLOOM_FLAG_NO_SKIP) */
+    bloom_dark_t dark;
+    uint32_t *zero_row;       /* w[1] pixels of zeros: what zero rows read as */
 
     /* dry run (sizing): no buffers, only the largest ring occupancy */
     bool dry;

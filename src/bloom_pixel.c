@@ -151,3 +151,65 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 {
     bloom_encode_row(fmt, linear, v, p, 1);
 }
+
+/* Largest byte of p[0..n): 32 lanes of fixed-count loops so that even
+ * -O2's cheapest vectorizer turns them into byte-max instructions. */
+static uint8_t max_bytes(const uint8_t *p, size_t n)
+{
+    uint8_t lane[32] = {0}, m = 0;
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32)
+        for (int j = 0; j < 32; j++)
+            lane[j] = p[i + (size_t)j] > lane[j] ? p[i + (size_t)j] : lane[j];
+    for (int j = 0; j < 32; j++)
+        m = lane[j] > m ? lane[j] : m;
+    for (; i < n; i++)
+        m = p[i] > m ? p[i] : m;
+    return m;
+}
+
+/* Largest channel codes of a row against the dark codes. */
+bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565: {
+        uint32_t r = 0, g = 0, b = 0;
+        for (int i = 0; i < n; i++) {
+            const uint32_t w = (uint32_t)p[2 * i] | ((uint32_t)p[2 * i + 1] << 8);
+            const uint32_t wr = w >> 11, wg = (w >> 5) & 63u, wb = w & 31u;
+            r = wr > r ? wr : r;
+            g = wg > g ? wg : g;
+            b = wb > b ? wb : b;
+        }
+        return r <= d->c5 && g <= d->c6 && b <= d->c5;
+    }
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16: {
+        uint32_t m = 0;
+        for (int i = 0; i < 3 * n; i++) {
+            uint32_t w;
+            memcpy(&w, p + 4 * i, 4);
+            m = w > m ? w : m;
+        }
+        return m <= d->q16;
+    }
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888: {
+        if (max_bytes(p, 4u * (size_t)n) <= d->c8)
+            return true; /* X bytes included: a bright X only costs the exact test */
+        uint8_t m = 0;
+        for (int i = 0; i < n; i++) {
+            const uint8_t c = p[4 * i] > p[4 * i + 1] ? p[4 * i] : p[4 * i + 1];
+            const uint8_t e = c > p[4 * i + 2] ? c : p[4 * i + 2];
+            m = e > m ? e : m;
+        }
+        return m <= d->c8;
+    }
+#endif
+    default:
+        return max_bytes(p, 3u * (size_t)n) <= d->c8;
+    }
+}

@@ -139,8 +139,9 @@ void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool lin
     }
 }
 
-void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
+bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
 {
+    uint32_t any = 0;
     const int64_t t = kn->t, k = kn->k;
     /* Below t - k nothing passes: the common case costs three compares. */
     const uint32_t cut = kn->t > kn->k ? kn->t - kn->k : 0u;
@@ -165,9 +166,12 @@ void bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
             continue;
         }
         uint32_t f = bloom_div_u64_u32((num << 16) + (bmax >> 1), bmax);
-        for (int ch = 0; ch < 3; ch++)
+        for (int ch = 0; ch < 3; ch++) {
             p[ch] = (uint32_t)(((uint64_t)p[ch] * f + 32768u) >> 16);
+            any |= p[ch];
+        }
     }
+    return any != 0;
 }
 
 /* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
@@ -231,6 +235,26 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
         tent(u, odd, add, dst, x0, n, sw, true);
     else
         tent(u, odd, NULL, dst, x0, n, sw, false);
+}
+
+void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o)
+{
+    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    /* decode then encode gives the code back for these (tests/test_fixed.c) */
+    if (!o->debug && o->in_fmt == o->out_fmt &&
+        (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565)) {
+        if (src != dst)
+            memcpy(dst, src, (size_t)w * ibpp); /* in place is src == dst: rows never half-overlap */
+        return;
+    }
+    uint32_t v[3 * BLOOM_OUT_CHUNK];
+    memset(v, 0, sizeof v);
+    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
+        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
+        if (!o->debug)
+            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, v, n);
+        bloom_encode_row(o->out_fmt, o->linear, v, dst + (size_t)x0 * obpp, n);
+    }
 }
 
 void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,

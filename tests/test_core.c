@@ -140,7 +140,8 @@ static void test_workspace_macro(void)
     c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
     bloom_t *b = NULL;
     CHECK(bloom_init(&b, static_ws, sizeof static_ws, &c) == BLOOM_OK);
-    CHECK(sizeof static_ws <= 50u * 1024u);
+    CHECK(sizeof static_ws >= bloom_workspace_size(&c));
+    CHECK(sizeof static_ws <= bloom_workspace_size(&c) * 6u / 5u);
 }
 
 /* The same frame fed one row at a time, in bands of every height, whole,
@@ -241,6 +242,58 @@ static void test_busy(void)
     engine_free(&e);
 }
 
+/* The zero-row shortcuts (dark source rows, zero levels, B = 0 output rows)
+ * change no output bit: every scene, format and view against NO_SKIP. */
+static void test_skip_identical(void)
+{
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                   BLOOM_FMT_RGBQ16};
+    int same = 1, runs = 0;
+    for (int scene = 0; scene < 4; scene++)        /* dark, one light, many, random */
+        for (size_t fi = 0; fi < 4; fi++)
+            for (int view = 0; view < 3; view++) { /* apply, bloom-only, linear */
+                bloom_config_t c;
+                bloom_config_default(&c, 203, 157);
+                c.in_fmt = fmts[fi];
+                c.out_fmt = fmts[(fi + (size_t)scene) % 4];
+                c.threshold = BLOOM_Q16(0.7);
+                c.flags = view == 1 ? BLOOM_FLAG_DEBUG_VIEW : view == 2 ? BLOOM_FLAG_LINEAR : 0;
+                frame_t src = frame_random(&c, c.in_fmt, 11u + (unsigned)scene);
+                if (scene < 3) { /* dark background, then lights */
+                    frame_t dark = frame_alloc(c.width, c.height, c.in_fmt, 40);
+                    frame_free(&src);
+                    src = dark;
+                    frame_t lit = frame_random(&c, c.in_fmt, 3);
+                    const int lights = scene == 0 ? 0 : scene == 1 ? 1 : 40;
+                    for (int k = 0; k < lights; k++) {
+                        const int x = (k * 71 + 50) % c.width, y = (k * 37 + 20) % c.height;
+                        memset(src.p + (size_t)y * src.stride + (size_t)x * (size_t)src.bpp, 0xFF,
+                               (size_t)src.bpp);
+                    }
+                    frame_free(&lit);
+                }
+                frame_t fast = run_engine(&c, &src);
+                c.flags |= BLOOM_FLAG_NO_SKIP;
+                frame_t full = run_engine(&c, &src);
+                same &= frame_equal(&fast, &full);
+                runs++;
+                frame_free(&fast);
+                frame_free(&full);
+                /* in place, same format */
+                c.out_fmt = c.in_fmt;
+                full = run_engine(&c, &src);
+                c.flags &= ~(uint32_t)BLOOM_FLAG_NO_SKIP;
+                engine_t e = engine_new(&c);
+                CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, src.p, (ptrdiff_t)src.stride) == BLOOM_OK);
+                same &= frame_equal(&src, &full);
+                engine_free(&e);
+                frame_free(&full);
+                frame_free(&src);
+            }
+    CHECKF(same, "skip paths differ from the full path");
+    printf("zero-row shortcuts: %d scene/format/view runs identical to BLOOM_FLAG_NO_SKIP\n", runs);
+}
+
 /* Hand-worked answers. */
 static void test_known(void)
 {
@@ -315,6 +368,7 @@ int main(void)
     test_workspace_macro();
     test_streaming();
     test_busy();
+    test_skip_identical();
     test_known();
     return harness_finish();
 }
