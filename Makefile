@@ -59,7 +59,14 @@ clang-build: | $(B)/clang
 	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(SIM_SRC) sim/bloom_demo.c sim/bloom_info.c sim/gen_tables.c tests/*.c
 
 # Cortex-M4, freestanding: the core objects may reference memcpy/memset only.
+# The compile-time switch combinations must build too (warnings as errors).
+ARM_VARIANTS := "-DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0" \
+  "-DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0 -DBLOOM_SMALL=1 -DBLOOM_USE_SKIP=0 -DBLOOM_CHECK_RINGS=0" \
+  "-DBLOOM_USE_RGB565=0 -DBLOOM_USE_RGBQ16=0 -DBLOOM_SMALL=1"
 freestanding: | $(B)/arm
+	@for v in $(ARM_VARIANTS); do for f in $(CORE_SRC); do \
+	  $(ARM_CC) $(WARN) -Os -mcpu=cortex-m4 -mthumb -ffreestanding $(CPPFLAGS_CORE) $$v \
+	    -c $$f -o $(B)/arm/variant.o || { echo "freestanding: $$f fails with $$v"; exit 1; }; done; done
 	@for f in $(CORE_SRC); do \
 	  $(ARM_CC) $(WARN) -Os -mcpu=cortex-m4 -mthumb -ffreestanding $(CPPFLAGS_CORE) \
 	    -c $$f -o $(B)/arm/$$(basename $$f .c).o || exit 1; done

@@ -99,7 +99,8 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info);
 size_t bloom_workspace_size(const bloom_config_t *cfg);
 
 /* Carve an engine out of ws (aligned to BLOOM_WORKSPACE_ALIGN). Refuses a
- * buffer that is too small (BLOOM_E_WORKSPACE). */
+ * buffer that is too small (BLOOM_E_WORKSPACE); the buffer's contents are
+ * unspecified after any failure. */
 bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_config_t *cfg);
 
 /* Row interface. Per frame: bloom_begin, then push source rows in order;
@@ -135,12 +136,12 @@ const char *bloom_status_str(bloom_status_t st);
  * constant expression (tests check it against the exact size over a grid of
  * sizes and depths). src_bpp is the input bytes per pixel, copy 1 with
  * BLOOM_FLAG_COPY_SOURCE. Rows held per level (sim/docs/streaming.md): 12 at
- * level 1, 8 at level 2, 2^(L-k+2) + 4 at level k >= 3, of w/2^k + 1 pixels of
+ * level 1, 8 at level 2, at most 2^(L-k+2) at level k >= 3, of w/2^k + 1 pixels of
  * 12 bytes, plus one zero row of w/2 pixels; that sums to below
- * w*(2^L + 104) + 12*2^L; the source ring holds fewer than 4*2^L + 8 rows
+ * w*(2^L + 100) + 12*2^L; the source ring holds fewer than 4*2^L + 8 rows
  * (pointers, or copies). */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                   \
-    ((size_t)6144u + (size_t)(w) * (((size_t)1u << (levels)) + 104u) +                    \
+    ((size_t)3072u + (size_t)(w) * (((size_t)1u << (levels)) + 100u) +                    \
      ((size_t)64u << (levels)) + (size_t)64u * (size_t)(levels) +                          \
      ((copy) ? (((size_t)4u << (levels)) + 8u) * (size_t)(w) * (size_t)(src_bpp) : 0u))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) \

@@ -20,6 +20,12 @@
 #define BLOOM_USE_RGBQ16 1 /* linear Q16.16 words: HDR input and output */
 #endif
 
+/* Skip what a scene does not need: dark source rows, all-zero rows of every
+ * level, output rows without bloom (a copy). 0 leaves the code out. */
+#ifndef BLOOM_USE_SKIP
+#define BLOOM_USE_SKIP 1
+#endif
+
 /* Internal consistency checks of the row scheduler (cheap: per row, never
  * per pixel). Keep them on unless code size is the last word. */
 #ifndef BLOOM_CHECK_RINGS

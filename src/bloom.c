@@ -108,6 +108,7 @@ static bloom_status_t validate(const bloom_config_t *c)
     return BLOOM_OK;
 }
 
+#if BLOOM_USE_SKIP
 /* The largest code of each width whose decoded value the knee zeroes
  * (bmax <= t - k): rows without a larger code contribute nothing. */
 static uint32_t dark_code(uint32_t cut, bool linear, const uint32_t *table, uint32_t n)
@@ -136,6 +137,7 @@ static void set_dark(bloom_t *b)
 #endif
     b->dark.q16 = cut >> 4; /* min(w, 2^24 - 1) << 4 <= cut */
 }
+#endif
 
 /* Geometry and quantized parameters; no buffers. */
 static void setup(bloom_t *b, const bloom_config_t *cfg)
@@ -162,7 +164,9 @@ static void setup(bloom_t *b, const bloom_config_t *cfg)
     b->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
     b->src_bpp = bloom_format_bpp(cfg->in_fmt);
     b->skip = !(cfg->flags & BLOOM_FLAG_NO_SKIP);
+#if BLOOM_USE_SKIP
     set_dark(b);
+#endif
     b->src_row_bytes = (size_t)cfg->width * (size_t)b->src_bpp;
 }
 
@@ -219,6 +223,8 @@ static int oldest_U(const bloom_t *b, int k)
  * (never written: readers get the shared zero row) or, in the source ring,
  * a dark row (nothing in it passes the knee). Rows are < 2^30. */
 #define ZBIT 0x40000000
+/* The zero-row shortcuts, unless compiled out or switched off. */
+#define SKIP(b) (BLOOM_USE_SKIP && (b)->skip)
 
 /* Claim the slot for row r of a ring whose oldest live row is `oldest`. */
 static uint32_t *ring_put(bloom_t *b, bloom_ring_t *rg, int *need, int r, int oldest)
@@ -275,7 +281,7 @@ static const uint8_t *src_get(bloom_t *b, int r)
  * all zero; always false when skipping is off. */
 static bool rows_zero(const bloom_t *b, const bloom_ring_t *rg, int first, int n, int h)
 {
-    if (!b->skip)
+    if (!SKIP(b))
         return false;
     for (int i = 0; i < n; i++)
         if (!ring_zero(rg, clampi(first + i, 0, h - 1)))
@@ -288,7 +294,7 @@ static bool rows_zero(const bloom_t *b, const bloom_ring_t *rg, int first, int n
 static bool compute_d1(bloom_t *b, int r, uint32_t *dst)
 {
     const uint8_t *s[4];
-    bool dark = b->skip;
+    bool dark = SKIP(b);
     for (int i = 0; i < 4; i++) {
         const int row = clampi(2 * r - 1 + i, 0, b->h[0] - 1);
         s[i] = src_get(b, row);
@@ -297,7 +303,7 @@ static bool compute_d1(bloom_t *b, int r, uint32_t *dst)
     if (dark)
         return false;
     bloom_row_box_src_c(s, b->cfg.in_fmt, b->out.linear, dst, b->w[1], b->w[0]);
-    return bloom_row_knee_c(dst, b->w[1], &b->knee) || !b->skip;
+    return bloom_row_knee_c(dst, b->w[1], &b->knee) || !SKIP(b);
 }
 
 /* The ring tent row r of level k reads from: U_{k+1}, or D_L at the bottom. */
@@ -315,29 +321,90 @@ static void tent_rows(bloom_t *b, int k, int r, const uint32_t *u[3])
         u[i] = ring_get(b, rg, clampi(m - 1 + i, 0, hb - 1));
 }
 
+/* The row computations live outside the recursive scheduler functions so
+ * that each recursion level costs a small frame (the stack figure of the
+ * frame call, port/mcu/FIGURES.md). */
+#if defined(__GNUC__)
+#define BLOOM_NOINLINE __attribute__((noinline))
+#else
+#define BLOOM_NOINLINE
+#endif
+
+/* D_k row r into its slot (k >= 1), or marked zero. */
+static BLOOM_NOINLINE void compute_D(bloom_t *b, int k, int r, uint32_t *dst)
+{
+    bloom_ring_t *rg = &b->D[k];
+    if (k == 1) {
+        if (!compute_d1(b, r, dst))
+            ring_mark_zero(rg, r);
+    } else if (rows_zero(b, &b->D[k - 1], 2 * r - 1, 4, b->h[k - 1])) {
+        ring_mark_zero(rg, r);
+    } else {
+        const uint32_t *s[4];
+        for (int i = 0; i < 4; i++)
+            s[i] = ring_get(b, &b->D[k - 1], clampi(2 * r - 1 + i, 0, b->h[k - 1] - 1));
+        bloom_row_box_c(s, dst, b->w[k], b->w[k - 1]);
+    }
+}
+
+static BLOOM_NOINLINE void compute_E1(bloom_t *b, int r, uint32_t *dst)
+{
+    if (!compute_d1(b, r, dst))
+        ring_mark_zero(&b->E1, r);
+}
+
+/* U_k row r = D_k row r + tent(rows of level k+1), or marked zero. */
+static BLOOM_NOINLINE void compute_U(bloom_t *b, int k, int r, uint32_t *dst)
+{
+    const bool d2 = k == 2 && recompute_d2(b);
+    bloom_ring_t *rg = &b->U[k];
+    const bloom_ring_t *dring = (k == 1 || d2) ? &b->E1 : &b->D[k];
+    const bool dzero = d2 ? rows_zero(b, dring, 2 * r - 1, 4, b->h[1]) : rows_zero(b, dring, r, 1, b->h[k]);
+    const bool uzero = rows_zero(b, below(b, k), (r >> 1) - 1, 3, b->h[k + 1]);
+    if (dzero && uzero) {
+        ring_mark_zero(rg, r);
+        return;
+    }
+    if (dzero) {
+        /* the tent alone */
+    } else if (d2) {
+        const uint32_t *s[4];
+        for (int i = 0; i < 4; i++)
+            s[i] = ring_get(b, dring, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
+        bloom_row_box_c(s, dst, b->w[2], b->w[1]);
+    } else {
+        memcpy(dst, ring_get(b, dring, r), (size_t)b->w[k] * 3u * sizeof *dst);
+    }
+    if (!uzero) {
+        const uint32_t *u[3];
+        tent_rows(b, k, r, u);
+        bloom_row_tent_c(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
+    }
+}
+
+/* The last row of level k-1 (or of the source) that row r of level k reads. */
+static int top_below(const bloom_t *b, int k, int r)
+{
+    return imin(2 * r + 2, b->h[k - 1] - 1);
+}
+
+/* D_k rows up to j. A loop rather than a recursion down the levels (the
+ * frame call's stack): find the shallowest level whose next row has all its
+ * inputs, compute that row, start again. This is the order the recursion
+ * "compute what row r needs, then row r" gives. */
 static bool ensure_D(bloom_t *b, int k, int j)
 {
     while (b->d_next[k] <= j) {
-        const int r = b->d_next[k];
-        const int top = imin(2 * r + 2, b->h[k - 1] - 1);
-        if (k == 1 ? top >= b->src_n : !ensure_D(b, k - 1, top))
+        int m = k;
+        while (m > 1 && b->d_next[m - 1] <= top_below(b, m, b->d_next[m]))
+            m--;
+        const int r = b->d_next[m];
+        if (m == 1 && top_below(b, 1, r) >= b->src_n)
             return false;
-        bloom_ring_t *rg = &b->D[k];
-        uint32_t *dst = ring_put(b, rg, &b->need_D[k], r, oldest_D(b, k));
-        if (dst) {
-            if (k == 1) {
-                if (!compute_d1(b, r, dst))
-                    ring_mark_zero(rg, r);
-            } else if (rows_zero(b, &b->D[k - 1], 2 * r - 1, 4, b->h[k - 1])) {
-                ring_mark_zero(rg, r);
-            } else {
-                const uint32_t *s[4];
-                for (int i = 0; i < 4; i++)
-                    s[i] = ring_get(b, &b->D[k - 1], clampi(2 * r - 1 + i, 0, b->h[k - 1] - 1));
-                bloom_row_box_c(s, dst, b->w[k], b->w[k - 1]);
-            }
-        }
-        b->d_next[k]++;
+        uint32_t *dst = ring_put(b, &b->D[m], &b->need_D[m], r, oldest_D(b, m));
+        if (dst)
+            compute_D(b, m, r, dst);
+        b->d_next[m]++;
     }
     return true;
 }
@@ -350,8 +417,8 @@ static bool ensure_E1(bloom_t *b, int j)
         if (imin(2 * r + 2, b->h[0] - 1) >= b->src_n)
             return false;
         uint32_t *dst = ring_put(b, &b->E1, &b->need_E1, r, oldest_E1(b));
-        if (dst && !compute_d1(b, r, dst))
-            ring_mark_zero(&b->E1, r);
+        if (dst)
+            compute_E1(b, r, dst);
         b->e_next++;
     }
     return true;
@@ -359,50 +426,24 @@ static bool ensure_E1(bloom_t *b, int j)
 
 static bool ensure_up(bloom_t *b, int k, int j);
 
-/* U_k row r = D_k row r + tent(rows of level k+1). */
 static bool ensure_U(bloom_t *b, int k, int j)
 {
     while (b->u_next[k] <= j) {
         const int r = b->u_next[k];
-        const bool d2 = k == 2 && recompute_d2(b);
         if (!ensure_up(b, k + 1, imin((r >> 1) + 1, b->h[k + 1] - 1)))
             return false;
         bool ok;
         if (k == 1)
             ok = ensure_E1(b, r);
-        else if (d2)
+        else if (k == 2 && recompute_d2(b))
             ok = ensure_E1(b, imin(2 * r + 2, b->h[1] - 1));
         else
             ok = ensure_D(b, k, r);
         if (!ok)
             return false;
-        bloom_ring_t *rg = &b->U[k];
-        uint32_t *dst = ring_put(b, rg, &b->need_U[k], r, oldest_U(b, k));
-        if (dst) {
-            const bloom_ring_t *dring = k == 1 ? &b->E1 : d2 ? &b->E1 : &b->D[k];
-            const bool dzero = d2 ? rows_zero(b, dring, 2 * r - 1, 4, b->h[1])
-                                  : rows_zero(b, dring, r, 1, b->h[k]);
-            const bool uzero = rows_zero(b, below(b, k), (r >> 1) - 1, 3, b->h[k + 1]);
-            if (dzero && uzero) {
-                ring_mark_zero(rg, r);
-            } else {
-                if (dzero) {
-                    /* the tent alone */
-                } else if (d2) {
-                    const uint32_t *s[4];
-                    for (int i = 0; i < 4; i++)
-                        s[i] = ring_get(b, dring, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
-                    bloom_row_box_c(s, dst, b->w[2], b->w[1]);
-                } else {
-                    memcpy(dst, ring_get(b, dring, r), (size_t)b->w[k] * 3u * sizeof *dst);
-                }
-                if (!uzero) {
-                    const uint32_t *u[3];
-                    tent_rows(b, k, r, u);
-                    bloom_row_tent_c(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
-                }
-            }
-        }
+        uint32_t *dst = ring_put(b, &b->U[k], &b->need_U[k], r, oldest_U(b, k));
+        if (dst)
+            compute_U(b, k, r, dst);
         b->u_next[k]++;
     }
     return true;
@@ -535,17 +576,20 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
     *out = NULL;
     if ((uintptr_t)ws % BLOOM_WORKSPACE_ALIGN)
         return BLOOM_E_ALIGN;
-    bloom_info_t info;
-    bloom_status_t st = bloom_query(cfg, &info);
+    bloom_status_t st = validate(cfg);
     if (st != BLOOM_OK)
         return st;
-    if (ws_bytes < info.workspace_bytes)
+    if (ws_bytes < sizeof(bloom_t))
         return BLOOM_E_WORKSPACE;
+    /* Plan in place (no engine-sized stack frame); a buffer found too small
+     * afterwards is refused, its first bytes used as scratch. */
     bloom_t *b = (bloom_t *)ws;
     plan(b, cfg, NULL);
+    const size_t need = carve(b, NULL, NULL);
+    if (ws_bytes < need)
+        return BLOOM_E_WORKSPACE;
     b->dry = false;
-    size_t used = carve(b, (uint8_t *)ws, NULL);
-    if (used != info.workspace_bytes) /* the carving must end where sizing said */
+    if (carve(b, (uint8_t *)ws, NULL) != need) /* the carving ends where sizing said */
         return BLOOM_E_INTERNAL;
     memset(b->zero_row, 0, (size_t)b->w[1] * 3u * sizeof *b->zero_row);
     *out = b;
@@ -599,7 +643,7 @@ bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
         memcpy(b->src_copy + (size_t)slot * b->src_row_bytes, src_row, b->src_row_bytes);
     else
         b->src_ptr[slot] = (const uint8_t *)src_row;
-    const bool dark = b->skip && bloom_row_dark(b->cfg.in_fmt, (const uint8_t *)src_row, b->w[0], &b->dark);
+    const bool dark = SKIP(b) && bloom_row_dark(b->cfg.in_fmt, (const uint8_t *)src_row, b->w[0], &b->dark);
     b->src_tag[slot] = r | (dark ? ZBIT : 0);
     b->src_n++;
     return BLOOM_OK;
