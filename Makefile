@@ -27,9 +27,9 @@ SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # Make targets `make test` runs after the test binaries, one pass/fail each;
 # a target that prints a line starting "skipped:" counts as skipped.
-CHECKS := freestanding clang-build check-tables test-small
+CHECKS := freestanding clang-build check-tables test-small test-precision
 
-.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small
+.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
@@ -84,6 +84,19 @@ test-small: $(B)/small/test_conformance $(B)/small/test_core
 	@echo "BLOOM_SMALL=1 (binary-search encoder, no per-format copies):"
 	@BLOOM_DATA_DIR=tests/data $(B)/small/test_conformance | tail -n 1
 	@$(B)/small/test_core | tail -n 1
+
+# Fewer internal fraction bits (BLOOM_LIN_BITS = F): tables generated for F,
+# and the conformance test must stay bit-exact with the bit-true model at F.
+PRECISIONS := 16 18
+$(B)/f%/bloom_tables.c: $(B)/gen_tables
+	@mkdir -p $(dir $@)
+	$(B)/gen_tables $* > $@
+$(B)/f%/test_conformance: tests/test_conformance.c tests/conform.h tests/testutil.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) $(B)/f%/bloom_tables.c
+	$(CC) $(WARN) -O2 -DBLOOM_LIN_BITS=$* $(HOST_CPPFLAGS) $< $(filter-out src/bloom_tables.c,$(CORE_SRC)) \
+	  $(B)/f$*/bloom_tables.c $(SIM_SRC) -lm -o $@
+test-precision: $(foreach f,$(PRECISIONS),$(B)/f$(f)/test_conformance)
+	@for f in $(PRECISIONS); do echo "BLOOM_LIN_BITS=$$f:"; \
+	  BLOOM_DATA_DIR=tests/data $(B)/f$$f/test_conformance | grep -E "bit-true|vs float|passed"; done
 
 tables: $(B)/gen_tables
 	$(B)/gen_tables > src/bloom_tables.c

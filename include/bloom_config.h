@@ -26,6 +26,13 @@
 #define BLOOM_USE_SKIP 1
 #endif
 
+/* Fraction bits of the internal linear samples, 16..20 (Q12.20 by default;
+ * fewer only to measure precision against accuracy: make report). The
+ * sRGB tables must be generated for the same value (sim/gen_tables.c F). */
+#ifndef BLOOM_LIN_BITS
+#define BLOOM_LIN_BITS 20
+#endif
+
 /* Internal consistency checks of the row scheduler (cheap: per row, never
  * per pixel). Keep them on unless code size is the last word. */
 #ifndef BLOOM_CHECK_RINGS

@@ -16,7 +16,6 @@
 
 #define MAX_LINEAR 16777215.0 /* BLOOM_MAX_LINEAR = 2^24 - 1, Q16.16 */
 #define Q_ONE 65536.0         /* 1.0 in Q16.16 (factors, intensity, RGBQ16) */
-#define Q_LIN 1048576.0       /* 1.0 in Q12.20 (internal linear samples) */
 
 /* The pipeline's parameters in the units of the mode. */
 typedef struct {
@@ -24,6 +23,8 @@ typedef struct {
     double t; /* threshold: real, or T_q */
     double k; /* knee = t*s: real, or K_q */
     double i; /* linear intensity: real, or I_q */
+    double one;   /* bit-true: 1.0 in internal units, 2^F */
+    double q16;   /* bit-true: 2^(F-16), Q16.16 -> internal */
 } model_t;
 
 /* ---- curves --------------------------------------------------------- */
@@ -136,13 +137,13 @@ int bloom_model_levels(int w, int h, int requested)
 static double decode(const model_t *m, int linear, uint32_t word, int n)
 {
     if (n == 0) /* RGBQ16: a linear Q16.16 word, clamped, to Q12.20 */
-        return m->bt ? fmin((double)word, MAX_LINEAR) * 16.0 : word / Q_ONE;
+        return m->bt ? fmin((double)word, MAX_LINEAR) * m->q16 : word / Q_ONE;
     if (!m->bt)
         return linear ? (double)word / n : bloom_srgb_to_linear((double)word / n);
     if (linear) /* (c*2^20 + (n-1)/2) / n, integer division */
-        return fdiv(word * Q_LIN + (double)((n - 1) / 2), n);
+        return fdiv(word * m->one + (double)((n - 1) / 2), n);
     /* the table value: round(srgb_to_linear(c/n) * 2^20) */
-    return floor(bloom_srgb_to_linear((double)word / n) * Q_LIN + 0.5);
+    return floor(bloom_srgb_to_linear((double)word / n) * m->one + 0.5);
 }
 
 static uint32_t encode(const model_t *m, int linear, double v, int n)
@@ -150,11 +151,11 @@ static uint32_t encode(const model_t *m, int linear, double v, int n)
     double e;
     if (m->bt) {
         if (n == 0) /* Q12.20 -> Q16.16, round half up, clamp */
-            return (uint32_t)fmin(fdiv(v + 8.0, 16.0), MAX_LINEAR);
+            return (uint32_t)fmin(m->q16 == 1.0 ? v : fdiv(v + m->q16 / 2, m->q16), MAX_LINEAR);
         if (linear) /* (min(v, 2^20)*n + 2^19) >> 20 */
-            return (uint32_t)fdiv(fmin(v, Q_LIN) * n + Q_LIN / 2, Q_LIN);
+            return (uint32_t)fdiv(fmin(v, m->one) * n + m->one / 2, m->one);
         /* equals counting the table thresholds E_n[c] (fixed-point.md step 7) */
-        e = floor(bloom_linear_to_srgb(v / Q_LIN) * n + 0.5);
+        e = floor(bloom_linear_to_srgb(v / m->one) * n + 0.5);
         return (uint32_t)clampd(e, 0.0, n);
     }
     if (n == 0)
@@ -312,6 +313,8 @@ static int bad_args(const bloom_model_params_t *p, const uint32_t *src, const in
 static void setup(const bloom_model_params_t *p, model_t *m)
 {
     m->bt = p->bittrue != 0;
+    m->one = ldexp(1.0, p->lin_bits ? p->lin_bits : 20);
+    m->q16 = m->one / Q_ONE;
     if (m->bt) {
         m->t = p->threshold_q;
         m->k = p->knee_q;
@@ -415,7 +418,7 @@ int bloom_model_run(const bloom_model_params_t *p, const uint32_t *src, const in
                         : m.i * pyr.B.px[i];
         double v = p->debug_view ? P : pyr.S.px[i] + P;
         if (dst_value)
-            dst_value[i] = m.bt ? v / Q_LIN : v;
+            dst_value[i] = m.bt ? v / m.one : v;
         /* 7. encode */
         if (dst_codes)
             dst_codes[i] = encode(&m, p->linear, v, dst_max[i % 3]);

@@ -22,6 +22,8 @@ typedef struct {
     /* bit-true parameters: the core's quantized values (bloom_info_t): T_q and K_q
      * in Q12.20, I_q in Q16.16 (fixed-point.md) */
     uint32_t threshold_q, knee_q, intensity_q;
+    int lin_bits; /* bit-true: fraction bits F of the internal samples (BLOOM_LIN_BITS,
+                     16..20); 0 means 20. T_q and K_q are then in Q(32-F).F */
 } bloom_model_params_t;
 
 /* src: width*height pixels, 3 words each (R,G,B), row-major, top row first.

@@ -135,7 +135,7 @@ static void set_dark(bloom_t *b)
     b->dark.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
     b->dark.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
 #endif
-    b->dark.q16 = cut >> 4; /* min(w, 2^24 - 1) << 4 <= cut */
+    b->dark.q16 = cut >> BLOOM_Q16_SHIFT; /* min(w, 2^24 - 1) << shift <= cut */
 }
 #endif
 
@@ -155,7 +155,7 @@ static void setup(bloom_t *b, const bloom_config_t *cfg)
         b->h[k] = h;
         b->L = k;
     }
-    b->knee.t = cfg->threshold << 4; /* Q16.16 -> Q12.20, exact */
+    b->knee.t = cfg->threshold << BLOOM_Q16_SHIFT; /* Q16.16 -> internal, exact */
     b->knee.k = (uint32_t)(((uint64_t)b->knee.t * cfg->soft_knee + 32768u) >> 16);
     b->out.in_fmt = cfg->in_fmt;
     b->out.out_fmt = cfg->out_fmt;

@@ -10,10 +10,25 @@
 #include "bloom.h"
 
 /* Internal linear samples are Q12.20 (sim/docs/fixed-point.md): 16x finer
- * than the Q16.16 of the API, same 256.0 ceiling. */
-#define BLOOM_LIN_BITS 20
+ * than the Q16.16 of the API, same 256.0 ceiling. BLOOM_LIN_BITS may be set
+ * to 16..20 to measure precision against accuracy (make report); the tables
+ * (src/bloom_tables.c) are generated for 20, `gen_tables F` for the others. */
+#if BLOOM_LIN_BITS < 16 || BLOOM_LIN_BITS > 20
+#error "BLOOM_LIN_BITS must be 16..20 (the overflow proof covers Q12.20)"
+#endif
+#define BLOOM_Q16_SHIFT (BLOOM_LIN_BITS - 16) /* Q16.16 -> internal */
 #define BLOOM_LIN_ONE (1u << BLOOM_LIN_BITS)
-#define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << 4) /* 2^28 - 16 */
+#define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << BLOOM_Q16_SHIFT) /* 2^28 - 16 at 20 bits */
+
+/* Internal -> Q16.16, round half up. */
+static inline uint32_t bloom_lin_to_q16(uint32_t v)
+{
+#if BLOOM_Q16_SHIFT == 0
+    return v;
+#else
+    return (v >> BLOOM_Q16_SHIFT) + ((v >> (BLOOM_Q16_SHIFT - 1)) & 1u);
+#endif
+}
 
 extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
 extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];

@@ -40,9 +40,9 @@ static inline uint32_t enc_linear(uint32_t v, uint32_t n)
     return (v * n + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
 }
 
-#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, BKT(bloom_srgb_bkt8), 8, bloom_srgb_enc8, 255))
-#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, BKT(bloom_srgb_bkt6), 10, bloom_srgb_enc6, 63))
-#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, BKT(bloom_srgb_bkt5), 11, bloom_srgb_enc5, 31))
+#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, BKT(bloom_srgb_bkt8), BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255))
+#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, BKT(bloom_srgb_bkt6), BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63))
+#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, BKT(bloom_srgb_bkt5), BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31))
 
 /* One loop per format; `lin` is a constant at each call site, so the
  * compiler drops the other curve. */
@@ -102,8 +102,8 @@ static inline void encode_rows(bloom_format_t fmt, bool lin, const uint32_t *v, 
     case BLOOM_FMT_RGBQ16:
         for (int i = 0; i < n; i++, p += 12, v += 3) {
             uint32_t w[3];
-            for (int c = 0; c < 3; c++) { /* Q12.20 -> Q16.16, round half up */
-                uint32_t q = (v[c] >> 4) + ((v[c] >> 3) & 1u);
+            for (int c = 0; c < 3; c++) {
+                uint32_t q = bloom_lin_to_q16(v[c]);
                 w[c] = q > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : q;
             }
             memcpy(p, w, sizeof w);

@@ -8,7 +8,7 @@
 
 #include "bloom_internal.h"
 
-/* Linear decode: round(c / n * 2^20); n is odd, so there is no tie. */
+/* Linear decode: round(c / n * 2^F); n is odd, so there is no tie. */
 static inline uint32_t bloom_dec_linear(uint32_t c, uint32_t n)
 {
     return (c * BLOOM_LIN_ONE + (n - 1u) / 2u) / n;
@@ -52,7 +52,7 @@ static inline void bloom_dec_rgbq16(const uint8_t *p, uint32_t *o)
     uint32_t w[3];
     memcpy(w, p, sizeof w);
     for (int c = 0; c < 3; c++)
-        o[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << 4;
+        o[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << BLOOM_Q16_SHIFT;
 }
 #define BLOOM_DEC_RGBQ16(p, o) bloom_dec_rgbq16((p), (o))
 

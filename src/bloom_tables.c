@@ -2,7 +2,11 @@
  * and the tests check that it is current. See sim/docs/fixed-point.md. */
 #include "bloom_internal.h"
 
-/* round(srgb_to_linear(c / n) * 2^20), Q12.20 */
+/* round(srgb_to_linear(c / n) * 2^F), F = 20 fraction bits */
+#if BLOOM_LIN_BITS != 20
+#error "tables generated for another BLOOM_LIN_BITS"
+#endif
+
 const uint32_t bloom_srgb_dec8[256] = {
     0, 318, 637, 955, 1273, 1591, 1910, 2228,
     2546, 2864, 3183, 3509, 3855, 4220, 4605, 5009,
@@ -56,7 +60,7 @@ const uint32_t bloom_srgb_dec5[32] = {
     588258, 644686, 704151, 766698, 832371, 901214, 973268, 1048576,
 };
 
-/* ceil(srgb_to_linear((c - 0.5) / n) * 2^20): v encodes to the number
+/* ceil(srgb_to_linear((c - 0.5) / n) * 2^F): v encodes to the number
  * of c >= 1 with v >= table[c]; entry 0 is unused. */
 const uint32_t bloom_srgb_enc8[256] = {
     0, 160, 478, 796, 1114, 1433, 1751, 2069,
@@ -111,7 +115,8 @@ const uint32_t bloom_srgb_enc5[32] = {
     561170, 616096, 674036, 735036, 799141, 866394, 936837, 1010513,
 };
 
-/* Encode buckets (shift 8, 10, 11): the code at the start of each bucket. */
+/* Encode buckets (shift F-12, F-10, F-9): the code at the start of each
+ * bucket. */
 const uint8_t bloom_srgb_bkt8[4097] = {
     0, 1, 2, 2, 3, 4, 5, 6, 6, 7, 8, 9, 10, 10, 11, 12,
     13, 13, 14, 15, 15, 16, 16, 17, 18, 18, 19, 19, 20, 20, 21, 21,

@@ -106,6 +106,7 @@ static inline void model_params(const bloom_config_t *c, const bloom_info_t *inf
     p->threshold_q = info->threshold_q;
     p->knee_q = info->knee_q;
     p->intensity_q = info->intensity_q;
+    p->lin_bits = BLOOM_LIN_BITS;
 }
 
 typedef struct {

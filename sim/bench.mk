@@ -1,0 +1,78 @@
+# Benchmarks (issue 7): not tests, so nothing here joins CHECKS.
+#   make bench    the engine against a cold memcpy, OpenCV 4 and the float
+#                 model at 640x480, 1280x720, 1920x1080: prints the table,
+#                 writes build/bench.csv, sim/docs/bench.csv, sim/docs/bench.md
+#                 (installs libopencv-dev, g++, pkg-config if missing)
+#   make icount   instructions per output pixel of one bloom_process call
+#                 under callgrind, per engine row and stage: sim/docs/icount.md
+#                 (installs valgrind if missing)
+# Knobs: BENCH_CFLAGS (engine and harness for bench; default CFLAGS),
+# BENCH_ARGS (options of bloom_bench, e.g. --quick or --sizes 640x480),
+# ICOUNT_SIZES (default 640x480 1920x1080).
+
+BENCH_DIR := $(B)/bench
+ICOUNT_DIR := $(B)/icount
+BENCH_CFLAGS ?= $(CFLAGS)
+BENCH_CXXFLAGS ?= $(BENCH_CFLAGS)
+BENCH_ARGS ?=
+ICOUNT_CFLAGS := -O2 -g
+ICOUNT_SIZES ?= 640x480 1920x1080
+BENCH_CXXWARN := -std=c++17 -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align -Wvla
+
+BENCH_HDR := sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h
+# Every core header, also ones added to src/ after CORE_HDR was written.
+BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h include/*.h))
+BENCH_CORE_OBJ := $(patsubst src/%.c,$(BENCH_DIR)/core/%.o,$(CORE_SRC))
+BENCH_SIM_OBJ := $(patsubst sim/%.c,$(BENCH_DIR)/sim/%.o,$(SIM_SRC))
+BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o scene.o variants.o bench_opencv.o)
+ICOUNT_CORE_OBJ := $(patsubst src/%.c,$(ICOUNT_DIR)/core/%.o,$(CORE_SRC))
+ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgio.c
+
+# Read when a recipe runs, that is after bench-deps has installed OpenCV.
+BENCH_CV_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags opencv4))
+BENCH_CV_LIBS = $(filter-out -lopencv_%,$(shell pkg-config --libs opencv4)) -lopencv_imgproc -lopencv_core
+
+.PHONY: bench icount bench-deps icount-deps bench-force
+
+bench-deps:
+	@sh sim/bench/deps.sh bench
+icount-deps:
+	@sh sim/bench/deps.sh icount
+
+# Rebuild when the compiler or the flags change.
+$(BENCH_DIR)/cflags: bench-force
+	@mkdir -p $(@D)
+	@echo '$(CC) $(CXX) $(BENCH_CFLAGS) $(BENCH_CXXFLAGS)' | cmp -s - $@ || \
+	  echo '$(CC) $(CXX) $(BENCH_CFLAGS) $(BENCH_CXXFLAGS)' > $@
+
+$(BENCH_DIR)/core/%.o: src/%.c $(BENCH_CORE_HDR) $(BENCH_DIR)/cflags
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(BENCH_CFLAGS) $(CPPFLAGS_CORE) -c $< -o $@
+$(BENCH_DIR)/sim/%.o: sim/%.c $(SIM_HDR) $(BENCH_DIR)/cflags
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(BENCH_CFLAGS) $(HOST_CPPFLAGS) -c $< -o $@
+$(BENCH_DIR)/obj/%.o: sim/bench/%.c $(BENCH_HDR) $(BENCH_CORE_HDR) $(BENCH_DIR)/cflags
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(BENCH_CFLAGS) $(HOST_CPPFLAGS) \
+	  -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(BENCH_CFLAGS)"' -c $< -o $@
+$(BENCH_DIR)/obj/bench_opencv.o: sim/bench/bench_opencv.cpp sim/bench/bench_cv.h $(BENCH_DIR)/cflags | bench-deps
+	@mkdir -p $(@D)
+	$(CXX) $(BENCH_CXXWARN) $(BENCH_CXXFLAGS) $(BENCH_CV_CFLAGS) -c $< -o $@
+$(BENCH_DIR)/bloom_bench: $(BENCH_OBJ) $(BENCH_SIM_OBJ) $(BENCH_CORE_OBJ) | bench-deps
+	$(CXX) $(BENCH_CXXFLAGS) $^ $(BENCH_CV_LIBS) -lm -o $@
+
+bench: bench-deps $(BENCH_DIR)/bloom_bench
+	$(BENCH_DIR)/bloom_bench --csv $(B)/bench.csv --md $(BENCH_DIR)/results.md $(BENCH_ARGS)
+	cp $(B)/bench.csv sim/docs/bench.csv
+	cat $(BENCH_DIR)/results.md sim/bench/method.md > sim/docs/bench.md
+	@echo "bench: wrote sim/docs/bench.md and sim/docs/bench.csv"
+
+# Instruction counts: the core without -march=native, plain -O2.
+$(ICOUNT_DIR)/core/%.o: src/%.c $(BENCH_CORE_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(ICOUNT_CFLAGS) $(CPPFLAGS_CORE) -c $< -o $@
+$(ICOUNT_DIR)/bloom_icount: $(ICOUNT_SRC) $(BENCH_HDR) $(SIM_HDR) $(ICOUNT_CORE_OBJ)
+	$(CC) $(WARN) $(ICOUNT_CFLAGS) $(HOST_CPPFLAGS) $(ICOUNT_SRC) $(ICOUNT_CORE_OBJ) -lm -o $@
+
+icount: icount-deps $(ICOUNT_DIR)/bloom_icount
+	sh sim/bench/icount.sh $(ICOUNT_DIR)/bloom_icount sim/docs/icount.md $(ICOUNT_SIZES)

@@ -1,0 +1,945 @@
+/* bloom_bench: the engine side by side with the memory floor, OpenCV 4 and
+ * the float model (issue 7, item 1). `make bench` runs it; see
+ * sim/bench/method.md (appended to sim/docs/bench.md) for what each row is.
+ *
+ *   bloom_bench [--csv PATH] [--md PATH] [--image PPM] [--sizes WxH,...]
+ *               [--model-sizes WxH,...|none] [--runs N] [--warmup N]
+ *               [--ring-mb N] [--quick]
+ *
+ * Nothing here asserts a time: the program measures, prints and writes the
+ * table; only a failing call (a status other than BLOOM_OK, an OpenCV
+ * exception, out of memory) makes it exit non-zero. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bench_cv.h"
+#include "bloom.h"
+#include "bloom_model.h"
+#include "scene.h"
+#include "variants.h"
+
+#ifndef BENCH_CC
+#define BENCH_CC "cc"
+#endif
+#ifndef BENCH_FLAGS
+#define BENCH_FLAGS "(unknown)"
+#endif
+
+#define MAX_SIZES 8
+#define MAX_ROWS 256
+#define SLOW_RUN_S 0.25 /* a warm-up slower than this: SLOW_RUNS runs */
+#define SLOW_RUNS 5
+
+typedef struct {
+    int w, h;
+    const char *group; /* floor, engine, opencv, model */
+    char name[96];
+    int threads;
+    int runs;
+    double median_ms, min_ms;
+    double cpu_ms;    /* median process CPU time (every thread) per run */
+    double x_memcpy, x_engine;   /* wall-time ratios */
+    double xc_memcpy, xc_engine; /* CPU-time ratios, single-threaded rows; -1 otherwise */
+    int agree_max; /* -1: not compared */
+    double agree_exact;
+    char note[96];
+} row_t;
+
+static row_t rows[MAX_ROWS];
+static int nrows;
+
+/* ---- small helpers ------------------------------------------------------ */
+
+static void die(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "bloom_bench: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n");
+    exit(1);
+}
+
+static void *xmalloc(size_t n)
+{
+    void *p = malloc(n ? n : 1);
+    if (!p)
+        die("out of memory (%s)", "malloc");
+    return p;
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* CPU time of the whole process, every thread (OpenCV's workers included). */
+static double cpu_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static row_t *new_row(int w, int h, const char *group, const char *name)
+{
+    if (nrows == MAX_ROWS)
+        die("too many rows (%s)", name);
+    row_t *r = &rows[nrows++];
+    memset(r, 0, sizeof *r);
+    r->w = w;
+    r->h = h;
+    r->group = group;
+    snprintf(r->name, sizeof r->name, "%s", name);
+    r->threads = 1;
+    r->agree_max = -1;
+    return r;
+}
+
+/* Max absolute difference and % of equal bytes. */
+static void agreement(const uint8_t *a, const uint8_t *b, size_t n, int *max, double *exact)
+{
+    size_t same = 0;
+    int m = 0;
+    for (size_t i = 0; i < n; i++) {
+        const int d = a[i] > b[i] ? a[i] - b[i] : b[i] - a[i];
+        if (d > m)
+            m = d;
+        same += d == 0;
+    }
+    *max = m;
+    *exact = n ? 100.0 * (double)same / (double)n : 100.0;
+}
+
+/* ---- machine ------------------------------------------------------------ */
+
+static char cpu_model[160] = "unknown";
+static int ncpu = 1;
+static size_t llc_sysfs, llc_sysconf;
+static int llc_level;
+
+static void read_cpu(void)
+{
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    char line[512], model[128] = "unknown", fam[32] = "", mod[32] = "";
+    if (f) {
+        while (fgets(line, sizeof line, f)) {
+            char *v = strchr(line, ':');
+            if (!v)
+                continue;
+            v++;
+            while (*v == ' ' || *v == '\t')
+                v++;
+            v[strcspn(v, "\n")] = 0;
+            if (!strncmp(line, "model name", 10) && !strcmp(model, "unknown"))
+                snprintf(model, sizeof model, "%s", v);
+            else if (!strncmp(line, "cpu family", 10) && !fam[0])
+                snprintf(fam, sizeof fam, "%s", v);
+            else if (!strncmp(line, "model\t", 6) && !mod[0])
+                snprintf(mod, sizeof mod, "%s", v);
+        }
+        fclose(f);
+    }
+    if (fam[0] && mod[0])
+        snprintf(cpu_model, sizeof cpu_model, "%s (family %s model %s)", model, fam, mod);
+    else
+        snprintf(cpu_model, sizeof cpu_model, "%s", model);
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    ncpu = n > 0 ? (int)n : 1;
+
+    /* Largest data/unified cache of cpu0 in sysfs ... */
+    for (int i = 0; i < 16; i++) {
+        char path[128], type[32] = "", size[32] = "";
+        int level = 0;
+        snprintf(path, sizeof path, "/sys/devices/system/cpu/cpu0/cache/index%d/level", i);
+        if (!(f = fopen(path, "r")))
+            break;
+        if (fscanf(f, "%d", &level) != 1)
+            level = 0;
+        fclose(f);
+        snprintf(path, sizeof path, "/sys/devices/system/cpu/cpu0/cache/index%d/type", i);
+        if ((f = fopen(path, "r"))) {
+            if (!fgets(type, sizeof type, f))
+                type[0] = 0;
+            fclose(f);
+        }
+        snprintf(path, sizeof path, "/sys/devices/system/cpu/cpu0/cache/index%d/size", i);
+        if ((f = fopen(path, "r"))) {
+            if (!fgets(size, sizeof size, f))
+                size[0] = 0;
+            fclose(f);
+        }
+        if (!strncmp(type, "Instruction", 11))
+            continue;
+        char *end;
+        size_t bytes = (size_t)strtoull(size, &end, 10);
+        if (*end == 'K')
+            bytes <<= 10;
+        else if (*end == 'M')
+            bytes <<= 20;
+        if (level >= llc_level && bytes > 0) {
+            llc_level = level;
+            llc_sysfs = bytes;
+        }
+    }
+    /* ... and what sysconf says (a VM may report the whole package). */
+    long s = -1;
+#ifdef _SC_LEVEL4_CACHE_SIZE
+    s = sysconf(_SC_LEVEL4_CACHE_SIZE);
+#endif
+#ifdef _SC_LEVEL3_CACHE_SIZE
+    if (s <= 0)
+        s = sysconf(_SC_LEVEL3_CACHE_SIZE);
+#endif
+#ifdef _SC_LEVEL2_CACHE_SIZE
+    if (s <= 0)
+        s = sysconf(_SC_LEVEL2_CACHE_SIZE);
+#endif
+    llc_sysconf = s > 0 ? (size_t)s : 0;
+}
+
+/* ---- the cold ring -------------------------------------------------------
+ * Two rings (input, output) of ring_bytes each, at least 4x the largest
+ * last-level cache figure: each run takes the next slot, so its input and
+ * output frames were last touched ring_bytes of traffic ago. */
+
+typedef struct {
+    uint8_t *src, *dst;
+    size_t bytes, slot;
+    int nslots, next;
+    int filled_fmt;     /* format the input slots hold, 0 = none */
+    size_t filled_size; /* w*h it was filled for */
+} ring_t;
+
+static void ring_alloc(ring_t *r, size_t bytes)
+{
+    void *a = NULL, *b = NULL;
+    if (posix_memalign(&a, 4096, bytes) || posix_memalign(&b, 4096, bytes))
+        die("cannot allocate the frame rings (%s); try --ring-mb", "posix_memalign");
+    memset(a, 0, bytes); /* fault the pages in now, not during a run */
+    memset(b, 0, bytes);
+    r->src = a;
+    r->dst = b;
+    r->bytes = bytes;
+    r->filled_fmt = 0;
+}
+
+/* Slots of slot_bytes (rounded up to pages) for input and output frames;
+ * the input slots get frame (frame_bytes); refilled when fmt/size change. */
+static void ring_prepare(ring_t *r, const uint8_t *frame, size_t frame_bytes, size_t slot_bytes,
+                         int fmt, size_t wh)
+{
+    const size_t slot = (slot_bytes + 4095u) & ~(size_t)4095u;
+    if (r->slot != slot) {
+        r->slot = slot;
+        r->nslots = (int)(r->bytes / slot);
+        r->next = 0;
+        r->filled_fmt = 0;
+    }
+    if (r->nslots < 2)
+        die("frame rings too small for a frame (%s); raise --ring-mb", "ring");
+    if (r->filled_fmt != fmt || r->filled_size != wh) {
+        for (int i = 0; i < r->nslots; i++)
+            memcpy(r->src + (size_t)i * slot, frame, frame_bytes);
+        r->filled_fmt = fmt;
+        r->filled_size = wh;
+    }
+}
+
+typedef int (*run_fn)(void *ctx, const uint8_t *src, uint8_t *dst);
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n & 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* warm-ups, then runs; median and minimum in ms. Returns 0 or the run's
+ * error. The last warm-up (steady state: buffers allocated) decides whether
+ * the row is slow enough for fewer runs. */
+static int measure(ring_t *r, run_fn fn, void *ctx, int warm, int runs, row_t *row)
+{
+    double last = 0.0;
+    for (int i = 0; i < warm; i++) {
+        const int s = r->next++ % r->nslots;
+        const double t0 = now_s();
+        const int e = fn(ctx, r->src + (size_t)s * r->slot, r->dst + (size_t)s * r->slot);
+        last = now_s() - t0;
+        if (e)
+            return e;
+    }
+    if (last > SLOW_RUN_S && runs > SLOW_RUNS)
+        runs = SLOW_RUNS;
+    double *t = xmalloc(sizeof *t * (size_t)runs), *c = xmalloc(sizeof *c * (size_t)runs);
+    for (int i = 0; i < runs; i++) {
+        const int s = r->next++ % r->nslots;
+        const double c0 = cpu_s(), t0 = now_s();
+        const int e = fn(ctx, r->src + (size_t)s * r->slot, r->dst + (size_t)s * r->slot);
+        t[i] = now_s() - t0;
+        c[i] = cpu_s() - c0;
+        if (e) {
+            free(t);
+            free(c);
+            return e;
+        }
+    }
+    row->runs = runs;
+    row->median_ms = 1e3 * median(t, runs);
+    row->min_ms = 1e3 * t[0]; /* sorted by median() */
+    row->cpu_ms = 1e3 * median(c, runs);
+    free(t);
+    free(c);
+    return 0;
+}
+
+/* ---- the variants --------------------------------------------------------- */
+
+typedef struct {
+    size_t bytes;
+} floor_ctx_t;
+
+static int run_memcpy(void *ctx, const uint8_t *src, uint8_t *dst)
+{
+    memcpy(dst, src, ((floor_ctx_t *)ctx)->bytes);
+    return 0;
+}
+
+/* The trivial read-modify-write pass: every byte inverted in place, eight
+ * at a time (the frame slots are page-aligned). */
+static int run_rmw(void *ctx, const uint8_t *src, uint8_t *dst)
+{
+    (void)src;
+    const size_t n = ((floor_ctx_t *)ctx)->bytes;
+    size_t i = 0;
+    for (; i + 8u <= n; i += 8u) {
+        uint64_t v;
+        memcpy(&v, dst + i, 8u);
+        v = ~v;
+        memcpy(dst + i, &v, 8u);
+    }
+    for (; i < n; i++)
+        dst[i] = (uint8_t)(255u - dst[i]);
+    return 0;
+}
+
+typedef struct {
+    bloom_t *b;
+    ptrdiff_t in_stride, out_stride;
+} engine_ctx_t;
+
+static int run_engine(void *ctx, const uint8_t *src, uint8_t *dst)
+{
+    engine_ctx_t *e = ctx;
+    const bloom_status_t st = bloom_process(e->b, src, e->in_stride, dst, e->out_stride);
+    if (st != BLOOM_OK) {
+        fprintf(stderr, "bloom_bench: bloom_process: %s\n", bloom_status_str(st));
+        return 1;
+    }
+    return 0;
+}
+
+typedef struct {
+    bcv_ctx_t *c;
+    int kind;
+    size_t stride;
+} cv_ctx_t;
+
+static int run_cv(void *ctx, const uint8_t *src, uint8_t *dst)
+{
+    cv_ctx_t *c = ctx;
+    if (bcv_run(c->c, c->kind, src, c->stride, dst, c->stride)) {
+        fprintf(stderr, "bloom_bench: OpenCV: %s\n", bcv_error());
+        return 1;
+    }
+    return 0;
+}
+
+/* OpenCV rows: threads 0 = sequential (cv::setNumThreads(0)), -1 = default. */
+static const struct {
+    const char *name;
+    int kind, threads;
+} cv_rows[] = {
+    {"OpenCV same algorithm: boxFilter + decimate", BCV_SAME_BOXFILTER, 0},
+    {"OpenCV same algorithm: boxFilter + decimate", BCV_SAME_BOXFILTER, -1},
+    {"OpenCV same algorithm: INTER_AREA + 2x2 box", BCV_SAME_AREA, 0},
+    {"OpenCV same algorithm: INTER_AREA + 2x2 box", BCV_SAME_AREA, -1},
+    {"OpenCV tutorial: resize + threshold + GaussianBlur + addWeighted", BCV_TUTORIAL, 0},
+    {"OpenCV tutorial: resize + threshold + GaussianBlur + addWeighted", BCV_TUTORIAL, -1},
+};
+#define N_CV_ROWS ((int)(sizeof cv_rows / sizeof cv_rows[0]))
+
+/* Sigma of the tutorial's Gaussian, full-resolution pixels: the standard
+ * deviation per axis of the engine's own bloom for a single bright pixel at
+ * 5 levels (measured with the float model: 15.06 px). */
+#define TUTORIAL_SIGMA 15.0
+
+/* ---- one frame size --------------------------------------------------------- */
+
+typedef struct {
+    const char *image;
+    int runs, warm;
+    int model_w[MAX_SIZES], model_h[MAX_SIZES], n_model;
+} opts_t;
+
+typedef struct {
+    double active_src_pct;  /* source pixels whose max channel passes the knee's lower edge */
+    double changed_out_pct; /* output bytes of the engine that differ from the input */
+    int levels;
+} size_info_t;
+
+static size_info_t size_info[MAX_SIZES];
+static int opencv_threads_default = 0;
+
+static int fmt_bytes(bloom_format_t f, int w, int h)
+{
+    return bloom_format_bpp(f) * w * h;
+}
+
+static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
+{
+    char err[512];
+    const size_t n = (size_t)w * (size_t)h, rgb_bytes = n * 3u;
+    uint8_t *scene = xmalloc(rgb_bytes);
+    if (scene_make(o->image, w, h, scene, err, sizeof err))
+        die("%s", err);
+    const int first_row = nrows;
+
+    /* Engine reference (first table row) on the scene, outside the ring. */
+    bloom_config_t cfg0;
+    if (bench_engine_config(&bench_engines[0], w, h, &cfg0))
+        die("the first engine row (%s) must not be skipped", bench_engines[0].name);
+    bloom_info_t info0;
+    bloom_status_t st = bloom_query(&cfg0, &info0);
+    if (st != BLOOM_OK)
+        die("bloom_query: %s", bloom_status_str(st));
+    if (cfg0.in_fmt != BLOOM_FMT_RGB888 || cfg0.out_fmt != BLOOM_FMT_RGB888)
+        die("the first engine row (%s) must be RGB888->RGB888: it is the reference",
+            bench_engines[0].name);
+    uint8_t *ref = xmalloc(rgb_bytes), *out = xmalloc(rgb_bytes);
+    {
+        void *ws = xmalloc(info0.workspace_bytes);
+        bloom_t *b;
+        if ((st = bloom_init(&b, ws, info0.workspace_bytes, &cfg0)) != BLOOM_OK ||
+            (st = bloom_process(b, scene, w * 3, ref, w * 3)) != BLOOM_OK)
+            die("engine: %s", bloom_status_str(st));
+        free(ws);
+        if (bench_engines[0].teardown)
+            bench_engines[0].teardown();
+    }
+    const double t = cfg0.threshold / 65536.0, s = cfg0.soft_knee / 65536.0;
+    const double I = bloom_srgb_to_linear(cfg0.intensity / 65536.0);
+    {
+        size_t active = 0, changed = 0;
+        for (size_t i = 0; i < n; i++) {
+            int m = scene[3 * i];
+            m = scene[3 * i + 1] > m ? scene[3 * i + 1] : m;
+            m = scene[3 * i + 2] > m ? scene[3 * i + 2] : m;
+            active += bloom_srgb_to_linear(m / 255.0) > t - t * s;
+        }
+        for (size_t i = 0; i < rgb_bytes; i++)
+            changed += ref[i] != scene[i];
+        size_info[si].active_src_pct = 100.0 * (double)active / (double)n;
+        size_info[si].changed_out_pct = 100.0 * (double)changed / (double)rgb_bytes;
+        size_info[si].levels = info0.levels;
+    }
+    printf("\n== %dx%d: L = %d levels, %.2f %% of source pixels above the knee's lower edge, "
+           "bloom changes %.2f %% of the output bytes\n",
+           w, h, info0.levels, size_info[si].active_src_pct, size_info[si].changed_out_pct);
+    fflush(stdout);
+
+    /* The floor. */
+    ring_prepare(ring, scene, rgb_bytes, rgb_bytes, BLOOM_FMT_RGB888, n);
+    floor_ctx_t fc = {rgb_bytes};
+    row_t *r = new_row(w, h, "floor", "cold memcpy of the RGB888 frame");
+    if (measure(ring, run_memcpy, &fc, o->warm, o->runs, r))
+        exit(1);
+    r = new_row(w, h, "floor", "read-modify-write pass (invert the frame in place)");
+    if (measure(ring, run_rmw, &fc, o->warm, o->runs, r))
+        exit(1);
+
+    /* The engine rows. */
+    for (int i = 0; i < bench_engine_count; i++) {
+        const bench_engine_t *e = &bench_engines[i];
+        r = new_row(w, h, "engine", e->name);
+        bloom_config_t cfg;
+        if (bench_engine_config(e, w, h, &cfg)) {
+            snprintf(r->note, sizeof r->note, "skipped: not available");
+            continue;
+        }
+        bloom_info_t info;
+        if ((st = bloom_query(&cfg, &info)) != BLOOM_OK)
+            die("bloom_query: %s", bloom_status_str(st));
+        const size_t in_b = (size_t)fmt_bytes(cfg.in_fmt, w, h), out_b = (size_t)fmt_bytes(cfg.out_fmt, w, h);
+        uint8_t *frame = xmalloc(in_b);
+        if (scene_convert(scene, w, h, cfg.in_fmt, frame, (size_t)bloom_format_bpp(cfg.in_fmt) * (size_t)w))
+            die("the scene has no %s input", e->name);
+        ring_prepare(ring, frame, in_b, in_b > out_b ? in_b : out_b, cfg.in_fmt, n);
+        void *ws = xmalloc(info.workspace_bytes);
+        bloom_t *b;
+        if ((st = bloom_init(&b, ws, info.workspace_bytes, &cfg)) != BLOOM_OK)
+            die("bloom_init: %s", bloom_status_str(st));
+        engine_ctx_t ec = {b, (ptrdiff_t)bloom_format_bpp(cfg.in_fmt) * w,
+                           (ptrdiff_t)bloom_format_bpp(cfg.out_fmt) * w};
+        if (measure(ring, run_engine, &ec, o->warm, o->runs, r))
+            exit(1);
+        if (e->teardown)
+            e->teardown();
+        snprintf(r->note, sizeof r->note, "workspace %zu bytes", info.workspace_bytes);
+        free(ws);
+        free(frame);
+    }
+
+    /* OpenCV. */
+    bcv_params_t p;
+    memset(&p, 0, sizeof p);
+    p.levels = info0.levels;
+    for (int k = 0; k <= info0.levels; k++) {
+        p.level_w[k] = info0.level_w[k];
+        p.level_h[k] = info0.level_h[k];
+    }
+    for (int c = 0; c < 256; c++)
+        p.decode_lut[c] = (float)bloom_srgb_to_linear(c / 255.0);
+    p.threshold = t;
+    p.knee = t * s;
+    p.intensity = I;
+    p.tutorial_code = (int)(bloom_linear_to_srgb(t) * 255.0 + 0.5);
+    p.tutorial_sigma = TUTORIAL_SIGMA;
+    p.tutorial_weight = cfg0.intensity / 65536.0;
+    bcv_ctx_t *cv = bcv_create(w, h, &p);
+    if (!cv)
+        die("OpenCV: %s", bcv_error());
+    ring_prepare(ring, scene, rgb_bytes, rgb_bytes, BLOOM_FMT_RGB888, n);
+    for (int i = 0; i < N_CV_ROWS; i++) {
+        r = new_row(w, h, "opencv", cv_rows[i].name);
+        r->threads = bcv_set_threads(cv_rows[i].threads);
+        if (cv_rows[i].threads == 0)
+            r->threads = 1; /* setNumThreads(0): sequential */
+        else
+            opencv_threads_default = r->threads;
+        cv_ctx_t cc = {cv, cv_rows[i].kind, (size_t)w * 3u};
+        if (measure(ring, run_cv, &cc, o->warm, o->runs, r))
+            exit(1);
+        if (run_cv(&cc, scene, out))
+            exit(1);
+        agreement(ref, out, rgb_bytes, &r->agree_max, &r->agree_exact);
+        printf("   %-66s %2d thr %9.3f ms\n", r->name, r->threads, r->median_ms);
+        fflush(stdout);
+    }
+    bcv_set_threads(-1);
+    bcv_destroy(cv);
+
+    /* The float model, for scale, at the sizes asked for. */
+    for (int m = 0; m < o->n_model; m++) {
+        if (o->model_w[m] != w || o->model_h[m] != h)
+            continue;
+        r = new_row(w, h, "model", "float reference model (bloom_model_run, double)");
+        uint32_t *codes = xmalloc(rgb_bytes * sizeof *codes), *oc = xmalloc(rgb_bytes * sizeof *oc);
+        for (size_t i = 0; i < rgb_bytes; i++)
+            codes[i] = scene[i];
+        bloom_model_params_t mp;
+        memset(&mp, 0, sizeof mp);
+        mp.width = w;
+        mp.height = h;
+        mp.levels = cfg0.levels;
+        mp.threshold = t;
+        mp.soft_knee = s;
+        mp.intensity = cfg0.intensity / 65536.0;
+        const int mx[3] = {255, 255, 255};
+        const double c0 = cpu_s(), t0 = now_s();
+        if (bloom_model_run(&mp, codes, mx, oc, mx, NULL) < 0)
+            die("bloom_model_run failed (%s)", "bad arguments or out of memory");
+        r->median_ms = r->min_ms = 1e3 * (now_s() - t0);
+        r->cpu_ms = 1e3 * (cpu_s() - c0);
+        r->runs = 1;
+        for (size_t i = 0; i < rgb_bytes; i++)
+            out[i] = (uint8_t)oc[i];
+        agreement(ref, out, rgb_bytes, &r->agree_max, &r->agree_exact);
+        snprintf(r->note, sizeof r->note, "one run, no warm-up");
+        free(codes);
+        free(oc);
+    }
+
+    /* Ratios. */
+    const row_t *mcr = NULL, *enr = NULL;
+    for (int i = first_row; i < nrows; i++) {
+        if (!strcmp(rows[i].group, "floor") && !mcr)
+            mcr = &rows[i];
+        if (!strcmp(rows[i].group, "engine") && !enr && rows[i].runs)
+            enr = &rows[i];
+    }
+    for (int i = first_row; i < nrows; i++) {
+        row_t *q = &rows[i];
+        q->x_memcpy = q->x_engine = 0.0;
+        q->xc_memcpy = q->xc_engine = -1.0;
+        if (!q->runs)
+            continue;
+        if (mcr && mcr->median_ms > 0.0)
+            q->x_memcpy = q->median_ms / mcr->median_ms;
+        if (enr && enr->median_ms > 0.0)
+            q->x_engine = q->median_ms / enr->median_ms;
+        if (q->threads == 1 && mcr && mcr->cpu_ms > 0.0)
+            q->xc_memcpy = q->cpu_ms / mcr->cpu_ms;
+        if (q->threads == 1 && enr && enr->cpu_ms > 0.0)
+            q->xc_engine = q->cpu_ms / enr->cpu_ms;
+    }
+    printf("   %-44s %3s %4s %10s %9s %9s %9s %8s %8s\n", "variant", "thr", "runs", "median ms",
+           "CPU ms", "x memcpy", "x engine", "max LSB", "exact %");
+    for (int i = first_row; i < nrows; i++) {
+        const row_t *q = &rows[i];
+        char nm[45];
+        snprintf(nm, sizeof nm, "%s", q->name);
+        if (!q->runs) {
+            printf("   %-44s %s\n", nm, q->note);
+            continue;
+        }
+        printf("   %-44s %3d %4d %10.3f %9.3f %9.2f %9.3f", nm, q->threads, q->runs, q->median_ms,
+               q->cpu_ms, q->x_memcpy, q->x_engine);
+        if (q->agree_max >= 0)
+            printf(" %8d %8.3f\n", q->agree_max, q->agree_exact);
+        else
+            printf(" %8s %8s\n", "-", "-");
+    }
+    fflush(stdout);
+    free(ref);
+    free(out);
+    free(scene);
+}
+
+/* ---- output files ------------------------------------------------------------- */
+
+static char date_utc[64];
+static double load_start = -1.0, load_end = -1.0;
+
+static double loadavg1(void)
+{
+    double v = -1.0;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &v) != 1)
+            v = -1.0;
+        fclose(f);
+    }
+    return v;
+}
+
+static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
+{
+    snprintf(tmp, tmplen, "%s.tmp", path);
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        die("cannot write %s", tmp);
+    return f;
+}
+
+static void close_tmp(FILE *f, const char *tmp, const char *path)
+{
+    if (fclose(f) || rename(tmp, path))
+        die("cannot write %s", path);
+}
+
+static void write_csv(const char *path)
+{
+    char tmp[1024];
+    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    fprintf(f, "date,cpu,width,height,group,variant,threads,runs,median_ms,min_ms,cpu_ms,"
+               "x_memcpy,x_engine,x_memcpy_cpu,x_engine_cpu,agree_max_lsb,agree_exact_pct,note\n");
+    for (int i = 0; i < nrows; i++) {
+        const row_t *r = &rows[i];
+        fprintf(f, "%s,\"%s\",%d,%d,%s,\"%s\",%d,%d,", date_utc, cpu_model, r->w, r->h, r->group,
+                r->name, r->threads, r->runs);
+        if (r->runs)
+            fprintf(f, "%.4f,%.4f,%.4f,%.4f,%.4f,", r->median_ms, r->min_ms, r->cpu_ms,
+                    r->x_memcpy, r->x_engine);
+        else
+            fprintf(f, ",,,,,");
+        if (r->xc_memcpy >= 0.0)
+            fprintf(f, "%.4f,%.4f,", r->xc_memcpy, r->xc_engine);
+        else
+            fprintf(f, ",,");
+        if (r->agree_max >= 0)
+            fprintf(f, "%d,%.4f,", r->agree_max, r->agree_exact);
+        else
+            fprintf(f, ",,");
+        fprintf(f, "\"%s\"\n", r->note);
+    }
+    close_tmp(f, tmp, path);
+}
+
+static const char *met(int yes)
+{
+    return yes ? "met" : "not met";
+}
+
+/* Three significant digits or so, whatever the size of the ratio. */
+static void fmt_ratio(char *buf, size_t n, double x)
+{
+    if (x < 0.1)
+        snprintf(buf, n, "%.4f", x);
+    else if (x < 100.0)
+        snprintf(buf, n, "%.2f", x);
+    else
+        snprintf(buf, n, "%.0f", x);
+}
+
+static const row_t *find_row(int w, int h, const char *group, const char *name, int single)
+{
+    for (int i = 0; i < nrows; i++)
+        if (rows[i].w == w && rows[i].h == h && !strcmp(rows[i].group, group) &&
+            (!name || !strcmp(rows[i].name, name)) && (single < 0 || (rows[i].threads == 1) == single) &&
+            rows[i].runs)
+            return &rows[i];
+    return NULL;
+}
+
+static void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
+                     size_t ring_bytes, const char *cv_version, const char *cv_parallel)
+{
+    char tmp[1024];
+    FILE *f = open_tmp(path, tmp, sizeof tmp);
+    bloom_config_t c;
+    bloom_config_default(&c, 64, 64);
+    fprintf(f, "# Benchmark: the engine against memcpy, OpenCV 4 and the float model\n\n");
+    fprintf(f, "Generated by `make bench` (`sim/bench/bench.c`); the method and the caveats are "
+               "below the tables. Times are medians of the runs shown, on this machine only; "
+               "compare runs by the ratios.\n\n");
+    fprintf(f, "- Date: %s\n", date_utc);
+    fprintf(f, "- CPU: %s, %d logical CPUs online; last-level cache (L%d) %zu KiB per sysfs, "
+               "%zu KiB per sysconf\n",
+            cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10);
+    fprintf(f, "- Cold frames: every run reads its input from, and writes its output to, the next "
+               "slot of two rings of %zu MiB each (at least 4x the larger cache figure)\n",
+            ring_bytes >> 20);
+    fprintf(f, "- Engine: `src/` as it was at run time, compiled by %s %s with `%s`; "
+               "5 levels requested, threshold %.2f, soft knee %.2f, intensity %.2f "
+               "(`bloom_config_default` except the threshold)\n",
+            BENCH_CC, __VERSION__, BENCH_FLAGS, BENCH_THRESHOLD, c.soft_knee / 65536.0,
+            c.intensity / 65536.0);
+    fprintf(f, "- OpenCV %s, parallel framework %s, default threads %d; \"1\" in the threads "
+               "column is `cv::setNumThreads(0)` (sequential)\n",
+            cv_version, cv_parallel, opencv_threads_default);
+    fprintf(f, "- Scene: `%s`%s%s%s %s; parameters chosen so that the bloom is active on it "
+               "(figures per size below)\n",
+            o->image, strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : " (",
+            strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : SCENE_IMAGE_DEFAULT_ABOUT,
+            strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : ")", scene_description);
+    fprintf(f, "- Runs: median of %d runs after %d warm-up(s) (%d runs when the last warm-up took "
+               "over %.2f s); \"median ms\" is wall time, \"CPU ms\" the median process CPU "
+               "time of the same runs (every thread: above the wall time when OpenCV's "
+               "threads work in parallel, below it when other processes took the CPU); "
+               "\"x\" columns divide wall times, \"x ..., CPU\" columns CPU times, for "
+               "single-threaded rows only (the CSV also has the minimum wall time); the float "
+               "model: one run, at the sizes listed in its rows only\n",
+            o->runs, o->warm, SLOW_RUNS, SLOW_RUN_S);
+    if (load_start >= 0.0 && load_end >= 0.0)
+        fprintf(f, "- Load average (1 min) of the machine at start / end: %.2f / %.2f on %d CPUs%s\n",
+                load_start, load_end, ncpu,
+                load_start > 0.5 || load_end > 0.5
+                    ? " (other processes were running: expect more noise than on an idle machine, "
+                      "the multi-threaded OpenCV rows most of all)"
+                    : "");
+    fprintf(f, "- Agreement: the output bytes of each OpenCV variant and of the float model "
+               "against the engine's RGB888 output, same input: largest difference in LSB and "
+               "%% of equal bytes\n\n");
+
+    for (int s = 0; s < nsizes; s++) {
+        const int w = sw[s], h = sh[s];
+        fprintf(f, "## %dx%d\n\n", w, h);
+        fprintf(f, "RGB888 frame %d bytes; pyramid levels built: %d; %.2f %% of source pixels "
+                   "above the knee's lower edge; the bloom changes %.2f %% of the output bytes.\n\n",
+                w * h * 3, size_info[s].levels, size_info[s].active_src_pct,
+                size_info[s].changed_out_pct);
+        fprintf(f, "| group | variant | threads | runs | median ms | CPU ms | x cold memcpy | "
+                   "x engine | x cold memcpy, CPU | x engine, CPU | max LSB vs engine | "
+                   "exact %% |\n");
+        fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (int i = 0; i < nrows; i++) {
+            const row_t *r = &rows[i];
+            if (r->w != w || r->h != h)
+                continue;
+            if (!r->runs) {
+                fprintf(f, "| %s | %s | | | %s | | | | | | | |\n", r->group, r->name, r->note);
+                continue;
+            }
+            char xm[32], xe[32], cm[32] = "-", ce[32] = "-";
+            fmt_ratio(xm, sizeof xm, r->x_memcpy);
+            fmt_ratio(xe, sizeof xe, r->x_engine);
+            if (r->xc_memcpy >= 0.0) {
+                fmt_ratio(cm, sizeof cm, r->xc_memcpy);
+                fmt_ratio(ce, sizeof ce, r->xc_engine);
+            }
+            fprintf(f, "| %s | %s | %d | %d | %.3f | %.3f | %s | %s | %s | %s | ", r->group,
+                    r->name, r->threads, r->runs, r->median_ms, r->cpu_ms, xm, xe, cm, ce);
+            if (r->agree_max >= 0)
+                fprintf(f, "%d | %.3f |\n", r->agree_max, r->agree_exact);
+            else
+                fprintf(f, "- | - |\n");
+        }
+        fprintf(f, "\n");
+    }
+
+    /* The targets of issue 7, at the largest size measured. */
+    int big = 0;
+    for (int s = 1; s < nsizes; s++)
+        if (sw[s] * sh[s] > sw[big] * sh[big])
+            big = s;
+    const int w = sw[big], h = sh[big];
+    const row_t *mc = find_row(w, h, "floor", NULL, -1), *en = find_row(w, h, "engine", NULL, -1);
+    const row_t *bx = find_row(w, h, "opencv", cv_rows[0].name, 1);
+    const row_t *ar = find_row(w, h, "opencv", cv_rows[2].name, 1);
+    const row_t *tu = find_row(w, h, "opencv", cv_rows[4].name, 1);
+    fprintf(f, "## Issue 7 targets at %dx%d (reported, not asserted)\n\n", w, h);
+    if (mc && en) {
+        fprintf(f, "Engine row: %s, one thread. Ratios of wall times (the tables), and of CPU "
+                   "times of the same runs, which leave out time lost to other processes on a "
+                   "busy machine (every row compared here is single-threaded).\n\n",
+                en->name);
+        fprintf(f, "| target | measured, wall | measured, CPU | verdict (wall / CPU) |\n|---|---:|---:|---|\n");
+        double xw = en->median_ms / mc->median_ms, xc = en->cpu_ms / mc->cpu_ms;
+        fprintf(f, "| engine at most 8x the cold memcpy time | %.2fx | %.2fx | %s / %s |\n", xw,
+                xc, met(xw <= 8.0), met(xc <= 8.0));
+        if (bx && ar) {
+            const double a = bx->median_ms / en->median_ms, b = ar->median_ms / en->median_ms;
+            const double ac = bx->cpu_ms / en->cpu_ms, bc = ar->cpu_ms / en->cpu_ms;
+            xw = a < b ? a : b;
+            xc = ac < bc ? ac : bc;
+            fprintf(f, "| engine at least 10x faster than the same algorithm in OpenCV, one "
+                       "thread (the faster route counts; boxFilter route %.2fx, INTER_AREA route "
+                       "%.2fx wall) | %.2fx | %.2fx | %s / %s |\n",
+                    a, b, xw, xc, met(xw >= 10.0), met(xc >= 10.0));
+        }
+        if (tu) {
+            xw = tu->median_ms / en->median_ms;
+            xc = tu->cpu_ms / en->cpu_ms;
+            fprintf(f, "| engine at least 3x faster than the OpenCV tutorial bloom, one thread | "
+                       "%.2fx | %.2fx | %s / %s |\n",
+                    xw, xc, met(xw >= 3.0), met(xc >= 3.0));
+        }
+        fprintf(f, "| at most 40 instructions per pixel | see `sim/docs/icount.md` "
+                   "(`make icount`) | | |\n\n");
+    }
+    close_tmp(f, tmp, path);
+}
+
+/* ---- main ------------------------------------------------------------------------ */
+
+static int parse_sizes(const char *s, int *w, int *h, int max)
+{
+    int n = 0;
+    if (!strcmp(s, "none"))
+        return 0;
+    while (*s) {
+        char *end;
+        long a = strtol(s, &end, 10);
+        if (*end != 'x')
+            return -1;
+        long b = strtol(end + 1, &end, 10);
+        if (a < 1 || b < 1 || a > BLOOM_MAX_DIM || b > BLOOM_MAX_DIM || n == max)
+            return -1;
+        w[n] = (int)a;
+        h[n] = (int)b;
+        n++;
+        if (*end == ',')
+            end++;
+        else if (*end)
+            return -1;
+        s = end;
+    }
+    return n;
+}
+
+int main(int argc, char **argv)
+{
+    const char *csv = "build/bench.csv", *md = "build/bench/results.md";
+    int sw[MAX_SIZES] = {640, 1280, 1920}, sh[MAX_SIZES] = {480, 720, 1080}, nsizes = 3;
+    long ring_mb = 0;
+    opts_t o;
+    memset(&o, 0, sizeof o);
+    o.image = SCENE_IMAGE_DEFAULT;
+    o.runs = 15;
+    o.warm = 2;
+    o.model_w[0] = 640;
+    o.model_h[0] = 480;
+    o.n_model = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--quick")) {
+            o.runs = 3;
+            o.warm = 1;
+            continue;
+        }
+        if (!v)
+            die("%s needs a value (see the top of sim/bench/bench.c)", a);
+        i++;
+        if (!strcmp(a, "--csv"))
+            csv = v;
+        else if (!strcmp(a, "--md"))
+            md = v;
+        else if (!strcmp(a, "--image"))
+            o.image = v;
+        else if (!strcmp(a, "--sizes")) {
+            if ((nsizes = parse_sizes(v, sw, sh, MAX_SIZES)) < 1)
+                die("bad --sizes '%s' (WxH,WxH,...)", v);
+        } else if (!strcmp(a, "--model-sizes")) {
+            if ((o.n_model = parse_sizes(v, o.model_w, o.model_h, MAX_SIZES)) < 0)
+                die("bad --model-sizes '%s' (WxH,... or none)", v);
+        } else if (!strcmp(a, "--runs")) {
+            if ((o.runs = atoi(v)) < 1)
+                die("bad --runs '%s'", v);
+        } else if (!strcmp(a, "--warmup")) {
+            if ((o.warm = atoi(v)) < 0)
+                die("bad --warmup '%s'", v);
+        } else if (!strcmp(a, "--ring-mb")) {
+            if ((ring_mb = atol(v)) < 1)
+                die("bad --ring-mb '%s'", v);
+        } else
+            die("unknown option %s", a);
+    }
+
+    read_cpu();
+    load_start = loadavg1();
+    time_t now = time(NULL);
+    strftime(date_utc, sizeof date_utc, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    size_t llc = llc_sysfs > llc_sysconf ? llc_sysfs : llc_sysconf;
+    if (!llc)
+        llc = (size_t)64 << 20; /* unknown: assume a large one */
+    size_t ring_bytes = ring_mb ? (size_t)ring_mb << 20 : 4u * llc;
+    size_t biggest = 0;
+    for (int s = 0; s < nsizes; s++) {
+        const size_t fb = (size_t)sw[s] * (size_t)sh[s] * 4u; /* XRGB8888 is the widest */
+        if (fb > biggest)
+            biggest = fb;
+    }
+    if (ring_bytes < 16u * biggest)
+        ring_bytes = 16u * biggest;
+    ring_bytes = (ring_bytes + ((size_t)1 << 20) - 1) & ~(((size_t)1 << 20) - 1);
+
+    const char *cv_version = bcv_version(), *cv_parallel = bcv_parallel_framework();
+    printf("bloom_bench: %s\n  CPU %s, %d CPUs online, LLC L%d %zu KiB (sysfs) / %zu KiB (sysconf)\n"
+           "  rings 2 x %zu MiB; engine built by %s %s with %s\n  OpenCV %s (%s)\n",
+           date_utc, cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10,
+           ring_bytes >> 20, BENCH_CC, __VERSION__, BENCH_FLAGS, cv_version, cv_parallel);
+    fflush(stdout);
+
+    ring_t ring;
+    memset(&ring, 0, sizeof ring);
+    ring_alloc(&ring, ring_bytes);
+    for (int s = 0; s < nsizes; s++)
+        bench_size(s, sw[s], sh[s], &o, &ring);
+
+    load_end = loadavg1();
+    write_csv(csv);
+    write_md(md, sw, sh, nsizes, &o, ring_bytes, cv_version, cv_parallel);
+    printf("\nwrote %s and %s\n", csv, md);
+    free(ring.src);
+    free(ring.dst);
+    return 0;
+}
