@@ -177,11 +177,17 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
 /* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
  * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
  * Cortex-M); the results fit in 32 again. */
+/* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
+ * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
+ * Cortex-M); the results fit in 32 again. `odd` is a constant after
+ * inlining, so the weights are shifts and adds. */
 static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
-                                      uint64_t wa, uint64_t wc, uint32_t v[3])
+                                      int odd, uint32_t v[3])
 {
-    for (int ch = 0; ch < 3; ch++)
-        v[ch] = (uint32_t)((wa * u0[ch] + 4u * (uint64_t)u1[ch] + wc * u2[ch] + 4u) >> 3);
+    for (int ch = 0; ch < 3; ch++) {
+        const uint64_t a = u0[ch], b = u1[ch], c = u2[ch];
+        v[ch] = (uint32_t)(((odd ? a + 4u * b + 3u * c : 3u * a + 4u * b + c) + 4u) >> 3);
+    }
 }
 
 static BLOOM_ALWAYS_INLINE uint32_t htent(uint64_t a, uint64_t b, uint64_t c)
@@ -189,35 +195,36 @@ static BLOOM_ALWAYS_INLINE uint32_t htent(uint64_t a, uint64_t b, uint64_t c)
     return (uint32_t)((a + 4u * b + c + 4u) >> 3);
 }
 
-static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const uint32_t *add,
-                                     uint32_t *dst, int x0, int n, int sw, bool has_add)
+static BLOOM_ALWAYS_INLINE void tent_impl(const uint32_t *const u[3], int odd, const uint32_t *add,
+                                          uint32_t *dst, int x0, int n, int sw, bool has_add)
 {
-    const uint64_t wa = odd ? 1u : 3u, wc = odd ? 3u : 1u;
     const uint32_t *u0 = u[0], *u1 = u[1], *u2 = u[2];
     int x = x0, m = x0 >> 1;
     const int end = x0 + n;
     uint32_t vp[3], vc[3], vn[3];
     size_t i = (size_t)(m > 0 ? m - 1 : 0) * 3u;
-    vtent(u0 + i, u1 + i, u2 + i, wa, wc, vp);
+    vtent(u0 + i, u1 + i, u2 + i, odd, vp);
     i = (size_t)m * 3u;
-    vtent(u0 + i, u1 + i, u2 + i, wa, wc, vc);
+    vtent(u0 + i, u1 + i, u2 + i, odd, vc);
     uint32_t *d = dst;
     const uint32_t *ad = add;
     while (x < end) {
         i = (size_t)imin(m + 1, sw - 1) * 3u;
-        vtent(u0 + i, u1 + i, u2 + i, wa, wc, vn);
+        vtent(u0 + i, u1 + i, u2 + i, odd, vn);
         if (!(x & 1)) { /* even column: (3, 4, 1) */
             for (int ch = 0; ch < 3; ch++)
                 d[ch] = htent(3u * (uint64_t)vp[ch], vc[ch], vn[ch]) + (has_add ? ad[ch] : 0u);
             d += 3;
-            ad += has_add ? 3 : 0;
+            if (has_add)
+                ad += 3;
             x++;
         }
         if (x < end) { /* odd column: (1, 4, 3) */
             for (int ch = 0; ch < 3; ch++)
                 d[ch] = htent(vp[ch], vc[ch], 3u * (uint64_t)vn[ch]) + (has_add ? ad[ch] : 0u);
             d += 3;
-            ad += has_add ? 3 : 0;
+            if (has_add)
+                ad += 3;
             x++;
         }
         for (int ch = 0; ch < 3; ch++) {
@@ -226,6 +233,16 @@ static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const 
         }
         m++;
     }
+}
+
+/* The row parity as a constant: four specializations. */
+static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const uint32_t *add,
+                                     uint32_t *dst, int x0, int n, int sw, bool has_add)
+{
+    if (odd)
+        tent_impl(u, 1, add, dst, x0, n, sw, has_add);
+    else
+        tent_impl(u, 0, add, dst, x0, n, sw, has_add);
 }
 
 void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,

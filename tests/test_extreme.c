@@ -41,6 +41,16 @@ static void test_worst_case(void)
     expect_bittrue("all at max, threshold 0, intensity 10", &c, &src);
     c.flags = BLOOM_FLAG_DEBUG_VIEW;
     expect_bittrue("all at max, bloom-only view", &c, &src);
+    /* The same with an intensity small enough that I*B, with B at its
+     * largest (9 levels of 256.0 = 2304.0), stays below the output ceiling:
+     * any overflow in the sums would now show, not saturate away. */
+    c.intensity = BLOOM_Q16(0.3);
+    expect_bittrue("all at max, B unclamped (intensity 0.3)", &c, &src);
+    frame_t unclamped = run_engine(&c, &src);
+    CHECK(frame_get_q16(&unclamped, 512, 512) < BLOOM_MAX_LINEAR);
+    CHECK(frame_get_q16(&unclamped, 512, 512) > (150u << 16)); /* 0.0732 * 2304 = 168.7 */
+    frame_free(&unclamped);
+    c.intensity = BLOOM_MAX_INTENSITY;
     /* the bloom-only value: I * L * M, clamped at the largest output */
     frame_t out = run_engine(&c, &src);
     CHECK(frame_get_q16(&out, 0, 0) == BLOOM_MAX_LINEAR && frame_get_q16(&out, 517, 1023) == BLOOM_MAX_LINEAR);
