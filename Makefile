@@ -21,7 +21,7 @@ HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
 SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c
-CORE_HDR := include/bloom.h include/bloom_config.h src/bloom_internal.h
+CORE_HDR := $(wildcard include/*.h src/*.h)
 SIM_SRC := sim/bloom_model.c sim/imgio.c
 SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))

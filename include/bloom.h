@@ -59,7 +59,8 @@ typedef enum {
     BLOOM_E_ALIGN = -10,
     BLOOM_E_BUSY = -11,
     BLOOM_E_STATE = -12,
-    BLOOM_E_INTERNAL = -13
+    BLOOM_E_INTERNAL = -13,
+    BLOOM_E_TOO_BIG = -14
 } bloom_status_t;
 
 typedef struct {
@@ -139,11 +140,14 @@ const char *bloom_status_str(bloom_status_t st);
  * level 1, 8 at level 2, at most 2^(L-k+2) at level k >= 3, of w/2^k + 1 pixels of
  * 12 bytes, plus one zero row of w/2 pixels; that sums to below
  * w*(2^L + 100) + 12*2^L; the source ring holds fewer than 4*2^L + 8 rows
- * (pointers, or copies). */
+ * (pointers, or copies). Computed in unsigned long long: a configuration
+ * too big for the target's address space fails to compile as a static
+ * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                   \
-    ((size_t)3072u + (size_t)(w) * (((size_t)1u << (levels)) + 100u) +                    \
-     ((size_t)64u << (levels)) + (size_t)64u * (size_t)(levels) +                          \
-     ((copy) ? (((size_t)4u << (levels)) + 8u) * (size_t)(w) * (size_t)(src_bpp) : 0u))
+    (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + 100u) + (64ull << (levels)) + \
+     64ull * (unsigned long long)(levels) +                                                \
+     ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) \
+             : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) \
     static uint64_t name[((bytes) + 7u) / 8u]
 

@@ -71,6 +71,7 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_BUSY: return "source ring full: pull output rows before pushing more";
     case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
     case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
+    case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
     }
     return "unknown status";
 }
@@ -472,27 +473,29 @@ static void dry_frame(bloom_t *b)
     }
 }
 
-static size_t align8(size_t n)
+static uint64_t align8(uint64_t n)
 {
-    return (n + 7u) & ~(size_t)7u;
+    return (n + 7u) & ~(uint64_t)7u;
 }
 
-/* Lay the rings out after the engine struct; with base NULL only count. */
-static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
+/* Lay the rings out after the engine struct; with base NULL only count.
+ * Counted in 64 bits: on a 32-bit target a huge configuration must be
+ * refused (BLOOM_E_TOO_BIG), not wrap around. */
+static uint64_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
 {
-    size_t off = align8(sizeof(bloom_t));
+    uint64_t off = align8(sizeof(bloom_t));
     const int cap_src = imax(b->need_src, 1);
 #define TAKE(ptr, type, count)                                   \
     do {                                                         \
         if (base)                                                \
-            (ptr) = (type *)(void *)(base + off);                \
-        off = align8(off + sizeof(type) * (size_t)(count));      \
+            (ptr) = (type *)(void *)(base + (size_t)off);        \
+        off = align8(off + sizeof(type) * (uint64_t)(count));    \
     } while (0)
     if (b->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
-        size_t before = off;
-        TAKE(b->src_copy, uint8_t, (size_t)cap_src * b->src_row_bytes);
+        uint64_t before = off;
+        TAKE(b->src_copy, uint8_t, (uint64_t)cap_src * b->src_row_bytes);
         if (per_level)
-            per_level[0] = off - before;
+            per_level[0] = (size_t)(off - before);
     } else {
         TAKE(b->src_ptr, const uint8_t *, cap_src);
     }
@@ -501,13 +504,13 @@ static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
     if (base)
         b->src_cap = cap_src;
     for (int k = 1; k <= b->L; k++) {
-        size_t before = off;
+        uint64_t before = off;
         bloom_ring_t *rings[2] = {&b->D[k], k < b->L ? &b->U[k] : NULL};
         const int caps[2] = {imax(b->need_D[k], 1), imax(b->need_U[k], 1)};
         for (int i = 0; i < 2; i++) {
             if (!rings[i])
                 continue;
-            TAKE(rings[i]->buf, uint32_t, (size_t)caps[i] * (size_t)b->w[k] * 3u);
+            TAKE(rings[i]->buf, uint32_t, (uint64_t)caps[i] * (uint64_t)b->w[k] * 3u);
             TAKE(rings[i]->tag, int32_t, caps[i]);
             if (base) {
                 rings[i]->cap = caps[i];
@@ -516,7 +519,7 @@ static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
         }
         if (k == 1 && b->L >= 2) {
             const int cap = imax(b->need_E1, 1);
-            TAKE(b->E1.buf, uint32_t, (size_t)cap * (size_t)b->w[1] * 3u);
+            TAKE(b->E1.buf, uint32_t, (uint64_t)cap * (uint64_t)b->w[1] * 3u);
             TAKE(b->E1.tag, int32_t, cap);
             if (base) {
                 b->E1.cap = cap;
@@ -524,7 +527,7 @@ static size_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
             }
         }
         if (per_level)
-            per_level[k] = off - before;
+            per_level[k] = (size_t)(off - before);
     }
 #undef TAKE
     return off;
@@ -542,7 +545,10 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
     dry_frame(b);
     if (info) {
         memset(info, 0, sizeof *info);
-        info->workspace_bytes = carve(b, NULL, info->ring_bytes);
+        const uint64_t bytes = carve(b, NULL, info->ring_bytes);
+        if (bytes > SIZE_MAX)
+            return BLOOM_E_TOO_BIG;
+        info->workspace_bytes = (size_t)bytes;
         info->levels = b->L;
         for (int k = 0; k <= b->L; k++) {
             info->level_w[k] = b->w[k];
@@ -585,7 +591,9 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
      * afterwards is refused, its first bytes used as scratch. */
     bloom_t *b = (bloom_t *)ws;
     plan(b, cfg, NULL);
-    const size_t need = carve(b, NULL, NULL);
+    const uint64_t need = carve(b, NULL, NULL);
+    if (need > SIZE_MAX)
+        return BLOOM_E_TOO_BIG;
     if (ws_bytes < need)
         return BLOOM_E_WORKSPACE;
     b->dry = false;

@@ -8,6 +8,11 @@ command -v make >/dev/null 2>&1 || need="$need make"
 command -v clang >/dev/null 2>&1 || need="$need clang"
 command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
 [ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"
+# host tools: the simulator's image libraries (bloom_sim)
+command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
+[ -f /usr/include/png.h ] || need="$need libpng-dev"
+[ -f /usr/include/jpeglib.h ] || need="$need libjpeg62-turbo-dev"
+[ -d /usr/include/OpenEXR ] || need="$need libopenexr-dev"
 [ -z "$need" ] && exit 0
 echo "deps: installing$need"
 SUDO=""

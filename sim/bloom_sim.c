@@ -1,0 +1,447 @@
+/* bloom_sim: recorded frames through the fixed-point bloom engine and, on
+ * request, the float reference model side by side. See bloom_sim --help and
+ * sim/docs/simulator.md. */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, isatty */
+#endif
+
+#include "sim.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bloom_model.h"
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* ---- the engine and its buffers for one frame geometry ------------------- */
+typedef struct {
+    int w, h;
+    bloom_config_t cfg;
+    bloom_info_t info;
+    void *ws;
+    bloom_t *b;
+    int in_max[3], out_max[3];
+    uint8_t *src, *dst;
+    uint32_t *in_codes, *out_codes, *fl_codes, *bt_codes;
+    uint8_t *rgb, *sbs;
+    float *lin;
+} engine_t;
+
+static void engine_free(engine_t *e)
+{
+    free(e->ws);
+    free(e->src);
+    free(e->dst);
+    free(e->in_codes);
+    free(e->out_codes);
+    free(e->fl_codes);
+    free(e->bt_codes);
+    free(e->rgb);
+    free(e->sbs);
+    free(e->lin);
+    memset(e, 0, sizeof *e);
+}
+
+/* (Re)builds the engine when the frame size or the formats change. */
+static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_frame_t *f, char *err,
+                        size_t errlen)
+{
+    bloom_config_t c = o->cfg;
+    c.width = f->w;
+    c.height = f->h;
+    if (o->in_fmt_set)
+        c.in_fmt = o->in_fmt;
+    else if (f->max[0] == 0)
+        c.in_fmt = BLOOM_FMT_RGBQ16;
+    else if (f->max[0] == 31 && f->max[1] == 63)
+        c.in_fmt = BLOOM_FMT_RGB565;
+    else
+        c.in_fmt = BLOOM_FMT_RGB888;
+    c.out_fmt = o->out_fmt_set ? o->out_fmt : BLOOM_FMT_RGB888;
+    if (e->b && !memcmp(&c, &e->cfg, sizeof c))
+        return 0;
+    engine_free(e);
+    bloom_status_t st = bloom_query(&c, &e->info);
+    if (st != BLOOM_OK)
+        return sim_errf(err, errlen, "engine configuration for %dx%d: %s", f->w, f->h,
+                        bloom_status_str(st));
+    const size_t n = (size_t)f->w * (size_t)f->h;
+    e->w = f->w;
+    e->h = f->h;
+    e->cfg = c;
+    e->ws = malloc(e->info.workspace_bytes);
+    e->src = malloc(n * (size_t)bloom_format_bpp(c.in_fmt));
+    e->dst = malloc(n * (size_t)bloom_format_bpp(c.out_fmt));
+    e->in_codes = malloc(n * 3 * sizeof(uint32_t));
+    e->out_codes = malloc(n * 3 * sizeof(uint32_t));
+    e->fl_codes = malloc(n * 3 * sizeof(uint32_t));
+    e->bt_codes = malloc(n * 3 * sizeof(uint32_t));
+    e->rgb = malloc(n * 3);
+    e->sbs = malloc(n * 12);
+    e->lin = malloc(n * 3 * sizeof(float));
+    if (!e->ws || !e->src || !e->dst || !e->in_codes || !e->out_codes || !e->fl_codes ||
+        !e->bt_codes || !e->rgb || !e->sbs || !e->lin)
+        return sim_errf(err, errlen, "out of memory for %dx%d frames", f->w, f->h);
+    if ((st = bloom_init(&e->b, e->ws, e->info.workspace_bytes, &c)) != BLOOM_OK)
+        return sim_errf(err, errlen, "engine init: %s", bloom_status_str(st));
+    sim_fmt_max(c.in_fmt, e->in_max);
+    sim_fmt_max(c.out_fmt, e->out_max);
+    printf("engine: %dx%d %s -> %s%s%s, %d levels (%d built), threshold %.5g, knee %.5g, "
+           "intensity %.5g, workspace %zu bytes, latency %d rows\n",
+           f->w, f->h, sim_fmt_name(c.in_fmt), sim_fmt_name(c.out_fmt),
+           (c.flags & BLOOM_FLAG_LINEAR) ? ", linear" : ", sRGB",
+           (c.flags & BLOOM_FLAG_DEBUG_VIEW) ? ", bloom-only view" : "", c.levels, e->info.levels,
+           c.threshold / 65536.0, c.soft_knee / 65536.0, c.intensity / 65536.0,
+           e->info.workspace_bytes, e->info.latency_rows);
+    return 0;
+}
+
+/* Runs one reference model (float or bit-true) on the engine's input. */
+static int run_model(const engine_t *e, int bittrue, uint32_t *dst)
+{
+    bloom_model_params_t p;
+    memset(&p, 0, sizeof p);
+    p.width = e->w;
+    p.height = e->h;
+    p.levels = e->cfg.levels;
+    p.linear = (e->cfg.flags & BLOOM_FLAG_LINEAR) != 0;
+    p.debug_view = (e->cfg.flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
+    p.bittrue = bittrue;
+    p.threshold = e->cfg.threshold / 65536.0;
+    p.soft_knee = e->cfg.soft_knee / 65536.0;
+    p.intensity = e->cfg.intensity / 65536.0;
+    p.threshold_q = e->info.threshold_q;
+    p.knee_q = e->info.knee_q;
+    p.intensity_q = e->info.intensity_q;
+    return bloom_model_run(&p, e->in_codes, e->in_max, dst, e->out_max, NULL) < 0 ? -1 : 0;
+}
+
+/* ---- statistics and progress -------------------------------------------- */
+typedef struct {
+    long frames;
+    double *times;
+    size_t cap;
+    double pixels;
+    unsigned long long samples, exact, bt_samples, bt_diff;
+    uint32_t peak;
+    double err_sum;
+} stats_t;
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+typedef struct {
+    int enabled, shown, share; /* share: stdout is the same kind of terminal */
+    double start, after, last;
+    long total;
+} progress_t;
+
+static void progress_clear(progress_t *p)
+{
+    if (p->shown) {
+        fputs("\r\033[K", stderr);
+        fflush(stderr);
+        p->shown = 0;
+    }
+}
+
+static void progress_update(progress_t *p, long done)
+{
+    double t = now_s();
+    if (!p->enabled || t - p->start < p->after || (p->shown && t - p->last < 0.2))
+        return;
+    p->last = t;
+    if (p->total > 0)
+        fprintf(stderr, "\r\033[Kbloom_sim: frame %ld of %ld (%.0f%%), %.1f s", done, p->total,
+                100.0 * (double)done / (double)p->total, t - p->start);
+    else
+        fprintf(stderr, "\r\033[Kbloom_sim: frame %ld, %.1f s", done, t - p->start);
+    fflush(stderr);
+    p->shown = 1;
+}
+
+/* ---- one frame -------------------------------------------------------------- */
+typedef struct {
+    const sim_opts_t *o;
+    engine_t eng;
+    stats_t st;
+    sim_out_t *out, *sbs;
+    progress_t prog;
+} run_t;
+
+static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, char *err,
+                    size_t errlen)
+{
+    const sim_opts_t *o = r->o;
+    engine_t *e = &r->eng;
+    if (engine_setup(e, o, f, err, errlen))
+        return -1;
+    const size_t n = (size_t)f->w * (size_t)f->h;
+    sim_to_engine(f, e->cfg.in_fmt, (e->cfg.flags & BLOOM_FLAG_LINEAR) != 0, e->src);
+    const ptrdiff_t ss = (ptrdiff_t)f->w * bloom_format_bpp(e->cfg.in_fmt);
+    const ptrdiff_t ds = (ptrdiff_t)f->w * bloom_format_bpp(e->cfg.out_fmt);
+    double best = 1e30;
+    for (int k = 0; k < o->repeat; k++) {
+        double t0 = now_s();
+        bloom_status_t bs = bloom_process(e->b, e->src, ss, e->dst, ds);
+        double t = now_s() - t0;
+        if (bs != BLOOM_OK)
+            return sim_errf(err, errlen, "frame %ld: engine: %s", gi, bloom_status_str(bs));
+        best = t < best ? t : best;
+    }
+    sim_from_engine(e->dst, e->cfg.out_fmt, n, e->out_codes);
+    sim_from_engine(e->src, e->cfg.in_fmt, n, e->in_codes);
+    stats_t *st = &r->st;
+    if (st->frames == (long)st->cap) {
+        size_t cap = st->cap ? 2 * st->cap : 64;
+        double *t = realloc(st->times, cap * sizeof *t);
+        if (!t)
+            return sim_errf(err, errlen, "out of memory");
+        st->times = t;
+        st->cap = cap;
+    }
+    st->times[st->frames++] = best;
+    st->pixels += (double)n;
+
+    char line[512];
+    int len = snprintf(line, sizeof line, "frame %ld", gi);
+    if (o->ninputs > 1)
+        len += snprintf(line + len, sizeof line - (size_t)len, " (%s)", name);
+    len += snprintf(line + len, sizeof line - (size_t)len, ": %dx%d, engine %.3f ms", f->w, f->h,
+                    best * 1e3);
+    if (o->compare) {
+        if (run_model(e, 0, e->fl_codes))
+            return sim_errf(err, errlen, "frame %ld: the float model failed", gi);
+        uint32_t peak = 0;
+        unsigned long long exact = 0;
+        double sum = 0;
+        for (size_t i = 0; i < 3 * n; i++) {
+            uint32_t a = e->out_codes[i], b = e->fl_codes[i], d = a > b ? a - b : b - a;
+            peak = d > peak ? d : peak;
+            exact += d == 0;
+            sum += d;
+        }
+        st->peak = peak > st->peak ? peak : st->peak;
+        st->exact += exact;
+        st->err_sum += sum;
+        st->samples += 3 * n;
+        len += snprintf(line + len, sizeof line - (size_t)len,
+                        ", vs float: peak %u LSB, mean %.5f LSB, exact %.3f%%", peak,
+                        sum / (double)(3 * n), 100.0 * (double)exact / (double)(3 * n));
+    }
+    if (o->bittrue) {
+        if (run_model(e, 1, e->bt_codes))
+            return sim_errf(err, errlen, "frame %ld: the bit-true model failed", gi);
+        unsigned long long diff = 0;
+        for (size_t i = 0; i < 3 * n; i++)
+            diff += e->out_codes[i] != e->bt_codes[i];
+        st->bt_diff += diff;
+        st->bt_samples += 3 * n;
+        snprintf(line + len, sizeof line - (size_t)len, ", bit-true: %llu differ", diff);
+    }
+    if (!o->quiet) {
+        if (r->prog.share)
+            progress_clear(&r->prog);
+        puts(line);
+        fflush(stdout);
+    }
+
+    const int linear = (e->cfg.flags & BLOOM_FLAG_LINEAR) != 0;
+    if (r->out) {
+        if (sim_out_kind(r->out) == SIM_OUT_PFM)
+            sim_codes_to_float(e->out_codes, e->out_max, n, linear, e->lin);
+        else
+            sim_codes_to_rgb8(e->out_codes, e->out_max, n, linear, e->rgb);
+        if (sim_out_write(r->out, gi, f->w, f->h, e->rgb, e->lin, err, errlen))
+            return -1;
+    }
+    if (r->sbs) {
+        /* panels: input | fixed-point | float | |fixed - float| * gain */
+        const size_t w = (size_t)f->w, row = 12 * w;
+        uint8_t *panel = e->rgb; /* n*3 scratch */
+        const uint32_t *codes[3] = {e->in_codes, e->out_codes, e->fl_codes};
+        const int *maxes[3] = {e->in_max, e->out_max, e->out_max};
+        for (int k = 0; k < 3; k++) {
+            sim_codes_to_rgb8(codes[k], maxes[k], n, linear, panel);
+            for (size_t y = 0; y < (size_t)f->h; y++)
+                memcpy(e->sbs + y * row + (size_t)k * 3 * w, panel + y * 3 * w, 3 * w);
+        }
+        for (size_t y = 0; y < (size_t)f->h; y++)
+            for (size_t i = 0; i < 3 * w; i++) {
+                uint32_t a = e->out_codes[y * 3 * w + i], b = e->fl_codes[y * 3 * w + i];
+                uint64_t d = (uint64_t)(a > b ? a - b : b - a) * (uint64_t)o->diff_gain;
+                e->sbs[y * row + 9 * w + i] = (uint8_t)(d > 255 ? 255 : d);
+            }
+        if (sim_out_write(r->sbs, gi, 4 * f->w, f->h, e->sbs, NULL, err, errlen))
+            return -1;
+    }
+    return 0;
+}
+
+static void print_summary(const run_t *r)
+{
+    const stats_t *st = &r->st;
+    if (!st->frames)
+        return;
+    double *t = malloc((size_t)st->frames * sizeof *t), sum = 0, med;
+    if (!t)
+        return;
+    memcpy(t, st->times, (size_t)st->frames * sizeof *t);
+    qsort(t, (size_t)st->frames, sizeof *t, cmp_double);
+    for (long i = 0; i < st->frames; i++)
+        sum += t[i];
+    med = st->frames % 2 ? t[st->frames / 2] : (t[st->frames / 2 - 1] + t[st->frames / 2]) / 2;
+    printf("summary: %ld frame%s, engine per frame: mean %.3f ms, median %.3f ms, min %.3f ms, "
+           "max %.3f ms (%.1f Mpixel/s)\n",
+           st->frames, st->frames == 1 ? "" : "s", 1e3 * sum / (double)st->frames, 1e3 * med,
+           1e3 * t[0], 1e3 * t[st->frames - 1], sum > 0 ? st->pixels / sum / 1e6 : 0.0);
+    free(t);
+    if (r->o->compare && st->samples)
+        printf("summary vs float model: peak %u LSB, mean %.5f LSB, exact %.3f%% of %llu samples\n",
+               st->peak, st->err_sum / (double)st->samples,
+               100.0 * (double)st->exact / (double)st->samples, st->samples);
+    if (r->o->bittrue)
+        printf("summary vs bit-true model: %llu of %llu samples differ\n", st->bt_diff,
+               st->bt_samples);
+}
+
+int main(int argc, char **argv)
+{
+    sim_opts_t o;
+    int pr = sim_opts_parse(argc, argv, &o);
+    if (pr) {
+        free(o.inputs);
+        return pr > 0 ? 0 : 2;
+    }
+    char err[SIM_ERRLEN];
+    int rc = 1;
+    run_t r;
+    memset(&r, 0, sizeof r);
+    r.o = &o;
+    sim_frame_t frame;
+    memset(&frame, 0, sizeof frame);
+    sim_source_t **src = calloc((size_t)o.ninputs, sizeof *src);
+    long total = 0;
+    if (!src) {
+        fputs("bloom_sim: out of memory\n", stderr);
+        goto done;
+    }
+    /* every input is opened (and Y4M/raw checked whole) before any output */
+    for (int i = 0; i < o.ninputs; i++) {
+        if (sim_source_open(&src[i], o.inputs[i], &o.in, err, sizeof err))
+            goto fail;
+        long nf = sim_source_frames(src[i]);
+        total = total < 0 || nf < 0 ? -1 : total + nf;
+    }
+    if (o.max_frames && (total < 0 || total > o.max_frames))
+        total = o.max_frames;
+    int fn = o.fps_num, fd = o.fps_den;
+    for (int i = 0; i < o.ninputs; i++)
+        if (sim_source_fps(src[i], &fn, &fd) == 0)
+            break;
+    if (o.out_pattern && sim_out_open(&r.out, o.out_pattern, fn, fd, err, sizeof err))
+        goto usage;
+    if (o.sbs_pattern && sim_out_open(&r.sbs, o.sbs_pattern, fn, fd, err, sizeof err))
+        goto usage;
+    if (r.sbs && sim_out_kind(r.sbs) == SIM_OUT_PFM) {
+        sim_errf(err, sizeof err, "--side-by-side writes .ppm, .png or .y4m (display images)");
+        goto usage;
+    }
+    for (int k = 0; k < 2; k++) {
+        sim_out_t *out = k ? r.sbs : r.out;
+        if (out && !sim_out_has_number(out) && total > 1) {
+            sim_errf(err, sizeof err,
+                     "output '%s' names one file but the input has %ld frames: add a frame "
+                     "number, e.g. out_%%04d.png",
+                     sim_out_pattern(out), total);
+            goto usage;
+        }
+    }
+    r.prog.enabled = isatty(STDERR_FILENO);
+    r.prog.share = isatty(STDOUT_FILENO);
+    r.prog.start = now_s();
+    r.prog.after = o.progress_after;
+    r.prog.total = total;
+    long gi = 0;
+    for (int i = 0; i < o.ninputs && (!o.max_frames || gi < o.max_frames); i++) {
+        for (int announced = 0;;) {
+            if (o.max_frames && gi >= o.max_frames)
+                break;
+            int got = sim_source_read(src[i], &frame, err, sizeof err);
+            if (got < 0) {
+                if (o.ninputs > 1) {
+                    size_t l = strlen(err);
+                    snprintf(err + l, sizeof err - l, " (frame %ld of the sequence)", gi);
+                }
+                goto fail;
+            }
+            if (got == 0)
+                break;
+            /* one line per input; with -q none for each image of a list */
+            if (!announced && !(o.quiet && o.ninputs > 1)) {
+                if (r.prog.share)
+                    progress_clear(&r.prog);
+                printf("input: %s: %s\n", strcmp(o.inputs[i], "-") ? o.inputs[i] : "(stdin)",
+                       sim_source_desc(src[i]));
+            }
+            announced = 1;
+            if (do_frame(&r, &frame, gi, o.inputs[i], err, sizeof err))
+                goto fail;
+            gi++;
+            progress_update(&r.prog, gi);
+        }
+    }
+    progress_clear(&r.prog);
+    for (int k = 0; k < 2; k++) {
+        sim_out_t **out = k ? &r.sbs : &r.out;
+        if (!*out)
+            continue;
+        char pat[1024];
+        long cnt = sim_out_count(*out);
+        snprintf(pat, sizeof pat, "%s", sim_out_pattern(*out));
+        int fr = sim_out_finish(*out, err, sizeof err);
+        *out = NULL;
+        if (fr)
+            goto fail;
+        printf("wrote %s: %ld frame%s\n", pat, cnt, cnt == 1 ? "" : "s");
+    }
+    print_summary(&r);
+    rc = 0;
+    if (o.bittrue && r.st.bt_diff) {
+        fprintf(stderr, "bloom_sim: the engine differs from the bit-true model in %llu samples\n",
+                r.st.bt_diff);
+        rc = 1;
+    }
+    goto done;
+usage:
+    rc = 2;
+    /* fall through */
+fail:
+    progress_clear(&r.prog);
+    if (rc != 2)
+        rc = 1;
+    fflush(stdout);
+    fprintf(stderr, "bloom_sim: %s\n", err);
+done:
+    sim_out_abort(r.out);
+    sim_out_abort(r.sbs);
+    for (int i = 0; src && i < o.ninputs; i++)
+        sim_source_close(src[i]);
+    free(src);
+    free(o.inputs);
+    sim_frame_free(&frame);
+    engine_free(&r.eng);
+    free(r.st.times);
+    return rc;
+}

@@ -1,0 +1,277 @@
+/* bloom_sim pixel rules: decoded images to frames, frames to engine formats,
+ * engine output to display codes, BT.601 Y'CbCr. The rules are documented in
+ * sim/docs/simulator.md; every integer rounding is round half up. */
+#include "sim.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "bloom_model.h"
+
+int sim_errf(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (err && errlen) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+int sim_frame_alloc(sim_frame_t *f, int w, int h)
+{
+    size_t n = (size_t)w * (size_t)h * 3u;
+    if (w < 1 || h < 1)
+        return -1;
+    if (f->px && (size_t)f->w * (size_t)f->h * 3u >= n) {
+        f->w = w;
+        f->h = h;
+        memset(f->px, 0, n * sizeof *f->px);
+        return 0;
+    }
+    uint32_t *px = calloc(n, sizeof *px);
+    if (!px)
+        return -1;
+    free(f->px);
+    f->px = px;
+    f->w = w;
+    f->h = h;
+    return 0;
+}
+
+void sim_frame_free(sim_frame_t *f)
+{
+    if (f) {
+        free(f->px);
+        memset(f, 0, sizeof *f);
+    }
+}
+
+/* ---- one sample between ranges ---------------------------------------- */
+
+static uint32_t round_unit(double v, unsigned n) /* v in [0, 1] -> round(v * n) */
+{
+    return (uint32_t)floor(v * (double)n + 0.5);
+}
+
+/* c of range m (0 = Q16.16) to range n (0 = Q16.16). */
+static uint32_t convert(uint32_t c, unsigned m, unsigned n, int linear)
+{
+    if (m == n)
+        return c;
+    if (m && n) /* code to code: round half up of c * n / m */
+        return (uint32_t)(((uint64_t)c * n + m / 2u) / m);
+    if (m) /* code to linear Q16.16: what the engine's decoder computes */
+        return linear ? (uint32_t)(((uint64_t)c * 65536u + m / 2u) / m)
+                      : round_unit(bloom_srgb_to_linear((double)c / m), 65536u);
+    /* linear Q16.16 to code: the engine's encoder rule, clipped at 1.0 */
+    uint32_t v = c > 65536u ? 65536u : c;
+    return linear ? (uint32_t)(((uint64_t)v * n + 32768u) >> 16)
+                  : round_unit(bloom_linear_to_srgb(v / 65536.0), n);
+}
+
+int sim_frame_from_img(const img_t *im, int decode16_srgb, sim_frame_t *f)
+{
+    if (sim_frame_alloc(f, im->width, im->height))
+        return -1;
+    const size_t n = (size_t)im->width * (size_t)im->height;
+    const int ch = im->channels;
+    const unsigned m = (unsigned)im->maxval;
+    const int wide = !im->f32 && m > 255u;
+    for (int c = 0; c < 3; c++)
+        f->max[c] = im->f32 || wide ? 0 : 255;
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            size_t s = i * (size_t)ch + (size_t)(ch == 3 ? c : 0);
+            uint32_t v;
+            if (im->f32)
+                v = img_float_to_q16(im->f32[s]);
+            else if (!wide)
+                v = convert(im->u16[s], m, 255u, 0);
+            else if (decode16_srgb)
+                v = convert(im->u16[s], m, 0u, 0);
+            else
+                v = convert(im->u16[s], m, 0u, 1);
+            f->px[3 * i + (size_t)c] = v;
+        }
+    return 0;
+}
+
+/* ---- BT.601 Y'CbCr --------------------------------------------------------
+ * Coefficients in Q16 (round(x * 65536)): limited range scales Y' by
+ * 255/219 and chroma by 255/224; Kr = 0.299, Kb = 0.114. */
+
+static uint32_t clamp_q16(int32_t t) /* Q16 value plus 1/2 -> 0..255 */
+{
+    if (t < 0)
+        return 0;
+    t >>= 16;
+    return t > 255 ? 255u : (uint32_t)t;
+}
+
+void sim_ycbcr_to_rgb(int y, int cb, int cr, int full, uint32_t rgb[3])
+{
+    int32_t yy, u = cb - 128, v = cr - 128;
+    if (full) {
+        yy = y * 65536 + 32768;
+        rgb[0] = clamp_q16(yy + 91881 * v);
+        rgb[1] = clamp_q16(yy - 22553 * u - 46802 * v);
+        rgb[2] = clamp_q16(yy + 116130 * u);
+    } else {
+        yy = 76309 * (y - 16) + 32768;
+        rgb[0] = clamp_q16(yy + 104597 * v);
+        rgb[1] = clamp_q16(yy - 25675 * u - 53279 * v);
+        rgb[2] = clamp_q16(yy + 132201 * u);
+    }
+}
+
+void sim_rgb8_to_yuv420(const uint8_t *rgb, int w, int h, uint8_t *out)
+{
+    const int cw = (w + 1) / 2, chh = (h + 1) / 2;
+    uint8_t *yp = out, *up = out + (size_t)w * (size_t)h, *vp = up + (size_t)cw * (size_t)chh;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const uint8_t *p = rgb + 3 * ((size_t)y * (size_t)w + (size_t)x);
+            int32_t t = 16829 * p[0] + 33039 * p[1] + 6416 * p[2] + (16 << 16) + 32768;
+            yp[(size_t)y * (size_t)w + (size_t)x] = (uint8_t)(t >> 16);
+        }
+    for (int by = 0; by < chh; by++)
+        for (int bx = 0; bx < cw; bx++) {
+            int32_t su = 0, sv = 0, cnt = 0;
+            for (int y = 2 * by; y < 2 * by + 2 && y < h; y++)
+                for (int x = 2 * bx; x < 2 * bx + 2 && x < w; x++) {
+                    const uint8_t *p = rgb + 3 * ((size_t)y * (size_t)w + (size_t)x);
+                    su += -9714 * p[0] - 19070 * p[1] + 28784 * p[2];
+                    sv += 28784 * p[0] - 24103 * p[1] - 4681 * p[2];
+                    cnt++;
+                }
+            /* 128 + round(sum / (cnt * 65536)); the biased sums are positive */
+            const int32_t one = cnt * 65536;
+            up[(size_t)by * (size_t)cw + (size_t)bx] = (uint8_t)((su + 128 * one + one / 2) / one);
+            vp[(size_t)by * (size_t)cw + (size_t)bx] = (uint8_t)((sv + 128 * one + one / 2) / one);
+        }
+}
+
+/* ---- engine formats ----------------------------------------------------- */
+
+static const struct {
+    const char *name;
+    bloom_format_t fmt;
+} fmt_names[] = {
+    {"rgb888", BLOOM_FMT_RGB888},     {"xrgb8888", BLOOM_FMT_XRGB8888},
+    {"rgb565", BLOOM_FMT_RGB565},     {"rgbq16", BLOOM_FMT_RGBQ16},
+};
+
+int sim_fmt_parse(const char *s, bloom_format_t *fmt)
+{
+    for (size_t i = 0; i < sizeof fmt_names / sizeof fmt_names[0]; i++)
+        if (!strcasecmp(s, fmt_names[i].name)) {
+            *fmt = fmt_names[i].fmt;
+            return 0;
+        }
+    return -1;
+}
+
+const char *sim_fmt_name(bloom_format_t fmt)
+{
+    for (size_t i = 0; i < sizeof fmt_names / sizeof fmt_names[0]; i++)
+        if (fmt_names[i].fmt == fmt)
+            return fmt_names[i].name;
+    return "?";
+}
+
+void sim_fmt_max(bloom_format_t fmt, int max[3])
+{
+    max[0] = max[1] = max[2] = 255;
+    if (fmt == BLOOM_FMT_RGB565) {
+        max[0] = max[2] = 31;
+        max[1] = 63;
+    } else if (fmt == BLOOM_FMT_RGBQ16) {
+        max[0] = max[1] = max[2] = 0;
+    }
+}
+
+void sim_to_engine(const sim_frame_t *f, bloom_format_t fmt, int linear, uint8_t *buf)
+{
+    int tmax[3];
+    sim_fmt_max(fmt, tmax);
+    const size_t n = (size_t)f->w * (size_t)f->h;
+    for (size_t i = 0; i < n; i++) {
+        uint32_t v[3];
+        for (int c = 0; c < 3; c++)
+            v[c] = convert(f->px[3 * i + (size_t)c], (unsigned)f->max[c], (unsigned)tmax[c], linear);
+        switch (fmt) {
+        case BLOOM_FMT_RGB888:
+            for (int c = 0; c < 3; c++)
+                buf[3 * i + (size_t)c] = (uint8_t)v[c];
+            break;
+        case BLOOM_FMT_XRGB8888:
+            buf[4 * i] = (uint8_t)v[2];
+            buf[4 * i + 1] = (uint8_t)v[1];
+            buf[4 * i + 2] = (uint8_t)v[0];
+            buf[4 * i + 3] = 0xFF;
+            break;
+        case BLOOM_FMT_RGB565: {
+            uint32_t wd = v[0] << 11 | v[1] << 5 | v[2];
+            buf[2 * i] = (uint8_t)wd;
+            buf[2 * i + 1] = (uint8_t)(wd >> 8);
+            break;
+        }
+        case BLOOM_FMT_RGBQ16:
+            memcpy(buf + 12 * i, v, 12);
+            break;
+        }
+    }
+}
+
+void sim_from_engine(const uint8_t *buf, bloom_format_t fmt, size_t npix, uint32_t *codes)
+{
+    for (size_t i = 0; i < npix; i++) {
+        uint32_t *o = codes + 3 * i;
+        switch (fmt) {
+        case BLOOM_FMT_RGB888:
+            o[0] = buf[3 * i];
+            o[1] = buf[3 * i + 1];
+            o[2] = buf[3 * i + 2];
+            break;
+        case BLOOM_FMT_XRGB8888:
+            o[0] = buf[4 * i + 2];
+            o[1] = buf[4 * i + 1];
+            o[2] = buf[4 * i];
+            break;
+        case BLOOM_FMT_RGB565: {
+            uint32_t wd = (uint32_t)buf[2 * i] | (uint32_t)buf[2 * i + 1] << 8;
+            o[0] = wd >> 11;
+            o[1] = (wd >> 5) & 63u;
+            o[2] = wd & 31u;
+            break;
+        }
+        case BLOOM_FMT_RGBQ16:
+            memcpy(o, buf + 12 * i, 12);
+            break;
+        }
+    }
+}
+
+void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int linear,
+                       uint8_t *rgb)
+{
+    for (size_t i = 0; i < 3 * npix; i++)
+        rgb[i] = (uint8_t)convert(codes[i], (unsigned)max[i % 3], 255u, linear);
+}
+
+void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear,
+                        float *out)
+{
+    for (size_t i = 0; i < 3 * npix; i++) {
+        const int m = max[i % 3];
+        double v = m == 0 ? codes[i] / 65536.0
+                   : linear ? (double)codes[i] / m
+                            : bloom_srgb_to_linear((double)codes[i] / m);
+        out[i] = (float)v;
+    }
+}
