@@ -27,9 +27,9 @@ SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # Make targets `make test` runs after the test binaries, one pass/fail each;
 # a target that prints a line starting "skipped:" counts as skipped.
-CHECKS := freestanding clang-build check-tables test-small test-precision
+CHECKS := freestanding clang-build check-tables test-small test-precision test-clang-san
 
-.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision
+.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
@@ -75,6 +75,16 @@ freestanding: | $(B)/arm
 	bad=$$(echo "$$undef" | grep -vx 'memcpy\|memset' | grep .); \
 	if [ -n "$$bad" ]; then echo "freestanding: the core needs more than memcpy/memset:" $$bad; exit 1; fi; \
 	echo "freestanding: Cortex-M4 core references only:" $$undef
+
+# clang's sanitizers check more than gcc's (an offset on a null pointer, ...).
+$(B)/clangsan/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
+	@mkdir -p $(B)/clangsan
+	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
+test-clang-san: $(B)/clangsan/test_core $(B)/clangsan/test_extreme
+	@echo "clang -fsanitize=address,undefined:"
+	@for t in test_core test_extreme; do \
+	  BLOOM_DATA_DIR=tests/data $(B)/clangsan/$$t > $(B)/clangsan/$$t.log 2>&1; st=$$?; \
+	  tail -n 1 $(B)/clangsan/$$t.log; [ $$st -eq 0 ] || { tail -n 20 $(B)/clangsan/$$t.log; exit 1; }; done
 
 # The size-optimized core (BLOOM_SMALL) must compute the same bits.
 $(B)/small/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
