@@ -18,16 +18,18 @@ count() { # name, exit status, log file
     fi
     [ "$2" -ne 0 ] && [ "$f" -eq 0 ] && f=1
     pass=$((pass + p)); fail=$((fail + f))
-    printf '%-22s %s\n' "$1" "${line:-exit $2}"
+    printf '%-22s %-28s %4ss\n' "$1" "${line:-exit $2}" "$(( $(date +%s) - t0 ))"
     # the figures a test prints (and, on failure, what failed)
     grep -vE '^[0-9]+ passed, [0-9]+ failed' "$3" | sed 's/^/    /' | tail -n 40
 }
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
+    t0=$(date +%s)
     "$bindir/$1" >"$log" 2>&1; count "$1" $? "$log"
     shift
 done
 [ "$1" = "--" ] && shift
 for c in "$@"; do
+    t0=$(date +%s)
     if make -s "$c" >"$log" 2>&1; then
         if grep -q '^skipped:' "$log"; then
             skip=$((skip + 1))
