@@ -38,6 +38,25 @@ static void *xcalloc(size_t n)
     return p;
 }
 
+/* mkdir -p: every missing directory of path. */
+static int mkdir_p(const char *path)
+{
+    char buf[1024];
+    if (strlen(path) >= sizeof buf) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(buf, path);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) && errno != EEXIST)
+                return -1;
+            *p = '/';
+        }
+    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
 static int parse_q16(const char *s, double lo, double hi, uint32_t *out)
 {
     char *end;
@@ -122,7 +141,7 @@ int main(int argc, char **argv)
     char err[512];
     if (img_read(in, &im, err, sizeof err))
         die(err);
-    if (mkdir(outdir, 0777) && errno != EEXIST) {
+    if (mkdir_p(outdir)) {
         fprintf(stderr, "bloom_demo: %s: %s\n", outdir, strerror(errno));
         return 1;
     }
