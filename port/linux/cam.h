@@ -1,0 +1,146 @@
+/* bloom_cam: V4L2 camera -> bloom engine -> Linux framebuffer, with optional
+ * GPIO frame-sync output and mode button (libgpiod v1).
+ *
+ * Modules: cam_opts.c (command line), cam_conv.c (row conversion, pure
+ * framebuffer logic), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
+ * main.c (frame loop, signals, statistics, recording). Everything is
+ * allocated before the first frame; the frame loop allocates nothing. */
+#ifndef BLOOM_CAM_H
+#define BLOOM_CAM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <linux/fb.h>
+
+#include "bloom.h"
+
+#define CAM_PROG "bloom_cam"
+#define CAM_MAX_BUFFERS 16
+
+/* ---- options (cam_opts.c) ------------------------------------------------ */
+enum cam_pixfmt { CAM_FMT_YUYV = 1, CAM_FMT_RGB24, CAM_FMT_GREY };
+enum cam_mode { CAM_MODE_BLOOM = 0, CAM_MODE_OFF, CAM_MODE_BLOOM_ONLY, CAM_MODE_COUNT };
+
+typedef struct {
+    char chip[64];  /* "gpiochip0", "0", or a chip label */
+    char line[64];  /* offset ("17") or line name ("GPIO17") */
+    int set;
+} cam_gpio_spec_t;
+
+typedef struct {
+    const char *device;       /* --device, default /dev/video0 */
+    const char *fb;           /* --fb, default /dev/fb0; "none": off-screen */
+    int width, height;        /* --size WxH, default 640x480 */
+    enum cam_pixfmt format;   /* --format, default yuyv */
+    int levels;               /* bloom parameters, bloom_config_default's */
+    uint32_t threshold, knee, intensity; /* Q16.16 */
+    long frames;              /* --frames N, 0 = until a signal */
+    int buffers;              /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
+    int timeout_ms;           /* --timeout MS for poll (default 2000) */
+    enum cam_mode mode;       /* --mode bloom|off|bloom-only */
+    int stats;                /* --stats */
+    int quiet;                /* -q */
+    const char *record;       /* --record FILE */
+    const char *dump_fb;      /* --dump-fb FILE: the last frame shown, as drawn */
+    cam_gpio_spec_t gpio_frame, gpio_button;
+} cam_opts_t;
+
+/* Parse argv into o (defaults first). Returns 0 to run, 1 when help was
+ * printed, -1 on an error (message written to err, at most errlen bytes). */
+int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errlen);
+void cam_usage(void *stream);
+const char *cam_format_name(enum cam_pixfmt f);
+const char *cam_mode_name(enum cam_mode m);
+
+/* ---- pure helpers (cam_conv.c) ------------------------------------------- */
+/* One row of YUYV (BT.601 limited range, the simulator's integer rule) to
+ * RGB888; width even. */
+void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width);
+/* One row of GREY (full range) to RGB888. */
+void cam_grey_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width);
+/* BT.601 limited-range Y'CbCr to R'G'B' codes (used by the row function). */
+void cam_ycbcr_to_rgb(int y, int cb, int cr, uint8_t rgb[3]);
+
+/* What the framebuffer's layout is, from its var screeninfo fields. */
+typedef struct {
+    uint32_t bits_per_pixel, grayscale, nonstd;
+    uint32_t red_off, red_len, green_off, green_len, blue_off, blue_len;
+} cam_fb_layout_t;
+/* The engine format that writes this layout, or 0 with why[] naming the
+ * layout that is refused ("24 bpp", "16 bpp BGR565", ...). */
+bloom_format_t cam_fb_format(const cam_fb_layout_t *l, char *why, size_t whylen);
+
+/* Placement of a frame of fw x fh on a screen of sw x sh: centred when it
+ * is smaller, cropped around the centre when it is larger (per axis). */
+typedef struct {
+    int dst_x, dst_y; /* where the first shown pixel goes on the screen */
+    int src_x, src_y; /* first shown pixel of the frame */
+    int w, h;         /* shown size */
+} cam_place_t;
+void cam_place(int fw, int fh, int sw, int sh, cam_place_t *p);
+
+/* ---- capture (v4l2.c) ------------------------------------------------------ */
+typedef struct {
+    void *start;
+    size_t length;
+} cam_vbuf_t;
+
+typedef struct {
+    int fd;
+    int width, height;
+    uint32_t pixelformat, bytesperline, sizeimage;
+    cam_vbuf_t bufs[CAM_MAX_BUFFERS];
+    int nbufs, streaming;
+    char card[32], driver[16];
+} cam_v4l2_t;
+
+typedef struct {
+    int index;
+    uint32_t sequence, bytesused;
+    const uint8_t *data;
+} cam_frame_t;
+
+/* Each returns 0, or -1 after printing "bloom_cam: CALL: reason". */
+int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int nbufs);
+int cam_v4l2_start(cam_v4l2_t *c);
+/* Wait for and dequeue one frame: 0 got one, 1 interrupted by a signal
+ * (nothing dequeued), -1 fault (message printed). */
+int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready,
+                     cam_frame_t *f);
+int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
+void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
+int cam_xioctl(int fd, unsigned long req, void *arg);
+
+/* ---- framebuffer (fbdev.c) ------------------------------------------------- */
+typedef struct {
+    int fd;
+    uint8_t *mem;
+    size_t mem_len;
+    int xres, yres, line_length, bpp; /* bytes per pixel */
+    bloom_format_t format;
+    int pages, page;              /* 2 when double-buffering with FBIOPAN_DISPLAY */
+    unsigned xoffset, yoffset;    /* of the page on show */
+    int changed_var;              /* var screeninfo changed, restore on close */
+    struct fb_var_screeninfo saved_var; /* as found */
+    char id[17];
+} cam_fb_t;
+
+/* path "none": an off-screen XRGB8888 surface of w x h (for measuring). */
+int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h);
+uint8_t *cam_fb_draw_page(cam_fb_t *fb); /* first byte of the page to draw */
+int cam_fb_show(cam_fb_t *fb);          /* pan to the page just drawn */
+void cam_fb_close(cam_fb_t *fb);        /* restore pan and var, unmap, close */
+
+/* ---- GPIO (gpio.c) ------------------------------------------------------- */
+typedef struct cam_gpio cam_gpio_t;
+extern const int cam_gpio_available; /* 0 when built without libgpiod */
+/* Request the lines (either spec may be unset): 0, or -1 after a message. */
+int cam_gpio_open(cam_gpio_t **g, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button);
+void cam_gpio_frame(cam_gpio_t *g, int high);
+int cam_gpio_button_fd(cam_gpio_t *g); /* -1 without a button */
+/* Read the pending edge events; returns how many presses (falling edges). */
+int cam_gpio_button_presses(cam_gpio_t *g);
+void cam_gpio_close(cam_gpio_t *g);
+
+#endif

@@ -1,0 +1,103 @@
+/* bloom_cam: the pure parts — camera rows to the engine's RGB888 input, the
+ * framebuffer layout check and the placement of a frame on the screen.
+ *
+ * YUYV follows the simulator's rule (sim/docs/simulator.md, "Y'CbCr ->
+ * R'G'B' in integers"): BT.601 limited range, coefficients round(x * 65536),
+ * each channel clamp((t + 32768) >> 16, 0, 255). GREY is full range,
+ * R = G = B = Y. So a frame recorded with --record and run through
+ * bloom_sim gives the same engine input, hence the same output. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cam.h"
+
+static uint8_t clamp8(int32_t t) /* t already holds the + 1/2 */
+{
+    if (t < 0)
+        return 0;
+    t >>= 16;
+    return (uint8_t)(t > 255 ? 255 : t);
+}
+
+void cam_ycbcr_to_rgb(int y, int cb, int cr, uint8_t rgb[3])
+{
+    const int32_t u = cb - 128, v = cr - 128;
+    const int32_t yy = 76309 * (y - 16) + 32768;
+    rgb[0] = clamp8(yy + 104597 * v);
+    rgb[1] = clamp8(yy - 25675 * u - 53279 * v);
+    rgb[2] = clamp8(yy + 132201 * u);
+}
+
+void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
+{
+    for (int x = 0; x + 1 < width; x += 2, src += 4, dst += 6) {
+        cam_ycbcr_to_rgb(src[0], src[1], src[3], dst);
+        cam_ycbcr_to_rgb(src[2], src[1], src[3], dst + 3);
+    }
+}
+
+void cam_grey_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
+{
+    for (int x = 0; x < width; x++, dst += 3)
+        dst[0] = dst[1] = dst[2] = src[x];
+}
+
+bloom_format_t cam_fb_format(const cam_fb_layout_t *l, char *why, size_t whylen)
+{
+    if (l->nonstd) {
+        snprintf(why, whylen, "non-standard pixel format %u", (unsigned)l->nonstd);
+        return (bloom_format_t)0;
+    }
+    if (l->grayscale) {
+        snprintf(why, whylen, "%u bpp greyscale", (unsigned)l->bits_per_pixel);
+        return (bloom_format_t)0;
+    }
+    if (l->bits_per_pixel == 16) {
+        if (l->red_off == 11 && l->red_len == 5 && l->green_off == 5 && l->green_len == 6 &&
+            l->blue_off == 0 && l->blue_len == 5)
+            return BLOOM_FMT_RGB565;
+        if (l->blue_off == 11 && l->blue_len == 5 && l->green_off == 5 && l->green_len == 6 &&
+            l->red_off == 0 && l->red_len == 5)
+            snprintf(why, whylen, "16 bpp BGR565");
+        else if (l->red_len == 5 && l->green_len == 5 && l->blue_len == 5)
+            snprintf(why, whylen, "16 bpp RGB555");
+        else
+            snprintf(why, whylen, "16 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off,
+                     (unsigned)l->red_len, (unsigned)l->green_off, (unsigned)l->green_len,
+                     (unsigned)l->blue_off, (unsigned)l->blue_len);
+        return (bloom_format_t)0;
+    }
+    if (l->bits_per_pixel == 32) {
+        if (l->red_off == 16 && l->red_len == 8 && l->green_off == 8 && l->green_len == 8 &&
+            l->blue_off == 0 && l->blue_len == 8)
+            return BLOOM_FMT_XRGB8888;
+        if (l->blue_off == 16 && l->red_off == 0 && l->red_len == 8)
+            snprintf(why, whylen, "32 bpp XBGR8888");
+        else
+            snprintf(why, whylen, "32 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off,
+                     (unsigned)l->red_len, (unsigned)l->green_off, (unsigned)l->green_len,
+                     (unsigned)l->blue_off, (unsigned)l->blue_len);
+        return (bloom_format_t)0;
+    }
+    snprintf(why, whylen, "%u bpp", (unsigned)l->bits_per_pixel);
+    return (bloom_format_t)0;
+}
+
+static void place_axis(int f, int s, int *dst, int *src, int *n)
+{
+    if (f <= s) { /* centre */
+        *dst = (s - f) / 2;
+        *src = 0;
+        *n = f;
+    } else { /* crop around the centre */
+        *dst = 0;
+        *src = (f - s) / 2;
+        *n = s;
+    }
+}
+
+void cam_place(int fw, int fh, int sw, int sh, cam_place_t *p)
+{
+    place_axis(fw, sw, &p->dst_x, &p->src_x, &p->w);
+    place_axis(fh, sh, &p->dst_y, &p->src_y, &p->h);
+}

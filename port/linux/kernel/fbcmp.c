@@ -1,0 +1,65 @@
+/* Host side of make test-linux: compare a framebuffer dump written by
+ * bloom_cam --dump-fb (W x H pixels, rows packed, RGB565 or XRGB8888) with
+ * the simulator's PPM of the same frame (bloom_sim -o, 8-bit: RGB565 codes
+ * written as round(c * 255 / max), an injective map, so equal PPM bytes mean
+ * equal framebuffer bits). Prints "identical" or the first difference. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static unsigned expand(unsigned c, unsigned max)
+{
+    return (c * 255u + max / 2u) / max;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 5) {
+        fprintf(stderr, "usage: fbcmp FBDUMP rgb565|xrgb8888 W SIM.ppm\n");
+        return 2;
+    }
+    const int is565 = !strcmp(argv[2], "rgb565"), bpp = is565 ? 2 : 4;
+    FILE *a = fopen(argv[1], "rb"), *b = fopen(argv[4], "rb");
+    int w, h, maxv;
+    if (!a || !b || fscanf(b, "P6 %d %d %d", &w, &h, &maxv) != 3 || maxv != 255 ||
+        fgetc(b) == EOF || w != atoi(argv[3])) {
+        fprintf(stderr, "fbcmp: cannot read %s or %s (or widths differ)\n", argv[1], argv[4]);
+        return 2;
+    }
+    long diffs = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            unsigned char p[4], q[3];
+            unsigned r, g, bl;
+            if (fread(p, 1, (size_t)bpp, a) != (size_t)bpp || fread(q, 1, 3, b) != 3) {
+                fprintf(stderr, "fbcmp: %s is short at pixel %d,%d\n", argv[1], x, y);
+                return 1;
+            }
+            if (is565) {
+                unsigned v = p[0] | (unsigned)p[1] << 8;
+                r = expand(v >> 11, 31);
+                g = expand((v >> 5) & 63, 63);
+                bl = expand(v & 31, 31);
+            } else {
+                r = p[2];
+                g = p[1];
+                bl = p[0];
+            }
+            if (r != q[0] || g != q[1] || bl != q[2]) {
+                if (!diffs)
+                    fprintf(stderr, "fbcmp: first difference at %d,%d: fb %u,%u,%u sim %u,%u,%u\n",
+                            x, y, r, g, bl, q[0], q[1], q[2]);
+                diffs++;
+            }
+        }
+    if (fgetc(a) != EOF) {
+        fprintf(stderr, "fbcmp: %s is longer than %dx%d\n", argv[1], w, h);
+        return 1;
+    }
+    if (diffs) {
+        fprintf(stderr, "fbcmp: %ld pixels differ\n", diffs);
+        return 1;
+    }
+    printf("identical (%dx%d)\n", w, h);
+    return 0;
+}

@@ -1,0 +1,66 @@
+# Linux SBC port: build/bloom_cam (V4L2 camera -> bloom -> framebuffer, GPIO
+# through libgpiod v1). Included by the top Makefile.
+#   make bloom_cam          build/bloom_cam (with GPIO when libgpiod 1.x is installed)
+#   make bloom_cam_static   build/linux/bloom_cam.static (for an initramfs or a board)
+#   make test-linux-host    pure parts, no device needed (a CHECKS target of make test)
+#   make test-linux         against the kernel's own vivid/vfb drivers under
+#                           qemu-system-x86_64 (port/linux/kernel/run.sh)
+#
+# Debian packages: libgpiod-dev (optional: without it --gpio-* are refused);
+# for test-linux also qemu-system-x86, busybox-static and the kernel package
+# that port/linux/kernel/run.sh downloads into build/linux/kernel.
+
+CAM_DIR := port/linux
+CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
+           $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c
+CAM_HDR := $(CAM_DIR)/cam.h
+CAM_CPPFLAGS := $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L
+# libgpiod: the v1 API (1.x) only; v2 or none compiles the GPIO module out.
+CAM_GPIOD_VER := $(shell pkg-config --modversion libgpiod 2>/dev/null)
+ifneq ($(filter 1.%,$(CAM_GPIOD_VER)),)
+CAM_GPIO_CFLAGS := $(shell pkg-config --cflags libgpiod 2>/dev/null)
+CAM_GPIO_LIBS := $(or $(shell pkg-config --libs libgpiod 2>/dev/null),-lgpiod)
+else
+CAM_GPIO_CFLAGS := -DCAM_NO_GPIOD
+CAM_GPIO_LIBS :=
+endif
+
+CHECKS += test-linux-host
+.PHONY: bloom_cam bloom_cam_static test-linux-host test-linux linux-clang
+
+bloom_cam: $(B)/bloom_cam
+bloom_cam_static: $(B)/linux/bloom_cam.static
+
+$(B)/bloom_cam: $(CAM_SRC) $(CAM_HDR) $(B)/libbloom.a
+	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC) $(B)/libbloom.a \
+	  $(CAM_GPIO_LIBS) -o $@
+
+# Static, for the test initramfs (and boards without the shared libraries).
+$(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O2 -static $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC) $(CORE_SRC) \
+	  $(CAM_GPIO_LIBS) -o $@
+
+# Host tests of the pure parts, sanitized, against the simulator's own
+# Y'CbCr rule (sim/sim_convert.c) and a double reference. The GPIO module is
+# built out here so the refusal of --gpio-* is what is tested.
+CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c
+$(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) sim/sim_convert.c sim/sim.h \
+                          $(SIM_SRC) $(SIM_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_TEST_SRC) \
+	  sim/sim_convert.c $(SIM_SRC) $(CORE_SRC) -lm -o $@
+
+# clang, warnings as errors, both GPIO variants (a compile check).
+linux-clang:
+	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC)
+	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC)
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(CAM_DIR)/test_host.c
+
+test-linux-host: $(B)/linux/test_cam_host $(B)/bloom_cam
+	@$(MAKE) --no-print-directory linux-clang >/dev/null
+	@$(B)/linux/test_cam_host
+	@sh $(CAM_DIR)/test_cli.sh $(B)/bloom_cam
+
+test-linux: $(B)/linux/bloom_cam.static $(B)/bloom_sim
+	@B='$(B)' sh $(CAM_DIR)/kernel/run.sh

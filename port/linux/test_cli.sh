@@ -1,0 +1,30 @@
+#!/bin/sh
+# bloom_cam's command line and its messages when there is no device to use
+# (host, no kernel drivers). Usage: test_cli.sh path/to/bloom_cam
+cam=$1
+pass=0; fail=0
+out=$(mktemp); trap 'rm -f "$out"' EXIT
+expect() { # want_status want_text args...
+    want=$1; text=$2; shift 2
+    "$cam" "$@" >"$out" 2>&1; st=$?
+    if [ "$st" -eq "$want" ] && grep -qF -- "$text" "$out"; then
+        pass=$((pass + 1))
+    else
+        fail=$((fail + 1))
+        echo "FAIL: bloom_cam $*: status $st (want $want), output:"; sed 's/^/    /' "$out"
+        echo "    (wanted '$text')"
+    fi
+}
+expect 0 "usage: bloom_cam" --help
+expect 2 "bloom_cam: unknown option '--nope'" --nope
+expect 2 "bloom_cam: --format: 'mjpeg' is not yuyv, rgb24 or grey" --format mjpeg
+expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9
+expect 1 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --device /dev/null
+if "$cam" --gpio-frame gpiochip0:0 --device /nonexistent 2>&1 | grep -q "built without libgpiod"; then
+    expect 2 "built without libgpiod" --gpio-frame gpiochip0:0
+else
+    expect 1 "bloom_cam: open /nonexistent: No such file" --gpio-frame gpiochip0:0 --device /nonexistent
+fi
+echo "bloom_cam command line without devices"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

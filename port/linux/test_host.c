@@ -1,0 +1,272 @@
+/* bloom_cam host tests: the parts that need no device. Option parsing,
+ * YUYV/GREY row conversion (bit-identical to the simulator's rule, within one
+ * code of the real BT.601 formula), the framebuffer layout check, the
+ * placement arithmetic, and the line-buffer feed (one converted row at a
+ * time, BLOOM_FLAG_COPY_SOURCE) against a whole converted frame. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cam.h"
+#include "sim.h"
+
+static int passed, failed;
+
+#define CHECK(cond, ...)                                                   \
+    do {                                                                   \
+        if (cond) {                                                        \
+            passed++;                                                      \
+        } else {                                                           \
+            failed++;                                                      \
+            printf("FAIL %s:%d: ", __FILE__, __LINE__);                    \
+            printf(__VA_ARGS__);                                           \
+            printf("\n");                                                  \
+        }                                                                  \
+    } while (0)
+
+static int parse(cam_opts_t *o, char *err, const char *a0, const char *a1, const char *a2,
+                 const char *a3)
+{
+    char *argv[6] = {(char *)"bloom_cam", (char *)a0, (char *)a1, (char *)a2, (char *)a3, NULL};
+    int argc = 1;
+    while (argc < 5 && argv[argc])
+        argc++;
+    err[0] = '\0';
+    return cam_parse_opts(o, argc, argv, err, 256);
+}
+
+static void test_opts(void)
+{
+    cam_opts_t o;
+    char err[256];
+    CHECK(parse(&o, err, NULL, NULL, NULL, NULL) == 0, "no options: %s", err);
+    CHECK(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
+              o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
+              o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) &&
+              o.intensity == BLOOM_Q16(1.0) && o.frames == 0 && o.buffers == 4 &&
+              o.mode == CAM_MODE_BLOOM && !o.stats && !o.record,
+          "defaults");
+
+    char *argv[] = {"bloom_cam", "--device", "/dev/video3", "--fb=/dev/fb1", "--size",
+                    "320x240", "--format=rgb24", "--levels", "3", "--threshold=0.8",
+                    "--knee", "0.25", "--intensity", "1.5", "--frames", "10", "--stats",
+                    "--record", "out.raw", "--mode=bloom-only", "--buffers", "3",
+                    "--timeout=500", "-q", NULL};
+    int argc = (int)(sizeof argv / sizeof argv[0]) - 1;
+    int r = cam_parse_opts(&o, argc, argv, err, sizeof err);
+    CHECK(r == 0, "full command line: %s", err);
+    CHECK(!strcmp(o.device, "/dev/video3") && !strcmp(o.fb, "/dev/fb1") && o.width == 320 &&
+              o.height == 240 && o.format == CAM_FMT_RGB24 && o.levels == 3 &&
+              o.threshold == BLOOM_Q16(0.8) && o.knee == BLOOM_Q16(0.25) &&
+              o.intensity == BLOOM_Q16(1.5) && o.frames == 10 && o.stats &&
+              !strcmp(o.record, "out.raw") && o.mode == CAM_MODE_BLOOM_ONLY && o.buffers == 3 &&
+              o.timeout_ms == 500 && o.quiet,
+          "full command line values");
+    CHECK(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY,
+          "grey");
+    CHECK(parse(&o, err, "--help", NULL, NULL, NULL) == 1, "help");
+
+    static const struct {
+        const char *a0, *a1, *a2, *a3, *msg;
+    } bad[] = {
+        {"--format", "nv12", NULL, NULL, "'nv12' is not yuyv, rgb24 or grey"},
+        {"--size", "641x480", NULL, NULL, "YUYV needs an even width"},
+        {"--size", "640", NULL, NULL, "--size: '640' is not WxH"},
+        {"--size", "0x0", NULL, NULL, "--size: '0x0'"},
+        {"--levels", "0", NULL, NULL, "--levels: '0' is not 1..16"},
+        {"--levels", "17", NULL, NULL, "--levels"},
+        {"--threshold", "300", NULL, NULL, "--threshold: '300' is not 0..256"},
+        {"--knee", "1.5", NULL, NULL, "--knee"},
+        {"--intensity", "-1", NULL, NULL, "--intensity"},
+        {"--intensity", "nan", NULL, NULL, "--intensity"},
+        {"--buffers", "1", NULL, NULL, "--buffers: '1' is not 2..16"},
+        {"--frames", "x", NULL, NULL, "--frames"},
+        {"--mode", "glow", NULL, NULL, "--mode"},
+        {"--device", NULL, NULL, NULL, "--device needs a value"},
+        {"--bogus", NULL, NULL, NULL, "unknown option '--bogus'"},
+        {"--gpio-frame", "gpiochip0", NULL, NULL, "is not CHIP:LINE"},
+        {"--gpio-frame", "gpiochip0:3", NULL, NULL, "built without libgpiod"},
+        {"--gpio-button=gpiochip1:BTN", NULL, NULL, NULL, "built without libgpiod"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        r = parse(&o, err, bad[i].a0, bad[i].a1, bad[i].a2, bad[i].a3);
+        CHECK(r == -1 && strstr(err, bad[i].msg), "%s %s: got %d '%s', want '%s'", bad[i].a0,
+              bad[i].a1 ? bad[i].a1 : "", r, err, bad[i].msg);
+    }
+    CHECK(parse(&o, err, "--size", "641x480", "--format", "rgb24") == 0 && o.width == 641,
+          "odd width for rgb24");
+}
+
+static void test_yuv(void)
+{
+    /* Every Y'CbCr triple: equal to the simulator's rule, and within one
+     * code of the real limited-range BT.601 formula. */
+    long mism = 0, far = 0;
+    for (int y = 0; y < 256; y++)
+        for (int cb = 0; cb < 256; cb++)
+            for (int cr = 0; cr < 256; cr++) {
+                uint8_t a[3];
+                uint32_t s[3];
+                cam_ycbcr_to_rgb(y, cb, cr, a);
+                sim_ycbcr_to_rgb(y, cb, cr, 0, s);
+                mism += a[0] != s[0] || a[1] != s[1] || a[2] != s[2];
+                if (((y ^ cb ^ cr) & 7) == 0) {
+                    const double yy = (y - 16) * 255.0 / 219.0, u = (cb - 128) * 255.0 / 224.0,
+                                 v = (cr - 128) * 255.0 / 224.0;
+                    const double rf[3] = {yy + 1.402 * v,
+                                          yy - 0.114 * 1.772 / 0.587 * u -
+                                              0.299 * 1.402 / 0.587 * v,
+                                          yy + 1.772 * u};
+                    for (int c = 0; c < 3; c++) {
+                        double e = rf[c] < 0 ? 0 : rf[c] > 255 ? 255 : rf[c];
+                        far += fabs(a[c] - e) > 1.0;
+                    }
+                }
+            }
+    CHECK(mism == 0, "%ld Y'CbCr triples differ from sim_ycbcr_to_rgb", mism);
+    CHECK(far == 0, "%ld channels more than one code from the BT.601 formula", far);
+
+    enum { W = 38 };
+    uint8_t yuyv[2 * W], rgb[3 * W + 3], grey[W];
+    unsigned seed = 12345;
+    for (int i = 0; i < 2 * W; i++) {
+        seed = seed * 1103515245u + 12345u;
+        yuyv[i] = (uint8_t)(seed >> 16);
+    }
+    memcpy(grey, yuyv, W);
+    rgb[3 * W] = 0xA5;
+    cam_yuyv_row_to_rgb888(yuyv, rgb, W);
+    int bad = 0;
+    for (int x = 0; x < W; x++) {
+        uint8_t e[3];
+        const uint8_t *p = yuyv + (x / 2) * 4;
+        cam_ycbcr_to_rgb(p[(x & 1) * 2], p[1], p[3], e);
+        bad += memcmp(e, rgb + 3 * x, 3) != 0;
+    }
+    CHECK(bad == 0 && rgb[3 * W] == 0xA5, "YUYV row: %d pixels wrong or overrun", bad);
+    cam_grey_row_to_rgb888(grey, rgb, W);
+    bad = 0;
+    for (int x = 0; x < W; x++)
+        bad += rgb[3 * x] != grey[x] || rgb[3 * x + 1] != grey[x] || rgb[3 * x + 2] != grey[x];
+    CHECK(bad == 0 && rgb[3 * W] == 0xA5, "GREY row: %d pixels wrong or overrun", bad);
+}
+
+static void test_fb_format(void)
+{
+    static const struct {
+        cam_fb_layout_t l;
+        bloom_format_t want;
+        const char *why;
+    } t[] = {
+        {{16, 0, 0, 11, 5, 5, 6, 0, 5}, BLOOM_FMT_RGB565, ""},
+        {{32, 0, 0, 16, 8, 8, 8, 0, 8}, BLOOM_FMT_XRGB8888, ""},
+        {{16, 0, 0, 0, 5, 5, 6, 11, 5}, (bloom_format_t)0, "16 bpp BGR565"},
+        {{16, 0, 0, 10, 5, 5, 5, 0, 5}, (bloom_format_t)0, "16 bpp RGB555"},
+        {{32, 0, 0, 0, 8, 8, 8, 16, 8}, (bloom_format_t)0, "32 bpp XBGR8888"},
+        {{32, 0, 0, 24, 8, 16, 8, 8, 8}, (bloom_format_t)0, "32 bpp R24:8 G16:8 B8:8"},
+        {{24, 0, 0, 16, 8, 8, 8, 0, 8}, (bloom_format_t)0, "24 bpp"},
+        {{8, 0, 0, 0, 8, 0, 8, 0, 8}, (bloom_format_t)0, "8 bpp"},
+        {{8, 1, 0, 0, 8, 0, 8, 0, 8}, (bloom_format_t)0, "8 bpp greyscale"},
+        {{16, 0, 1, 11, 5, 5, 6, 0, 5}, (bloom_format_t)0, "non-standard pixel format 1"},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        char why[64] = "";
+        bloom_format_t f = cam_fb_format(&t[i].l, why, sizeof why);
+        CHECK(f == t[i].want && (f || !strcmp(why, t[i].why)), "layout %zu: format %d '%s'", i,
+              (int)f, why);
+    }
+}
+
+static void test_place(void)
+{
+    static const struct {
+        int fw, fh, sw, sh;
+        cam_place_t want;
+    } t[] = {
+        {640, 480, 640, 480, {0, 0, 0, 0, 640, 480}},
+        {640, 480, 800, 600, {80, 60, 0, 0, 640, 480}},
+        {320, 240, 1024, 768, {352, 264, 0, 0, 320, 240}},
+        {641, 481, 800, 600, {79, 59, 0, 0, 641, 481}},
+        {1280, 720, 640, 480, {0, 0, 320, 120, 640, 480}},
+        {1280, 240, 640, 480, {0, 120, 320, 0, 640, 240}},
+        {320, 720, 640, 480, {160, 0, 0, 120, 320, 480}},
+        {641, 480, 640, 480, {0, 0, 0, 0, 640, 480}},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        cam_place_t p;
+        cam_place(t[i].fw, t[i].fh, t[i].sw, t[i].sh, &p);
+        CHECK(!memcmp(&p, &t[i].want, sizeof p),
+              "%dx%d on %dx%d: dst %d,%d src %d,%d size %dx%d", t[i].fw, t[i].fh, t[i].sw,
+              t[i].sh, p.dst_x, p.dst_y, p.src_x, p.src_y, p.w, p.h);
+    }
+}
+
+/* The camera tool's YUYV path: one converted row in a line buffer at a time,
+ * the engine copying what it keeps, must equal the whole frame converted
+ * first and run through bloom_process (pointer mode). */
+static void test_line_feed(void)
+{
+    enum { W = 96, H = 72 };
+    static uint8_t yuyv[H][2 * W], rgb[H][3 * W], line[3 * W];
+    static uint16_t out_a[H][W], out_b[H][W];
+    unsigned seed = 99;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < 2 * W; x++) {
+            seed = seed * 1103515245u + 12345u;
+            int v = (int)(seed >> 16) & 255;
+            if ((x & 1) == 0)                           /* luma: a few bright spots */
+                v = ((x / 2 - 30) * (x / 2 - 30) + (y - 20) * (y - 20) < 60) ? 235 : v / 3;
+            yuyv[y][x] = (uint8_t)v;
+        }
+    for (int y = 0; y < H; y++)
+        cam_yuyv_row_to_rgb888(yuyv[y], rgb[y], W);
+
+    bloom_config_t cfg;
+    bloom_config_default(&cfg, W, H);
+    cfg.out_fmt = BLOOM_FMT_RGB565;
+    cfg.threshold = BLOOM_Q16(0.6);
+    size_t n1 = bloom_workspace_size(&cfg);
+    void *ws1 = aligned_alloc(64, (n1 + 63) / 64 * 64);
+    bloom_t *b1;
+    CHECK(bloom_init(&b1, ws1, n1, &cfg) == BLOOM_OK, "init pointer mode");
+    CHECK(bloom_process(b1, rgb, sizeof rgb[0], out_a, sizeof out_a[0]) == BLOOM_OK, "process");
+
+    cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
+    size_t n2 = bloom_workspace_size(&cfg);
+    void *ws2 = aligned_alloc(64, (n2 + 63) / 64 * 64);
+    bloom_t *b2;
+    CHECK(bloom_init(&b2, ws2, n2, &cfg) == BLOOM_OK, "init copy mode");
+    int bad = bloom_begin(b2) != BLOOM_OK;
+    for (int y = 0; y < H; y++) {
+        cam_yuyv_row_to_rgb888(yuyv[y], line, W);
+        memset(rgb[y], 0, sizeof rgb[y]); /* nothing may read the frame copy */
+        bad |= bloom_push_row(b2, line) != BLOOM_OK;
+        memset(line, 0x5A, sizeof line); /* nor the line buffer after the push */
+        while (bloom_pull_row(b2, out_b[bloom_rows_out(b2)]) == BLOOM_OK)
+            ;
+    }
+    while (bloom_pull_row(b2, out_b[bloom_rows_out(b2)]) == BLOOM_OK)
+        ;
+    CHECK(!bad && bloom_rows_out(b2) == H, "line feed ran");
+    CHECK(!memcmp(out_a, out_b, sizeof out_a), "line-buffer feed differs from the whole frame");
+    int glow = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            glow |= out_a[y][x] != 0;
+    CHECK(glow, "the test frame is all black");
+    free(ws1);
+    free(ws2);
+}
+
+int main(void)
+{
+    test_opts();
+    test_yuv();
+    test_fb_format();
+    test_place();
+    test_line_feed();
+    printf("bloom_cam host tests: options, Y'CbCr rows, framebuffer layouts, placement, line feed\n");
+    printf("%d passed, %d failed\n", passed, failed);
+    return failed != 0;
+}
