@@ -15,6 +15,8 @@ command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 [ -f /usr/include/png.h ] || need="$need libpng-dev"
 [ -f /usr/include/jpeglib.h ] || need="$need libjpeg62-turbo-dev"
 [ -d /usr/include/OpenEXR ] || need="$need libopenexr-dev"
+# the Linux camera tool's GPIO module (libgpiod v1 on bookworm)
+[ -f /usr/include/gpiod.h ] || need="$need libgpiod-dev"
 [ -z "$need" ] && exit 0
 echo "deps: installing$need"
 SUDO=""
