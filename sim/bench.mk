@@ -19,12 +19,12 @@ ICOUNT_CFLAGS := -O2 -g
 ICOUNT_SIZES ?= 640x480 1920x1080
 BENCH_CXXWARN := -std=c++17 -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align -Wvla
 
-BENCH_HDR := sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h
+BENCH_HDR := sim/bench/bench.h sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h
 # Every core header, also ones added to src/ after CORE_HDR was written.
 BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h include/*.h))
 BENCH_CORE_OBJ := $(patsubst src/%.c,$(BENCH_DIR)/core/%.o,$(CORE_SRC))
 BENCH_SIM_OBJ := $(patsubst sim/%.c,$(BENCH_DIR)/sim/%.o,$(SIM_SRC))
-BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o scene.o variants.o bench_opencv.o)
+BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o bench_out.o scene.o variants.o bench_opencv.o)
 ICOUNT_CORE_OBJ := $(patsubst src/%.c,$(ICOUNT_DIR)/core/%.o,$(CORE_SRC))
 ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgio.c
 

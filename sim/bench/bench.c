@@ -15,6 +15,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench.h"
 #include "bench_cv.h"
 #include "bloom.h"
 #include "bloom_model.h"
@@ -28,32 +29,14 @@
 #define BENCH_FLAGS "(unknown)"
 #endif
 
-#define MAX_SIZES 8
-#define MAX_ROWS 256
-#define SLOW_RUN_S 0.25 /* a warm-up slower than this: SLOW_RUNS runs */
-#define SLOW_RUNS 5
 
-typedef struct {
-    int w, h;
-    const char *group; /* floor, engine, opencv, model */
-    char name[96];
-    int threads;
-    int runs;
-    double median_ms, min_ms;
-    double cpu_ms;    /* median process CPU time (every thread) per run */
-    double x_memcpy, x_engine;   /* wall-time ratios */
-    double xc_memcpy, xc_engine; /* CPU-time ratios, single-threaded rows; -1 otherwise */
-    int agree_max; /* -1: not compared */
-    double agree_exact;
-    char note[96];
-} row_t;
 
-static row_t rows[MAX_ROWS];
-static int nrows;
+row_t rows[MAX_ROWS];
+int nrows;
 
 /* ---- small helpers ------------------------------------------------------ */
 
-static void die(const char *fmt, const char *arg)
+void die(const char *fmt, const char *arg)
 {
     fprintf(stderr, "bloom_bench: ");
     fprintf(stderr, fmt, arg);
@@ -122,10 +105,10 @@ static void agreement(const uint8_t *a, const uint8_t *b, size_t n, int *max, do
 
 /* ---- machine ------------------------------------------------------------ */
 
-static char cpu_model[160] = "unknown";
-static int ncpu = 1;
-static size_t llc_sysfs, llc_sysconf;
-static int llc_level;
+char cpu_model[160] = "unknown";
+int ncpu = 1;
+size_t llc_sysfs, llc_sysconf;
+int llc_level;
 
 static void read_cpu(void)
 {
@@ -377,6 +360,11 @@ static const struct {
 };
 #define N_CV_ROWS ((int)(sizeof cv_rows / sizeof cv_rows[0]))
 
+const char *bench_cv_row_name(int i)
+{
+    return cv_rows[i].name;
+}
+
 /* Sigma of the tutorial's Gaussian, full-resolution pixels: the standard
  * deviation per axis of the engine's own bloom for a single bright pixel at
  * 5 levels (measured with the float model: 15.06 px). */
@@ -384,20 +372,8 @@ static const struct {
 
 /* ---- one frame size --------------------------------------------------------- */
 
-typedef struct {
-    const char *image;
-    int runs, warm;
-    int model_w[MAX_SIZES], model_h[MAX_SIZES], n_model;
-} opts_t;
-
-typedef struct {
-    double active_src_pct;  /* source pixels whose max channel passes the knee's lower edge */
-    double changed_out_pct; /* output bytes of the engine that differ from the input */
-    int levels;
-} size_info_t;
-
-static size_info_t size_info[MAX_SIZES];
-static int opencv_threads_default = 0;
+size_info_t size_info[MAX_SIZES];
+int opencv_threads_default = 0;
 
 static int fmt_bytes(bloom_format_t f, int w, int h)
 {
@@ -612,221 +588,6 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
     free(ref);
     free(out);
     free(scene);
-}
-
-/* ---- output files ------------------------------------------------------------- */
-
-static char date_utc[64];
-static double load_start = -1.0, load_end = -1.0;
-
-static double loadavg1(void)
-{
-    double v = -1.0;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f) {
-        if (fscanf(f, "%lf", &v) != 1)
-            v = -1.0;
-        fclose(f);
-    }
-    return v;
-}
-
-static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
-{
-    snprintf(tmp, tmplen, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    if (!f)
-        die("cannot write %s", tmp);
-    return f;
-}
-
-static void close_tmp(FILE *f, const char *tmp, const char *path)
-{
-    if (fclose(f) || rename(tmp, path))
-        die("cannot write %s", path);
-}
-
-static void write_csv(const char *path)
-{
-    char tmp[1024];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
-    fprintf(f, "date,cpu,width,height,group,variant,threads,runs,median_ms,min_ms,cpu_ms,"
-               "x_memcpy,x_engine,x_memcpy_cpu,x_engine_cpu,agree_max_lsb,agree_exact_pct,note\n");
-    for (int i = 0; i < nrows; i++) {
-        const row_t *r = &rows[i];
-        fprintf(f, "%s,\"%s\",%d,%d,%s,\"%s\",%d,%d,", date_utc, cpu_model, r->w, r->h, r->group,
-                r->name, r->threads, r->runs);
-        if (r->runs)
-            fprintf(f, "%.4f,%.4f,%.4f,%.4f,%.4f,", r->median_ms, r->min_ms, r->cpu_ms,
-                    r->x_memcpy, r->x_engine);
-        else
-            fprintf(f, ",,,,,");
-        if (r->xc_memcpy >= 0.0)
-            fprintf(f, "%.4f,%.4f,", r->xc_memcpy, r->xc_engine);
-        else
-            fprintf(f, ",,");
-        if (r->agree_max >= 0)
-            fprintf(f, "%d,%.4f,", r->agree_max, r->agree_exact);
-        else
-            fprintf(f, ",,");
-        fprintf(f, "\"%s\"\n", r->note);
-    }
-    close_tmp(f, tmp, path);
-}
-
-static const char *met(int yes)
-{
-    return yes ? "met" : "not met";
-}
-
-/* Three significant digits or so, whatever the size of the ratio. */
-static void fmt_ratio(char *buf, size_t n, double x)
-{
-    if (x < 0.1)
-        snprintf(buf, n, "%.4f", x);
-    else if (x < 100.0)
-        snprintf(buf, n, "%.2f", x);
-    else
-        snprintf(buf, n, "%.0f", x);
-}
-
-static const row_t *find_row(int w, int h, const char *group, const char *name, int single)
-{
-    for (int i = 0; i < nrows; i++)
-        if (rows[i].w == w && rows[i].h == h && !strcmp(rows[i].group, group) &&
-            (!name || !strcmp(rows[i].name, name)) && (single < 0 || (rows[i].threads == 1) == single) &&
-            rows[i].runs)
-            return &rows[i];
-    return NULL;
-}
-
-static void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
-                     size_t ring_bytes, const char *cv_version, const char *cv_parallel)
-{
-    char tmp[1024];
-    FILE *f = open_tmp(path, tmp, sizeof tmp);
-    bloom_config_t c;
-    bloom_config_default(&c, 64, 64);
-    fprintf(f, "# Benchmark: the engine against memcpy, OpenCV 4 and the float model\n\n");
-    fprintf(f, "Generated by `make bench` (`sim/bench/bench.c`); the method and the caveats are "
-               "below the tables. Times are medians of the runs shown, on this machine only; "
-               "compare runs by the ratios.\n\n");
-    fprintf(f, "- Date: %s\n", date_utc);
-    fprintf(f, "- CPU: %s, %d logical CPUs online; last-level cache (L%d) %zu KiB per sysfs, "
-               "%zu KiB per sysconf\n",
-            cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10);
-    fprintf(f, "- Cold frames: every run reads its input from, and writes its output to, the next "
-               "slot of two rings of %zu MiB each (at least 4x the larger cache figure)\n",
-            ring_bytes >> 20);
-    fprintf(f, "- Engine: `src/` as it was at run time, compiled by %s %s with `%s`; "
-               "5 levels requested, threshold %.2f, soft knee %.2f, intensity %.2f "
-               "(`bloom_config_default` except the threshold)\n",
-            BENCH_CC, __VERSION__, BENCH_FLAGS, BENCH_THRESHOLD, c.soft_knee / 65536.0,
-            c.intensity / 65536.0);
-    fprintf(f, "- OpenCV %s, parallel framework %s, default threads %d; \"1\" in the threads "
-               "column is `cv::setNumThreads(0)` (sequential)\n",
-            cv_version, cv_parallel, opencv_threads_default);
-    fprintf(f, "- Scene: `%s`%s%s%s %s; parameters chosen so that the bloom is active on it "
-               "(figures per size below)\n",
-            o->image, strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : " (",
-            strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : SCENE_IMAGE_DEFAULT_ABOUT,
-            strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : ")", scene_description);
-    fprintf(f, "- Runs: median of %d runs after %d warm-up(s) (%d runs when the last warm-up took "
-               "over %.2f s); \"median ms\" is wall time, \"CPU ms\" the median process CPU "
-               "time of the same runs (every thread: above the wall time when OpenCV's "
-               "threads work in parallel, below it when other processes took the CPU); "
-               "\"x\" columns divide wall times, \"x ..., CPU\" columns CPU times, for "
-               "single-threaded rows only (the CSV also has the minimum wall time); the float "
-               "model: one run, at the sizes listed in its rows only\n",
-            o->runs, o->warm, SLOW_RUNS, SLOW_RUN_S);
-    if (load_start >= 0.0 && load_end >= 0.0)
-        fprintf(f, "- Load average (1 min) of the machine at start / end: %.2f / %.2f on %d CPUs%s\n",
-                load_start, load_end, ncpu,
-                load_start > 0.5 || load_end > 0.5
-                    ? " (other processes were running: expect more noise than on an idle machine, "
-                      "the multi-threaded OpenCV rows most of all)"
-                    : "");
-    fprintf(f, "- Agreement: the output bytes of each OpenCV variant and of the float model "
-               "against the engine's RGB888 output, same input: largest difference in LSB and "
-               "%% of equal bytes\n\n");
-
-    for (int s = 0; s < nsizes; s++) {
-        const int w = sw[s], h = sh[s];
-        fprintf(f, "## %dx%d\n\n", w, h);
-        fprintf(f, "RGB888 frame %d bytes; pyramid levels built: %d; %.2f %% of source pixels "
-                   "above the knee's lower edge; the bloom changes %.2f %% of the output bytes.\n\n",
-                w * h * 3, size_info[s].levels, size_info[s].active_src_pct,
-                size_info[s].changed_out_pct);
-        fprintf(f, "| group | variant | threads | runs | median ms | CPU ms | x cold memcpy | "
-                   "x engine | x cold memcpy, CPU | x engine, CPU | max LSB vs engine | "
-                   "exact %% |\n");
-        fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-        for (int i = 0; i < nrows; i++) {
-            const row_t *r = &rows[i];
-            if (r->w != w || r->h != h)
-                continue;
-            if (!r->runs) {
-                fprintf(f, "| %s | %s | | | %s | | | | | | | |\n", r->group, r->name, r->note);
-                continue;
-            }
-            char xm[32], xe[32], cm[32] = "-", ce[32] = "-";
-            fmt_ratio(xm, sizeof xm, r->x_memcpy);
-            fmt_ratio(xe, sizeof xe, r->x_engine);
-            if (r->xc_memcpy >= 0.0) {
-                fmt_ratio(cm, sizeof cm, r->xc_memcpy);
-                fmt_ratio(ce, sizeof ce, r->xc_engine);
-            }
-            fprintf(f, "| %s | %s | %d | %d | %.3f | %.3f | %s | %s | %s | %s | ", r->group,
-                    r->name, r->threads, r->runs, r->median_ms, r->cpu_ms, xm, xe, cm, ce);
-            if (r->agree_max >= 0)
-                fprintf(f, "%d | %.3f |\n", r->agree_max, r->agree_exact);
-            else
-                fprintf(f, "- | - |\n");
-        }
-        fprintf(f, "\n");
-    }
-
-    /* The targets of issue 7, at the largest size measured. */
-    int big = 0;
-    for (int s = 1; s < nsizes; s++)
-        if (sw[s] * sh[s] > sw[big] * sh[big])
-            big = s;
-    const int w = sw[big], h = sh[big];
-    const row_t *mc = find_row(w, h, "floor", NULL, -1), *en = find_row(w, h, "engine", NULL, -1);
-    const row_t *bx = find_row(w, h, "opencv", cv_rows[0].name, 1);
-    const row_t *ar = find_row(w, h, "opencv", cv_rows[2].name, 1);
-    const row_t *tu = find_row(w, h, "opencv", cv_rows[4].name, 1);
-    fprintf(f, "## Issue 7 targets at %dx%d (reported, not asserted)\n\n", w, h);
-    if (mc && en) {
-        fprintf(f, "Engine row: %s, one thread. Ratios of wall times (the tables), and of CPU "
-                   "times of the same runs, which leave out time lost to other processes on a "
-                   "busy machine (every row compared here is single-threaded).\n\n",
-                en->name);
-        fprintf(f, "| target | measured, wall | measured, CPU | verdict (wall / CPU) |\n|---|---:|---:|---|\n");
-        double xw = en->median_ms / mc->median_ms, xc = en->cpu_ms / mc->cpu_ms;
-        fprintf(f, "| engine at most 8x the cold memcpy time | %.2fx | %.2fx | %s / %s |\n", xw,
-                xc, met(xw <= 8.0), met(xc <= 8.0));
-        if (bx && ar) {
-            const double a = bx->median_ms / en->median_ms, b = ar->median_ms / en->median_ms;
-            const double ac = bx->cpu_ms / en->cpu_ms, bc = ar->cpu_ms / en->cpu_ms;
-            xw = a < b ? a : b;
-            xc = ac < bc ? ac : bc;
-            fprintf(f, "| engine at least 10x faster than the same algorithm in OpenCV, one "
-                       "thread (the faster route counts; boxFilter route %.2fx, INTER_AREA route "
-                       "%.2fx wall) | %.2fx | %.2fx | %s / %s |\n",
-                    a, b, xw, xc, met(xw >= 10.0), met(xc >= 10.0));
-        }
-        if (tu) {
-            xw = tu->median_ms / en->median_ms;
-            xc = tu->cpu_ms / en->cpu_ms;
-            fprintf(f, "| engine at least 3x faster than the OpenCV tutorial bloom, one thread | "
-                       "%.2fx | %.2fx | %s / %s |\n",
-                    xw, xc, met(xw >= 3.0), met(xc >= 3.0));
-        }
-        fprintf(f, "| at most 40 instructions per pixel | see `sim/docs/icount.md` "
-                   "(`make icount`) | | |\n\n");
-    }
-    close_tmp(f, tmp, path);
 }
 
 /* ---- main ------------------------------------------------------------------------ */

@@ -1,0 +1,58 @@
+/* Shared state of the benchmark (bench.c measures, bench_out.c writes the
+ * CSV and the Markdown). */
+#ifndef BENCH_H
+#define BENCH_H
+
+#include <stddef.h>
+
+#define MAX_SIZES 8
+#define MAX_ROWS 256
+#define SLOW_RUN_S 0.25 /* a warm-up slower than this: SLOW_RUNS runs */
+#define SLOW_RUNS 5
+
+typedef struct {
+    int w, h;
+    const char *group; /* floor, engine, opencv, model */
+    char name[96];
+    int threads;
+    int runs;
+    double median_ms, min_ms;
+    double cpu_ms;    /* median process CPU time (every thread) per run */
+    double x_memcpy, x_engine;   /* wall-time ratios */
+    double xc_memcpy, xc_engine; /* CPU-time ratios, single-threaded rows; -1 otherwise */
+    int agree_max; /* -1: not compared */
+    double agree_exact;
+    char note[96];
+} row_t;
+
+typedef struct {
+    const char *image;
+    int runs, warm;
+    int model_w[MAX_SIZES], model_h[MAX_SIZES], n_model;
+} opts_t;
+
+typedef struct {
+    double active_src_pct;  /* source pixels whose max channel passes the knee's lower edge */
+    double changed_out_pct; /* output bytes of the engine that differ from the input */
+    int levels;
+} size_info_t;
+
+extern row_t rows[MAX_ROWS];
+extern int nrows;
+extern size_info_t size_info[MAX_SIZES];
+extern int opencv_threads_default;
+extern char cpu_model[160];
+extern int ncpu;
+extern size_t llc_sysfs, llc_sysconf;
+extern int llc_level;
+extern char date_utc[64];
+extern double load_start, load_end;
+
+void die(const char *fmt, const char *arg);
+const char *bench_cv_row_name(int i); /* the OpenCV variants, in table order */
+double loadavg1(void);
+void write_csv(const char *path);
+void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
+              size_t ring_bytes, const char *cv_version, const char *cv_parallel);
+
+#endif
