@@ -20,7 +20,7 @@ CPPFLAGS_CORE := -Iinclude -Isrc
 HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
 SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
-CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c
+CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_row_sse2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c
 CORE_HDR := $(wildcard include/*.h src/*.h)
 SIM_SRC := sim/bloom_model.c sim/imgio.c
 SIM_HDR := sim/bloom_model.h sim/imgio.h

@@ -39,8 +39,10 @@ enum {
     BLOOM_FLAG_DEBUG_VIEW = 1u << 1,  /* output I*B only (bloom-only view) */
     BLOOM_FLAG_COPY_SOURCE = 1u << 2, /* engine copies the source rows it still
                                          needs; without it, it keeps pointers */
-    BLOOM_FLAG_NO_SKIP = 1u << 3      /* compute rows known to be zero anyway
+    BLOOM_FLAG_NO_SKIP = 1u << 3,     /* compute rows known to be zero anyway
                                          (for tests and benchmarks) */
+    BLOOM_FLAG_NO_SIMD = 1u << 4      /* C row kernels only, no SSE2/NEON (same
+                                         bits; for tests and benchmarks) */
 };
 
 typedef enum {

@@ -52,4 +52,12 @@
 #define BLOOM_OUT_CHUNK 16
 #endif
 
+/* SIMD row kernels (SSE2 on x86-64, NEON on aarch64), bit-identical to the
+ * C kernels and picked per engine at bloom_init. 1 leaves them out and
+ * always uses the C kernels (BLOOM_FLAG_NO_SIMD does it at run time).
+ * Targets without one of those ISAs use the C kernels anyway. */
+#ifndef BLOOM_NO_SIMD
+#define BLOOM_NO_SIMD 0
+#endif
+
 #endif

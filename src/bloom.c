@@ -104,7 +104,7 @@ static bloom_status_t validate(const bloom_config_t *c)
     if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
     if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP))
+                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD))
         return BLOOM_E_FLAGS;
     return BLOOM_OK;
 }
@@ -165,6 +165,7 @@ static void setup(bloom_t *b, const bloom_config_t *cfg)
     b->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
     b->src_bpp = bloom_format_bpp(cfg->in_fmt);
     b->skip = !(cfg->flags & BLOOM_FLAG_NO_SKIP);
+    bloom_kernels_select(&b->kern, cfg->flags);
 #if BLOOM_USE_SKIP
     set_dark(b);
 #endif
@@ -344,7 +345,7 @@ static BLOOM_NOINLINE void compute_D(bloom_t *b, int k, int r, uint32_t *dst)
         const uint32_t *s[4];
         for (int i = 0; i < 4; i++)
             s[i] = ring_get(b, &b->D[k - 1], clampi(2 * r - 1 + i, 0, b->h[k - 1] - 1));
-        bloom_row_box_c(s, dst, b->w[k], b->w[k - 1]);
+        b->kern.box(s, dst, b->w[k], b->w[k - 1]);
     }
 }
 
@@ -372,14 +373,14 @@ static BLOOM_NOINLINE void compute_U(bloom_t *b, int k, int r, uint32_t *dst)
         const uint32_t *s[4];
         for (int i = 0; i < 4; i++)
             s[i] = ring_get(b, dring, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
-        bloom_row_box_c(s, dst, b->w[2], b->w[1]);
+        b->kern.box(s, dst, b->w[2], b->w[1]);
     } else {
         memcpy(dst, ring_get(b, dring, r), (size_t)b->w[k] * 3u * sizeof *dst);
     }
     if (!uzero) {
         const uint32_t *u[3];
         tent_rows(b, k, r, u);
-        bloom_row_tent_c(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
+        b->kern.tent(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
     }
 }
 
@@ -671,7 +672,10 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
     } else {
         const uint32_t *u[3];
         tent_rows(b, 0, y, u);
-        bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
+        if (b->kern.simd)
+            bloom_row_out_k(&b->kern, u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
+        else
+            bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
     }
     if (b->failed)
         return BLOOM_E_INTERNAL;

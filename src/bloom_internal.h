@@ -78,6 +78,45 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
 void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
                      int sw, const bloom_out_t *o);
 
+/* The same box for destination columns xa .. xb-1 only (dst is the row). */
+void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, int xb, int sw);
+/* Composite of n samples in place: bl[i] = min(((I*bl[i] + 32768) >> 16) + sv[i], 2^32 - 1). */
+void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+
+/* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
+ * the C ones, or SIMD twins that give the same bits. */
+typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
+typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add,
+                              uint32_t *dst, int x0, int n, int sw);
+typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+typedef struct {
+    bloom_box_fn box;
+    bloom_tent_fn tent;
+    bloom_composite_fn composite;
+    bool simd;        /* false: the C kernels */
+    const char *name; /* "c", "sse2", "neon" */
+} bloom_kernels_t;
+/* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
+void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
+/* bloom_row_out_c with the tent and composite of k. */
+void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
+                     const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o);
+
+/* Which SIMD twins this build has (bloom_row_sse2.c, bloom_row_neon.c). */
+#if !BLOOM_NO_SIMD && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
+#define BLOOM_SIMD_SSE2 1
+void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
+void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
+                             uint32_t *dst, int x0, int n, int sw);
+void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+#elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
+#define BLOOM_SIMD_NEON 1
+void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
+void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
+                             uint32_t *dst, int x0, int n, int sw);
+void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+#endif
+
 /* Pixel access (bloom_pixel.c). */
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
 /* Whether no channel of the n pixels exceeds the dark codes. */
@@ -100,6 +139,7 @@ struct bloom {
     int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
     bloom_knee_t knee;
     bloom_out_t out;
+    bloom_kernels_t kern; /* row kernels (C or SIMD) */
     int src_bpp;
     size_t src_row_bytes;
 

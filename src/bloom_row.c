@@ -9,6 +9,10 @@ static inline int imin(int a, int b)
 {
     return a < b ? a : b;
 }
+static inline int imax(int a, int b)
+{
+    return a > b ? a : b;
+}
 
 /* Column sum of four rows at column c (three channels). */
 static inline void colsum4(const uint32_t *const s[4], int c, uint32_t out[3])
@@ -18,12 +22,14 @@ static inline void colsum4(const uint32_t *const s[4], int c, uint32_t out[3])
         out[ch] = s[0][i + ch] + s[1][i + ch] + s[2][i + ch] + s[3][i + ch];
 }
 
-void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, int xb, int sw)
 {
     uint32_t a[3], b[3], c[3], d[3];
-    colsum4(s, 0, a); /* column 2x-1 = -1 clamps to 0 */
-    colsum4(s, 0, b);
-    for (int x = 0; x < dw; x++) {
+    if (xa >= xb)
+        return;
+    colsum4(s, imin(imax(2 * xa - 1, 0), sw - 1), a); /* column 2x-1 = -1 clamps to 0 */
+    colsum4(s, imin(2 * xa, sw - 1), b);
+    for (int x = xa; x < xb; x++) {
         colsum4(s, imin(2 * x + 1, sw - 1), c);
         colsum4(s, imin(2 * x + 2, sw - 1), d);
         for (int ch = 0; ch < 3; ch++) {
@@ -32,6 +38,11 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
             b[ch] = d[ch];
         }
     }
+}
+
+void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+{
+    bloom_row_box_range_c(s, dst, 0, dw, sw);
 }
 
 #if defined(__GNUC__) && !BLOOM_SMALL
@@ -274,6 +285,15 @@ void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t
     }
 }
 
+void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity)
+{
+    const uint64_t I = intensity;
+    for (int i = 0; i < n; i++) {
+        uint64_t v = ((I * bl[i] + 32768u) >> 16) + sv[i];
+        bl[i] = v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
+    }
+}
+
 void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
                      int sw, const bloom_out_t *o)
 {
@@ -293,4 +313,45 @@ void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, ui
         }
         bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
     }
+}
+
+void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
+                     const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
+{
+    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
+    if (o->debug)
+        memset(sv, 0, sizeof sv);
+    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
+        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
+        k->tent(u, odd, NULL, bl, x0, n, sw);
+        if (!o->debug)
+            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
+        k->composite(bl, sv, 3 * n, o->intensity);
+        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
+    }
+}
+
+void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
+{
+    k->box = bloom_row_box_c;
+    k->tent = bloom_row_tent_c;
+    k->composite = bloom_row_composite_c;
+    k->simd = false;
+    k->name = "c";
+    if (flags & BLOOM_FLAG_NO_SIMD)
+        return;
+#if defined(BLOOM_SIMD_SSE2)
+    k->box = bloom_row_box_sse2_any;
+    k->tent = bloom_row_tent_sse2_any;
+    k->composite = bloom_row_composite_sse2_any;
+    k->simd = true;
+    k->name = "sse2";
+#elif defined(BLOOM_SIMD_NEON)
+    k->box = bloom_row_box_neon_any;
+    k->tent = bloom_row_tent_neon_any;
+    k->composite = bloom_row_composite_neon_any;
+    k->simd = true;
+    k->name = "neon";
+#endif
 }

@@ -1,0 +1,54 @@
+/* NEON twins of the hot row kernels (aarch64). Same bits as the C kernels
+ * of bloom_row.c; the kernels are written once in bloom_row_simd.h. Empty
+ * on other targets. */
+#include "bloom_internal.h"
+
+#if defined(BLOOM_SIMD_NEON)
+#include <arm_neon.h>
+
+typedef uint32x4_t VT;
+#define LD4(p) vld1q_u32(p)
+#define ST4(p, v) vst1q_u32((p), (v))
+#define LD2(p) vcombine_u32(vld1_u32(p), vdup_n_u32(0))
+#define ST2(p, v) vst1_u32((p), vget_low_u32(v))
+#define ADD(a, b) vaddq_u32((a), (b))
+#define AND(a, b) vandq_u32((a), (b))
+#define SHL(a, n) vshlq_n_u32((a), (n))
+#define SHR(a, n) vshrq_n_u32((a), (n))
+#define DUP(c) vdupq_n_u32(c)
+#define ADD_SHR3(acc, v) vsraq_n_u32((acc), (v), 3)
+#define PACK_LO(e, o) vsetq_lane_u32(vgetq_lane_u32((o), 0), (e), 3)
+#define PACK_HI(o) vextq_u32((o), (o), 1)
+
+#include "bloom_row_simd.h"
+
+void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+{
+    box_any(s, dst, dw, sw);
+}
+
+void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
+                             uint32_t *dst, int x0, int n, int sw)
+{
+    tent_any(u, odd, add, dst, x0, n, sw);
+}
+
+/* ((I bl + 32768) >> 16) + sv: a rounding shift-accumulate in 64 bits,
+ * then a saturating narrow to 32 bits. */
+void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity)
+{
+    const uint32x2_t I = vdup_n_u32(intensity);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const uint32x4_t b = vld1q_u32(bl + i), s = vld1q_u32(sv + i);
+        const uint64x2_t lo = vrsraq_n_u64(vmovl_u32(vget_low_u32(s)), vmull_u32(vget_low_u32(b), I), 16);
+        const uint64x2_t hi = vrsraq_n_u64(vmovl_u32(vget_high_u32(s)), vmull_u32(vget_high_u32(b), I), 16);
+        vst1q_u32(bl + i, vcombine_u32(vqmovn_u64(lo), vqmovn_u64(hi)));
+    }
+    if (i < n)
+        bloom_row_composite_c(bl + i, sv + i, n - i, intensity);
+}
+
+#else
+typedef int bloom_row_neon_empty; /* ISO C wants a declaration in every file */
+#endif

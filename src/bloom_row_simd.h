@@ -1,0 +1,150 @@
+/* The SIMD row kernels, written once over a few vector operations that
+ * bloom_row_sse2.c and bloom_row_neon.c define before including this file
+ * (nothing else includes it). One vector holds one pixel: lanes 0..2 are
+ * R, G, B, lane 3 is the next sample (read, computed on, never stored), so
+ * every load stays inside the row by construction: the `_any` wrappers give
+ * the SIMD loops only the interior columns and leave the edges (where
+ * columns clamp) and the tails to the C kernels.
+ *
+ * Operations the includer defines, on VT (4 x uint32_t lanes, wrapping):
+ *   LD4(p), ST4(p, v)  four samples, unaligned
+ *   LD2(p), ST2(p, v)  two samples in lanes 0, 1
+ *   ADD(a, b), AND(a, b), SHL(a, n), SHR(a, n) (logical), DUP(c)
+ *   ADD_SHR3(acc, v)   acc + (v >> 3)
+ *   PACK_LO(e, o)      [e0 e1 e2 o0]     PACK_HI(o)  [o1 o2 . .]
+ *
+ * Bit-identical to the C kernels: the box sums stay below 2^32 (as in C,
+ * and wrap exactly like C's uint32_t if they did not), and the tent's
+ * (3a + 4b + c + 4) >> 3 of 32-bit a, b, c, which C forms in 64 bits, is
+ * formed exactly in 32-bit lanes by splitting every input as 8h + l:
+ * 3a + 4b + c + 4 = 8(3ha + 4hb + hc) + (3la + 4lb + lc + 4), so the
+ * result is (3ha + 4hb + hc) + ((3la + 4lb + lc + 4) >> 3); the first term
+ * is at most 8(2^29 - 1) and the second at most 7, so neither wraps. */
+
+static inline int simd_imin(int a, int b)
+{
+    return a < b ? a : b;
+}
+static inline int simd_imax(int a, int b)
+{
+    return a > b ? a : b;
+}
+
+/* ---- box down: 4x4 of four rows, (sum + 8) >> 4 ------------------------ */
+
+/* Column sum of the four rows at sample index i (lane 3: the next sample). */
+#define COL4(s0, s1, s2, s3, i) ADD(ADD(LD4((s0) + (i)), LD4((s1) + (i))), ADD(LD4((s2) + (i)), LD4((s3) + (i))))
+
+/* Destination pixels xa .. xa + 2 np - 1 (xa >= 1) in pairs; reads source
+ * columns 2 xa - 1 .. 2 (xa + 2 np - 2) + 4 and one sample past them. */
+static void box_pairs(const uint32_t *const s[4], uint32_t *dst, int xa, int np)
+{
+    const uint32_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
+    const VT k8 = DUP(8u);
+    size_t c = (size_t)(2 * xa - 1) * 3u;
+    uint32_t *d = dst + (size_t)xa * 3u;
+    VT a = ADD(COL4(s0, s1, s2, s3, c), COL4(s0, s1, s2, s3, c + 3u)); /* columns 2x-1, 2x */
+    for (int i = 0; i < np; i++, c += 12u, d += 6u) {
+        const VT b = ADD(COL4(s0, s1, s2, s3, c + 6u), COL4(s0, s1, s2, s3, c + 9u));
+        const VT e = SHR(ADD(ADD(a, b), k8), 4);
+        a = ADD(COL4(s0, s1, s2, s3, c + 12u), COL4(s0, s1, s2, s3, c + 15u));
+        const VT o = SHR(ADD(ADD(b, a), k8), 4);
+        ST4(d, PACK_LO(e, o));
+        ST2(d + 4, PACK_HI(o));
+    }
+}
+
+static void box_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+{
+    /* SIMD pairs start at x = 1 (column 2x - 1 = 1 needs no clamp); the
+     * pair starting at x reads up to sample 3 (2x + 4) + 3 < 3 sw. */
+    const int xa = 1;
+    int np = 0;
+    if (sw >= 8 && dw >= 3) {
+        const int xlast = (sw - 6) / 2; /* largest first pixel of a pair */
+        np = simd_imin((xlast - xa) / 2 + 1, (dw - xa) / 2);
+        if (np < 0)
+            np = 0;
+    }
+    if (np == 0) {
+        bloom_row_box_range_c(s, dst, 0, dw, sw);
+        return;
+    }
+    bloom_row_box_range_c(s, dst, 0, xa, sw);
+    box_pairs(s, dst, xa, np);
+    bloom_row_box_range_c(s, dst, xa + 2 * np, dw, sw);
+}
+
+/* ---- tent up ------------------------------------------------------------- */
+
+/* (3a + 4b + c + 4) >> 3 exactly (see the top of the file). */
+static inline VT tent3(VT a, VT b, VT c)
+{
+    const VT k7 = DUP(7u), k4 = DUP(4u);
+    const VT ha = SHR(a, 3), hb = SHR(b, 3), hc = SHR(c, 3);
+    const VT la = AND(a, k7), lb = AND(b, k7), lc = AND(c, k7);
+    const VT hi = ADD(ADD(ADD(ha, SHL(ha, 1)), SHL(hb, 2)), hc);
+    const VT lo = ADD(ADD(ADD(la, SHL(la, 1)), SHL(lb, 2)), ADD(lc, k4));
+    return ADD_SHR3(hi, lo);
+}
+
+/* Output columns 2 ma .. 2 (ma + np) - 1 in pairs (ma >= 1); dst and add
+ * point at column 2 ma. Reads low-resolution columns ma - 1 .. ma + np and
+ * one sample past them. Odd rows weigh (1, 4, 3) = (3, 4, 1) on the rows
+ * in reverse, odd columns likewise. */
+static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                       int ma, int np)
+{
+    const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
+    const VT k7 = DUP(7u), k4 = DUP(4u);
+    size_t i = (size_t)(ma - 1) * 3u;
+    const VT vp = tent3(LD4(a + i), LD4(b + i), LD4(c + i));
+    i += 3u;
+    const VT vc = tent3(LD4(a + i), LD4(b + i), LD4(c + i));
+    VT hp = SHR(vp, 3), lp = AND(vp, k7), hc = SHR(vc, 3), lc = AND(vc, k7);
+    for (int j = 0; j < np; j++, dst += 6) {
+        i += 3u;
+        const VT vn = tent3(LD4(a + i), LD4(b + i), LD4(c + i));
+        const VT hn = SHR(vn, 3), ln = AND(vn, k7);
+        /* even: 3 vp + 4 vc + vn; odd: vp + 4 vc + 3 vn; split as in tent3 */
+        const VT q = ADD(SHL(hc, 2), ADD(hp, hn));
+        const VT ql = ADD(ADD(SHL(lc, 2), ADD(lp, ln)), k4);
+        const VT e = ADD_SHR3(ADD(q, SHL(hp, 1)), ADD(ql, SHL(lp, 1)));
+        const VT o = ADD_SHR3(ADD(q, SHL(hn, 1)), ADD(ql, SHL(ln, 1)));
+        VT lo4 = PACK_LO(e, o), hi2 = PACK_HI(o);
+        if (add) {
+            lo4 = ADD(lo4, LD4(add));
+            hi2 = ADD(hi2, LD2(add + 4));
+            add += 6;
+        }
+        ST4(dst, lo4);
+        ST2(dst + 4, hi2);
+        hp = hc;
+        lp = lc;
+        hc = hn;
+        lc = ln;
+    }
+}
+
+static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                     int x0, int n, int sw)
+{
+    /* Pairs (2m, 2m + 1) inside [x0, x0 + n) with 1 <= m and m + 1 <= sw - 2
+     * (column m + 1 is read with one sample past it). */
+    const int end = x0 + n;
+    const int ma = simd_imax((x0 + 1) >> 1, 1);
+    const int mb = end >= 2 ? simd_imin((end - 2) >> 1, sw - 3) : -1;
+    const int np = mb >= ma ? mb - ma + 1 : 0;
+    if (np < 2) {
+        bloom_row_tent_c(u, odd, add, dst, x0, n, sw);
+        return;
+    }
+    const int xa = 2 * ma, xb = 2 * (ma + np);
+    if (xa > x0)
+        bloom_row_tent_c(u, odd, add, dst, x0, xa - x0, sw);
+    tent_pairs(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma,
+               np);
+    if (end > xb)
+        bloom_row_tent_c(u, odd, add ? add + (size_t)(xb - x0) * 3u : NULL,
+                         dst + (size_t)(xb - x0) * 3u, xb, end - xb, sw);
+}

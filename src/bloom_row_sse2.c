@@ -1,0 +1,72 @@
+/* SSE2 twins of the hot row kernels (x86-64, where SSE2 is baseline: no
+ * run-time detection). Same bits as the C kernels of bloom_row.c; the
+ * kernels are written once in bloom_row_simd.h. Empty on other targets. */
+#include "bloom_internal.h"
+
+#if defined(BLOOM_SIMD_SSE2)
+#include <emmintrin.h>
+
+typedef __m128i VT;
+#define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
+#define ST4(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
+#define LD2(p) _mm_loadl_epi64((const __m128i *)(const void *)(p))
+#define ST2(p, v) _mm_storel_epi64((__m128i *)(void *)(p), (v))
+#define ADD(a, b) _mm_add_epi32((a), (b))
+#define AND(a, b) _mm_and_si128((a), (b))
+#define SHL(a, n) _mm_slli_epi32((a), (n))
+#define SHR(a, n) _mm_srli_epi32((a), (n))
+#define DUP(c) _mm_set1_epi32((int)(c))
+#define ADD_SHR3(acc, v) _mm_add_epi32((acc), _mm_srli_epi32((v), 3))
+
+/* [e0 e1 e2 o0]: shufps moves the bits untouched. */
+static inline __m128i pack_lo(__m128i e, __m128i o)
+{
+    const __m128 ef = _mm_castsi128_ps(e);
+    const __m128 t = _mm_shuffle_ps(ef, _mm_castsi128_ps(o), _MM_SHUFFLE(0, 0, 2, 2)); /* e2 e2 o0 o0 */
+    return _mm_castps_si128(_mm_shuffle_ps(ef, t, _MM_SHUFFLE(2, 0, 1, 0)));
+}
+#define PACK_LO(e, o) pack_lo((e), (o))
+#define PACK_HI(o) _mm_srli_si128((o), 4)
+
+#include "bloom_row_simd.h"
+
+void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+{
+    box_any(s, dst, dw, sw);
+}
+
+void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
+                             uint32_t *dst, int x0, int n, int sw)
+{
+    tent_any(u, odd, add, dst, x0, n, sw);
+}
+
+/* Lanes 0 and 2 of bl and sv (as 64-bit lanes): ((I bl + 32768) >> 16) + sv,
+ * saturated to 2^32 - 1 in the low 32 bits. */
+static inline __m128i comp2(__m128i bl, __m128i sv, __m128i I, __m128i rnd, __m128i zero)
+{
+    __m128i v = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(bl, I), rnd), 16);
+    v = _mm_add_epi64(v, sv);
+    /* high half non-zero: low half becomes all ones */
+    const __m128i big = _mm_cmpeq_epi32(_mm_srli_epi64(v, 32), zero); /* low dword: ones if fits */
+    return _mm_or_si128(v, _mm_andnot_si128(big, _mm_set1_epi32(-1)));
+}
+
+void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity)
+{
+    const __m128i I = _mm_set1_epi32((int)intensity), rnd = _mm_set1_epi64x(32768);
+    const __m128i zero = _mm_setzero_si128(), lo32 = _mm_set1_epi64x(0xFFFFFFFFll);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const __m128i b = LD4(bl + i), s = LD4(sv + i);
+        const __m128i r02 = comp2(b, _mm_and_si128(s, lo32), I, rnd, zero);
+        const __m128i r13 = comp2(_mm_srli_epi64(b, 32), _mm_srli_epi64(s, 32), I, rnd, zero);
+        ST4(bl + i, _mm_or_si128(_mm_and_si128(r02, lo32), _mm_slli_epi64(r13, 32)));
+    }
+    if (i < n)
+        bloom_row_composite_c(bl + i, sv + i, n - i, intensity);
+}
+
+#else
+typedef int bloom_row_sse2_empty; /* ISO C wants a declaration in every file */
+#endif

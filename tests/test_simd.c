@@ -1,0 +1,333 @@
+/* The SIMD row kernels (SSE2 on x86-64, NEON on aarch64) against their C
+ * twins, bit for bit: every kernel at many widths, unaligned pointers,
+ * random and extreme inputs; then whole frames through bloom_process with
+ * and without BLOOM_FLAG_NO_SIMD. On a target without SIMD kernels it
+ * compares the C kernels with themselves (and says so). */
+#include "bloom_internal.h"
+#include "harness.h"
+#include "testutil.h"
+
+static const int widths[] = {1, 2, 3, 7, 8, 15, 16, 17, 31, 33, 1920, 1921};
+#define NWIDTHS ((int)(sizeof widths / sizeof widths[0]))
+#define GUARD 4u /* words after every output row */
+#define GUARD_WORD 0xA5A5A5A5u
+#define SMAX ((1u << 28) - 16u) /* largest linear sample */
+
+static uint32_t seed = 12345u;
+
+/* A row of n words at `off` words past a fresh allocation of exactly
+ * off + n (+ guard) words: reads past the end hit the sanitizer. */
+typedef struct {
+    uint32_t *base, *p;
+    size_t n;
+} row_t;
+
+static row_t row_new(size_t n, int off, int guard)
+{
+    row_t r;
+    const size_t total = (size_t)off + n + (guard ? GUARD : 0u);
+    r.base = (uint32_t *)xmalloc(total * sizeof(uint32_t) + (total ? 0u : 4u));
+    r.p = r.base + off;
+    r.n = n;
+    for (size_t i = 0; i < total; i++)
+        r.base[i] = GUARD_WORD;
+    return r;
+}
+
+static int row_guard_ok(const row_t *r)
+{
+    for (size_t i = 0; i < GUARD; i++)
+        if (r->p[r->n + i] != GUARD_WORD)
+            return 0;
+    return 1;
+}
+
+/* mode 0: random samples up to SMAX; 1: all SMAX; 2: random 0/SMAX/small;
+ * 3: any 32-bit value (sums wrap the same way in C and SIMD). */
+static uint32_t sample(int mode, uint32_t max)
+{
+    const uint32_t r = rng_next(&seed);
+    switch (mode) {
+    case 0:
+        return r % (max + 1u == 0u ? 0xFFFFFFFFu : max + 1u);
+    case 1:
+        return max;
+    case 2: {
+        const uint32_t k = r & 3u;
+        return k == 0 ? 0u : k == 1 ? max : k == 2 ? max - (r >> 28) : (r >> 8) & 15u;
+    }
+    default:
+        return r;
+    }
+}
+
+static void fill(uint32_t *p, size_t n, int mode, uint32_t max)
+{
+    for (size_t i = 0; i < n; i++)
+        p[i] = sample(mode, max);
+}
+
+static void test_box(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    int bad = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int sw = widths[wi], dw = (sw + 1) / 2;
+        for (int mode = 0; mode < 4; mode++)
+            for (int off = 0; off < 4; off++) {
+                row_t s[4];
+                const uint32_t *sp[4];
+                for (int i = 0; i < 4; i++) {
+                    s[i] = row_new((size_t)sw * 3u, (off + i) & 3, 0);
+                    fill(s[i].p, (size_t)sw * 3u, mode, SMAX);
+                    sp[i] = s[i].p;
+                }
+                row_t a = row_new((size_t)dw * 3u, off, 1), c = row_new((size_t)dw * 3u, 3 - off, 1);
+                ks->box(sp, a.p, dw, sw);
+                kc->box(sp, c.p, dw, sw);
+                const int same = memcmp(a.p, c.p, (size_t)dw * 3u * sizeof(uint32_t)) == 0;
+                if (!same || !row_guard_ok(&a) || !row_guard_ok(&c)) {
+                    bad++;
+                    fprintf(stderr, "box: width %d mode %d offset %d: %s\n", sw, mode, off,
+                            same ? "guard overwritten" : "differs");
+                }
+                free(a.base);
+                free(c.base);
+                for (int i = 0; i < 4; i++)
+                    free(s[i].base);
+            }
+    }
+    CHECKF(bad == 0, "%d box cases differ", bad);
+}
+
+/* One tent call of each kernel set on columns x0 .. x0+n-1 of a row of
+ * width w; add: 0 none, 1 separate, 2 in place (add == dst). */
+static int tent_case(const bloom_kernels_t *ks, const bloom_kernels_t *kc, const uint32_t *const u[3],
+                     int odd, int addmode, const uint32_t *addsrc, int x0, int n, int sw, int off)
+{
+    row_t a = row_new((size_t)n * 3u, off, 1), c = row_new((size_t)n * 3u, (off + 2) & 3, 1);
+    row_t ad = row_new((size_t)n * 3u, (off + 1) & 3, 0);
+    memcpy(ad.p, addsrc, (size_t)n * 3u * sizeof(uint32_t));
+    const uint32_t *add_s = NULL, *add_c = NULL;
+    if (addmode == 1) {
+        add_s = add_c = ad.p;
+    } else if (addmode == 2) {
+        memcpy(a.p, addsrc, (size_t)n * 3u * sizeof(uint32_t));
+        memcpy(c.p, addsrc, (size_t)n * 3u * sizeof(uint32_t));
+        add_s = a.p;
+        add_c = c.p;
+    }
+    ks->tent(u, odd, add_s, a.p, x0, n, sw);
+    kc->tent(u, odd, add_c, c.p, x0, n, sw);
+    const int ok = memcmp(a.p, c.p, (size_t)n * 3u * sizeof(uint32_t)) == 0 && row_guard_ok(&a) &&
+                   row_guard_ok(&c) && memcmp(ad.p, addsrc, (size_t)n * 3u * sizeof(uint32_t)) == 0;
+    free(a.base);
+    free(c.base);
+    free(ad.base);
+    return ok;
+}
+
+static void test_tent(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    int bad = 0, cases = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int sw = widths[wi];
+        for (int mode = 0; mode < 4; mode++)
+            for (int off = 0; off < 4; off++) {
+                row_t u[3];
+                const uint32_t *up[3];
+                for (int i = 0; i < 3; i++) {
+                    u[i] = row_new((size_t)sw * 3u, (off + i + 1) & 3, 0);
+                    /* U sums: anything below 2^32 */
+                    fill(u[i].p, (size_t)sw * 3u, mode == 3 ? 0 : mode, 0xFFFFFFFFu);
+                    up[i] = u[i].p;
+                }
+                for (int w = 2 * sw - 1; w <= 2 * sw; w++) {
+                    if (w < 1)
+                        continue;
+                    uint32_t *addsrc = (uint32_t *)xmalloc((size_t)w * 3u * sizeof(uint32_t));
+                    fill(addsrc, (size_t)w * 3u, mode, mode == 3 ? 0xFFFFFFFFu : SMAX);
+                    for (int odd = 0; odd < 2; odd++)
+                        for (int addmode = 0; addmode < 3; addmode++) {
+                            /* the whole row, the output kernel's chunks, random ranges */
+                            int ranges[12][2], nr = 0;
+                            ranges[nr][0] = 0;
+                            ranges[nr++][1] = w;
+                            for (int x0 = 0; x0 < w && nr < 6; x0 += BLOOM_OUT_CHUNK) {
+                                ranges[nr][0] = x0;
+                                ranges[nr++][1] = w - x0 < BLOOM_OUT_CHUNK ? w - x0 : BLOOM_OUT_CHUNK;
+                            }
+                            if (w > BLOOM_OUT_CHUNK) { /* the last chunk */
+                                const int x0 = (w - 1) / BLOOM_OUT_CHUNK * BLOOM_OUT_CHUNK;
+                                ranges[nr][0] = x0;
+                                ranges[nr++][1] = w - x0;
+                            }
+                            while (nr < 12) {
+                                const int x0 = (int)(rng_next(&seed) % (uint32_t)w);
+                                ranges[nr][0] = x0;
+                                ranges[nr++][1] = 1 + (int)(rng_next(&seed) % (uint32_t)(w - x0));
+                            }
+                            for (int r = 0; r < nr; r++) {
+                                const int x0 = ranges[r][0], n = ranges[r][1];
+                                cases++;
+                                if (!tent_case(ks, kc, up, odd, addmode, addsrc + (size_t)x0 * 3u, x0, n,
+                                               sw, (off + r) & 3)) {
+                                    bad++;
+                                    fprintf(stderr,
+                                            "tent: sw %d w %d mode %d odd %d add %d x0 %d n %d differs\n",
+                                            sw, w, mode, odd, addmode, x0, n);
+                                }
+                            }
+                        }
+                    free(addsrc);
+                }
+                for (int i = 0; i < 3; i++)
+                    free(u[i].base);
+            }
+    }
+    CHECKF(bad == 0, "%d of %d tent cases differ", bad, cases);
+}
+
+static void test_composite(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    static const uint32_t Is[] = {0u, 1u, 65536u, 14707629u, 0xFFFFFFFFu, 12345678u};
+    int bad = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const size_t n = (size_t)widths[wi] * 3u;
+        for (int mode = 0; mode < 4; mode++)
+            for (int ii = 0; ii < (int)(sizeof Is / sizeof Is[0]) + 2; ii++) {
+                const uint32_t I = ii < (int)(sizeof Is / sizeof Is[0]) ? Is[ii]
+                                                                         : rng_next(&seed) % 14707630u;
+                const int off = ii & 3;
+                row_t sv = row_new(n, off, 0), a = row_new(n, (off + 1) & 3, 1), c = row_new(n, 3 - off, 1);
+                fill(sv.p, n, mode == 3 ? 0 : mode, SMAX);
+                fill(a.p, n, mode == 3 ? 3 : mode, 0xFFFFFFFFu);
+                memcpy(c.p, a.p, n * sizeof(uint32_t));
+                ks->composite(a.p, sv.p, (int)n, I);
+                kc->composite(c.p, sv.p, (int)n, I);
+                /* and against the formula itself */
+                int ok = memcmp(a.p, c.p, n * sizeof(uint32_t)) == 0 && row_guard_ok(&a) && row_guard_ok(&c);
+                if (!ok) {
+                    bad++;
+                    fprintf(stderr, "composite: n %zu mode %d I %u differs\n", n, mode, (unsigned)I);
+                }
+                free(sv.base);
+                free(a.base);
+                free(c.base);
+            }
+    }
+    CHECKF(bad == 0, "%d composite cases differ", bad);
+}
+
+/* The composite of the C kernel against the formula written out. */
+static void test_composite_formula(const bloom_kernels_t *ks)
+{
+    uint32_t bl[8] = {0u, 1u, 0xFFFFFFFFu, 0x80000000u, 123456789u, 0xFFFFFFFEu, 65535u, 65536u};
+    uint32_t sv[8] = {0u, SMAX, SMAX, 1u, 0u, 7u, SMAX, 3u};
+    const uint32_t I = 14707629u;
+    uint32_t r[8];
+    memcpy(r, bl, sizeof r);
+    ks->composite(r, sv, 8, I);
+    int bad = 0;
+    for (int i = 0; i < 8; i++) {
+        const uint64_t v = (((uint64_t)I * bl[i] + 32768u) >> 16) + sv[i];
+        bad += r[i] != (v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v);
+    }
+    CHECK(bad == 0);
+}
+
+/* Whole frames: SIMD engine against the NO_SIMD engine. */
+static void test_frames(void)
+{
+    static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {17, 9}, {33, 31}, {64, 48}, {101, 37}, {257, 130}};
+    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                          BLOOM_FMT_RGBQ16};
+    static const uint32_t flagsets[] = {0u, BLOOM_FLAG_LINEAR, BLOOM_FLAG_DEBUG_VIEW, BLOOM_FLAG_NO_SKIP,
+                                        BLOOM_FLAG_COPY_SOURCE | BLOOM_FLAG_LINEAR};
+    int bad = 0, frames = 0;
+    for (int si = 0; si < (int)(sizeof sizes / sizeof sizes[0]); si++)
+        for (int fi = 0; fi < 4; fi++)
+            for (int gi = 0; gi < 5; gi++) {
+                if (bloom_format_bpp(fmts[fi]) == 0)
+                    continue;
+                bloom_config_t c;
+                bloom_config_default(&c, sizes[si][0], sizes[si][1]);
+                c.in_fmt = fmts[fi];
+                c.out_fmt = fmts[(fi + gi) % 4];
+                if (bloom_format_bpp(c.out_fmt) == 0)
+                    c.out_fmt = c.in_fmt;
+                c.flags = flagsets[gi];
+                c.levels = 1 + (si + gi) % 9;
+                c.threshold = BLOOM_Q16(gi == 4 ? 0.0 : 0.3);
+                c.soft_knee = BLOOM_Q16(gi == 1 ? 0.0 : 0.5);
+                c.intensity = BLOOM_Q16(gi == 2 ? 10.0 : 1.5);
+                frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(si * 31 + fi * 7 + gi));
+                frame_t a = run_engine(&c, &src);
+                bloom_config_t cc = c;
+                cc.flags |= BLOOM_FLAG_NO_SIMD;
+                frame_t b = run_engine(&cc, &src);
+                frames++;
+                if (!frame_equal(&a, &b) || !frame_intact(&a) || !frame_intact(&b)) {
+                    bad++;
+                    fprintf(stderr, "frame %dx%d in %d out %d flags %u levels %d: SIMD differs\n", c.width,
+                            c.height, (int)c.in_fmt, (int)c.out_fmt, (unsigned)c.flags, c.levels);
+                }
+                frame_free(&a);
+                frame_free(&b);
+                frame_free(&src);
+            }
+    /* The worst case: every sample at the maximum, threshold 0, intensity 10. */
+    if (BLOOM_USE_RGBQ16) {
+        for (int lv = 5; lv <= 9; lv += 4) {
+            bloom_config_t c;
+            bloom_config_default(&c, 300, 260);
+            c.in_fmt = c.out_fmt = BLOOM_FMT_RGBQ16;
+            c.levels = lv;
+            c.threshold = 0;
+            c.intensity = BLOOM_MAX_INTENSITY;
+            c.flags = lv == 9 ? BLOOM_FLAG_DEBUG_VIEW : 0u;
+            frame_t src = frame_alloc(c.width, c.height, c.in_fmt, (int)BLOOM_MAX_LINEAR);
+            frame_t a = run_engine(&c, &src);
+            bloom_config_t cc = c;
+            cc.flags |= BLOOM_FLAG_NO_SIMD;
+            frame_t b = run_engine(&cc, &src);
+            frames++;
+            if (!frame_equal(&a, &b)) {
+                bad++;
+                fprintf(stderr, "extreme frame, %d levels: SIMD differs\n", lv);
+            }
+            frame_free(&a);
+            frame_free(&b);
+            frame_free(&src);
+        }
+    }
+    CHECKF(bad == 0, "%d of %d frames differ", bad, frames);
+    printf("frames: %d configurations, SIMD and NO_SIMD %s\n", frames, bad ? "DIFFER" : "identical");
+}
+
+int main(void)
+{
+    bloom_kernels_t ks, kc;
+    bloom_kernels_select(&ks, 0);
+    bloom_kernels_select(&kc, BLOOM_FLAG_NO_SIMD);
+    CHECK(!kc.simd && kc.box == bloom_row_box_c && kc.tent == bloom_row_tent_c);
+    if (ks.simd)
+        printf("SIMD kernels: %s (box, tent, composite) against C\n", ks.name);
+    else
+        printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");
+
+    /* the flag is accepted; the next bit is not */
+    bloom_config_t c;
+    bloom_config_default(&c, 16, 16);
+    c.flags = BLOOM_FLAG_NO_SIMD;
+    CHECK(bloom_query(&c, NULL) == BLOOM_OK);
+    c.flags = BLOOM_FLAG_NO_SIMD << 1;
+    CHECK(bloom_query(&c, NULL) == BLOOM_E_FLAGS);
+
+    test_box(&ks, &kc);
+    test_tent(&ks, &kc);
+    test_composite(&ks, &kc);
+    test_composite_formula(&ks);
+    test_composite_formula(&kc);
+    test_frames();
+    return harness_finish();
+}
