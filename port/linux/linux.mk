@@ -3,12 +3,15 @@
 #   make bloom_cam          build/bloom_cam (with GPIO when libgpiod 1.x is installed)
 #   make bloom_cam_static   build/linux/bloom_cam.static (for an initramfs or a board)
 #   make test-linux-host    pure parts, no device needed (a CHECKS target of make test)
-#   make test-linux         against the kernel's own vivid/vfb drivers under
-#                           qemu-system-x86_64 (port/linux/kernel/run.sh)
+#   make test-linux         against the kernel's own vivid/bochs-drm/vfb drivers
+#                           under qemu-system-x86_64 (port/linux/kernel/run.sh),
+#                           also a CHECKS target of make test
 #
 # Debian packages: libgpiod-dev (optional: without it --gpio-* are refused);
-# for test-linux also qemu-system-x86, busybox-static and the kernel package
-# that port/linux/kernel/run.sh downloads into build/linux/kernel.
+# for test-linux also qemu-system-x86, busybox-static (installed by run.sh
+# when missing), gcc-12 (the kernel's compiler, for gpio-sim) and the packages
+# run.sh downloads (never installs) into build/linux/kernel: linux-image-KVER,
+# linux-headers-KVER with its -common and linux-kbuild, linux-source.
 
 CAM_DIR := port/linux
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
@@ -26,6 +29,12 @@ CAM_GPIO_LIBS :=
 endif
 
 CHECKS += test-linux-host
+# Under qemu TCG, about 45 s on 2 cores (the first run also downloads the
+# kernel, headers and source packages and builds gpio-sim: about 25 s more);
+# it installs qemu-system-x86 and busybox-static itself when run as root, and
+# prints "skipped: ..." (a skip, not a failure) where they or the kernel are
+# missing.
+CHECKS += test-linux
 .PHONY: bloom_cam bloom_cam_static test-linux-host test-linux linux-clang
 
 bloom_cam: $(B)/bloom_cam

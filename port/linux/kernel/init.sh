@@ -1,5 +1,5 @@
 #!/bin/busybox sh
-# /init of the test initramfs (make test-linux): loads vivid and vfb, runs
+# /init of the test initramfs (make test-linux): loads vivid, vfb and bochs, runs
 # bloom_cam against them, writes a tar of the results to /dev/vda and
 # reports through isa-debug-exit (port 0xf4: 0 = every case ran).
 /bin/busybox --install -s /bin
@@ -28,10 +28,10 @@ vid=""
 for v in /sys/class/video4linux/video*; do
     case "$(cat "$v/name")" in *vid-cap*) vid="/dev/${v##*/}"; break;; esac
 done
-fb16=$(fb_by_id "$FB16_ID"); fb32=$(fb_by_id "$FB32_ID")
-log "capture $vid, 16 bpp $fb16 ($FB16_ID), 32 bpp $fb32 ($FB32_ID)"
+fb16=$(fb_by_id "$FB16_ID"); fb32=$(fb_by_id "$FB32_ID"); fbx=$(fb_by_id "$FBX_ID")
+log "capture $vid, 16 bpp $fb16 ($FB16_ID), 32 bpp $fb32 ($FB32_ID), XBGR $fbx ($FBX_ID)"
 for f in /sys/class/graphics/fb[0-9]*; do log "${f##*/}: $(cat $f/name) $(cat $f/virtual_size) $(cat $f/bits_per_pixel) bpp"; done
-[ -n "$vid" ] && [ -n "$fb16" ] && [ -n "$fb32" ] || { log "devices missing"; finish 1; }
+[ -n "$vid" ] && [ -n "$fb16" ] && [ -n "$fb32" ] && [ -n "$fbx" ] || { log "devices missing"; finish 1; }
 /vctl "$vid" "OSD Text Mode" 2 2>>/out/guest.log
 
 # name format fb extra-options...: capture -> bloom -> framebuffer
@@ -48,17 +48,78 @@ run yuyv-16 yuyv "$fb16"
 run rgb24-16 rgb24 "$fb16"
 run grey-16 grey "$fb16"
 run bloomonly-16 yuyv "$fb16" --mode bloom-only
-# vfb's 32 bpp layout is XBGR8888 (refused); vivid's screen at 32 bpp instead
-fbset -fb "$fb16" -depth 32 >> /out/guest.log 2>&1 || log "fbset -depth 32 failed"
-log "$fb16 now $(cat /sys/class/graphics/${fb16#/dev/}/bits_per_pixel) bpp"
-[ "$(cat /sys/class/graphics/${fb16#/dev/}/bits_per_pixel)" = 32 ] && fb32=$fb16
+# vfb's 32 bpp layout is XBGR8888: refused by name
+run xbgr yuyv "$fbx"
 run yuyv-32 yuyv "$fb32"
 run rgb24-32 rgb24 "$fb32"
 run grey-32 grey "$fb32"
 run off-32 rgb24 "$fb32" --mode off
 # speed under emulation, 640x480 YUYV to the 32 bpp screen
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 8 --stats -q > /out/speed.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q > /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt
+
+# GPIO through gpio-sim (configfs), when run.sh could build it: a bank of two
+# lines, "frame" (bloom_cam's output) and "button" (an input whose pull is
+# changed from sysfs). Every value the kernel sets on a line is traced
+# (tracefs gpio_value), so the toggles are counted exactly, not sampled.
+wait_for() { # condition... : true once it holds, false after 60 s
+    n=0; until eval "$1"; do n=$((n + 1)); [ $n -ge 600 ] && return 1; sleep 0.1; done; }
+if [ "$GPIO" = 1 ]; then
+    mount -t configfs none /sys/kernel/config
+    mount -t tracefs none /sys/kernel/tracing
+    T=/sys/kernel/tracing
+    g=/sys/kernel/config/gpio-sim/cam
+    { mkdir $g $g/bank0 $g/bank0/line0 $g/bank0/line1 && echo 2 > $g/bank0/num_lines &&
+      echo frame > $g/bank0/line0/name && echo button > $g/bank0/line1/name &&
+      echo 1 > $g/live; } 2>>/out/guest.log || log "gpio-sim setup failed"
+    chip=$(cat $g/bank0/chip_name); sim=/sys/devices/platform/$(cat $g/dev_name)/$chip
+    base=$(cat /sys/devices/platform/$(cat $g/dev_name)/gpio/gpiochip*/base | head -n 1)
+    log "gpio-sim: $chip at $sim, base $base, lines $(cat $sim/sim_gpio0/value)$(cat $sim/sim_gpio1/value)"
+    { echo "chip $chip base $base"; ls -l /sys/class/gpio/ $sim/; } > /out/gpio.txt 2>&1
+    echo 1 > $T/events/gpio/gpio_value/enable; echo > $T/trace
+    # frame line: stopped (SIGSTOP, waited for) at moments during the run, the
+    # sysfs value must equal the last value traced for the line
+    /bloom_cam --device "$vid" --fb "$fb16" --format yuyv --size "$SIZE" --frames "$GFRAMES" \
+        --gpio-frame "$chip:frame" --stats > /out/gpio-frame.txt 2>&1 &
+    pid=$!
+    : > /out/gpio-samples.txt
+    while kill -STOP $pid 2>/dev/null; do
+        st=R
+        while [ "$st" != T ] && [ "$st" != Z ] && [ -e /proc/$pid/stat ]; do
+            read -r _ _ st _ < /proc/$pid/stat; done
+        [ "$st" = T ] || break
+        echo "$(cat $sim/sim_gpio0/value) $(grep -o "gpio_value: $base set [01]" $T/trace | tail -n 1 |
+            sed 's/.* //')" >> /out/gpio-samples.txt
+        kill -CONT $pid
+        sleep 0.2
+    done
+    wait $pid; echo "exit $?" >> /out/gpio-frame.txt
+    log "gpio-frame: $(tail -n 1 /out/gpio-frame.txt), $(wc -l < /out/gpio-samples.txt) samples"
+    grep -o "gpio_value: $base set [01]" $T/trace | sed 's/.* //' | tr -d '\n' > /out/gpio-trace.txt
+    cp $T/trace /out/gpio-trace-all.txt
+    echo 0 > $T/events/gpio/gpio_value/enable
+    # button: once bloom_cam holds the line with its edge interrupt (it has
+    # recorded a frame, so the request returned) and its pull-up reads 1, a
+    # pull-down from sysfs is a press: bloom -> off; stopped after a frame
+    # recorded after the switch was announced, so the last frame shown is "off"
+    /bloom_cam --device "$vid" --fb "$fb16" --format yuyv --size "$SIZE" \
+        --threshold 0.6 --intensity 1.5 --gpio-button "$chip:button" \
+        --record /out/button.raw --dump-fb /out/button.fb > /out/button.txt 2>&1 &
+    pid=$!
+    if wait_for '[ -s /out/button.raw ] && [ "$(cat $sim/sim_gpio1/value)" = 1 ]'; then
+        echo pull-down > $sim/sim_gpio1/pull
+        if wait_for 'grep -q "mode off" /out/button.txt'; then
+            s0=$(wc -c < /out/button.raw)
+            wait_for '[ "$(wc -c < /out/button.raw)" -gt "$s0" ]' || log "button: no frame after the switch"
+        else
+            log "button: no mode change within 60 s"
+        fi
+    else
+        log "button: no frame, or the line never read 1 (pull-up), within 60 s"
+    fi
+    kill -TERM $pid; wait $pid; echo "exit $?" >> /out/button.txt
+    log "button: $(tail -n 1 /out/button.txt)"
+fi
 
 # faults: each must end with its message and a clean stop
 # SIGTERM while streaming
