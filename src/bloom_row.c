@@ -187,9 +187,6 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
 
 /* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
  * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
- * Cortex-M); the results fit in 32 again. */
-/* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
- * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
  * Cortex-M); the results fit in 32 again. `odd` is a constant after
  * inlining, so the weights are shifts and adds. */
 static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
