@@ -11,8 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "imgio.h"
-#include "testutil.h"
+#include "imgframe.h"
 
 typedef struct {
     const char *name;
@@ -163,14 +162,6 @@ static void random_corpus(void)
     }
 }
 
-static frame_t frame_q16_fill(int w, int h, uint32_t v)
-{
-    frame_t f = frame_alloc(w, h, BLOOM_FMT_RGBQ16, 0);
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            frame_set_q16(&f, x, y, v);
-    return f;
-}
 
 /* test_extreme.c's frames, engine only: the largest intermediates, words
  * above the range, a hot pixel at 256.0, saturation, limits, thin frames. */
@@ -252,25 +243,6 @@ static void extreme_corpus(void)
         }
 }
 
-/* PPM to RGB888 (as test_conformance.c), PFM to RGBQ16 via img_float_to_q16. */
-static frame_t frame_from_img(const img_t *im, bloom_format_t fmt)
-{
-    frame_t f = frame_alloc(im->width, im->height, fmt, 0);
-    for (int y = 0; y < im->height; y++)
-        for (int x = 0; x < im->width; x++)
-            for (int ch = 0; ch < 3; ch++) {
-                size_t i = ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels +
-                           (size_t)(im->channels == 3 ? ch : 0);
-                uint8_t *p = f.p + (size_t)y * f.stride + (size_t)x * (size_t)f.bpp;
-                if (im->f32) {
-                    uint32_t q = img_float_to_q16(im->f32[i]);
-                    memcpy(p + 4 * ch, &q, 4);
-                } else {
-                    p[ch] = (uint8_t)(im->u16[i] * 255u / (unsigned)im->maxval);
-                }
-            }
-    return f;
-}
 
 /* Each image: the conformance test's configuration into every output
  * format, and a few parameter sets (levels 1, 5, 9) into RGB888. */
@@ -291,8 +263,8 @@ static void image_corpus(const char *dir)
             errors++;
             continue;
         }
-        const bloom_format_t in = im.f32 ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888;
-        frame_t src = frame_from_img(&im, in);
+        frame_t src = frame_from_img(&im);
+        const bloom_format_t in = src.fmt;
         char what[128];
         for (size_t fi = 0; fi < 4; fi++) {
             bloom_config_t c;

@@ -5,7 +5,7 @@
 
 #include "conform.h"
 #include "harness.h"
-#include "imgio.h"
+#include "imgframe.h"
 
 typedef struct {
     const char *name;
@@ -98,26 +98,6 @@ static void test_random(void)
     CHECK(untouched > 0 && untouched_changed == 0);
 }
 
-/* PPM to RGB888, PFM to RGBQ16 (img_float_to_q16's rule). */
-static frame_t frame_from_img(const img_t *im, bloom_format_t *fmt)
-{
-    *fmt = im->f32 ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888;
-    frame_t f = frame_alloc(im->width, im->height, *fmt, 0);
-    for (int y = 0; y < im->height; y++)
-        for (int x = 0; x < im->width; x++)
-            for (int ch = 0; ch < 3; ch++) {
-                size_t i = ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels +
-                           (size_t)(im->channels == 3 ? ch : 0);
-                uint8_t *p = f.p + (size_t)y * f.stride + (size_t)x * (size_t)f.bpp;
-                if (im->f32) {
-                    uint32_t q = img_float_to_q16(im->f32[i]);
-                    memcpy(p + 4 * ch, &q, 4);
-                } else {
-                    p[ch] = (uint8_t)(im->u16[i] * 255u / (unsigned)im->maxval);
-                }
-            }
-    return f;
-}
 
 static void test_images(void)
 {
@@ -134,8 +114,8 @@ static void test_images(void)
             CHECKF(0, "%s", err);
             continue;
         }
-        bloom_format_t fmt;
-        frame_t src = frame_from_img(&im, &fmt);
+        frame_t src = frame_from_img(&im);
+        const bloom_format_t fmt = src.fmt;
         bloom_config_t c;
         bloom_config_default(&c, im.width, im.height);
         c.in_fmt = fmt;

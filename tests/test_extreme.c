@@ -6,15 +6,6 @@
 #include "conform.h"
 #include "harness.h"
 
-static frame_t frame_q16_fill(int w, int h, uint32_t v)
-{
-    frame_t f = frame_alloc(w, h, BLOOM_FMT_RGBQ16, 0);
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            frame_set_q16(&f, x, y, v);
-    return f;
-}
-
 static void expect_bittrue(const char *what, const bloom_config_t *c, const frame_t *src)
 {
     conform_t r = conform_run(c, src);

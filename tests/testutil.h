@@ -181,6 +181,16 @@ static inline uint32_t tent_weight_sum(int X, int a, int b)
     return s;
 }
 
+/* A linear Q16.16 frame with every sample at v. */
+static inline frame_t frame_q16_fill(int w, int h, uint32_t v)
+{
+    frame_t f = frame_alloc(w, h, BLOOM_FMT_RGBQ16, 0);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            frame_set_q16(&f, x, y, v);
+    return f;
+}
+
 typedef struct {
     guarded_t ws;
     bloom_t *b;

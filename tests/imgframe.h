@@ -1,0 +1,29 @@
+/* A decoded image file as an engine frame: PPM/PGM as RGB888 (8-bit codes;
+ * other maxvals rescaled), PFM as RGBQ16 through img_float_to_q16's rule.
+ * The format is in the returned frame's fmt. */
+#ifndef BLOOM_IMGFRAME_H
+#define BLOOM_IMGFRAME_H
+
+#include "imgio.h"
+#include "testutil.h"
+
+static inline frame_t frame_from_img(const img_t *im)
+{
+    frame_t f = frame_alloc(im->width, im->height, im->f32 ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888, 0);
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++)
+            for (int ch = 0; ch < 3; ch++) {
+                size_t i = ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels +
+                           (size_t)(im->channels == 3 ? ch : 0);
+                uint8_t *p = f.p + (size_t)y * f.stride + (size_t)x * (size_t)f.bpp;
+                if (im->f32) {
+                    uint32_t q = img_float_to_q16(im->f32[i]);
+                    memcpy(p + 4 * ch, &q, 4);
+                } else {
+                    p[ch] = (uint8_t)(im->u16[i] * 255u / (unsigned)im->maxval);
+                }
+            }
+    return f;
+}
+
+#endif
