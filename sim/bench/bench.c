@@ -592,30 +592,6 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
 
 /* ---- main ------------------------------------------------------------------------ */
 
-static int parse_sizes(const char *s, int *w, int *h, int max)
-{
-    int n = 0;
-    if (!strcmp(s, "none"))
-        return 0;
-    while (*s) {
-        char *end;
-        long a = strtol(s, &end, 10);
-        if (*end != 'x')
-            return -1;
-        long b = strtol(end + 1, &end, 10);
-        if (a < 1 || b < 1 || a > BLOOM_MAX_DIM || b > BLOOM_MAX_DIM || n == max)
-            return -1;
-        w[n] = (int)a;
-        h[n] = (int)b;
-        n++;
-        if (*end == ',')
-            end++;
-        else if (*end)
-            return -1;
-        s = end;
-    }
-    return n;
-}
 
 int main(int argc, char **argv)
 {
@@ -647,10 +623,10 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--image"))
             o.image = v;
         else if (!strcmp(a, "--sizes")) {
-            if ((nsizes = parse_sizes(v, sw, sh, MAX_SIZES)) < 1)
+            if ((nsizes = scene_parse_sizes(v, sw, sh, MAX_SIZES)) < 1)
                 die("bad --sizes '%s' (WxH,WxH,...)", v);
         } else if (!strcmp(a, "--model-sizes")) {
-            if ((o.n_model = parse_sizes(v, o.model_w, o.model_h, MAX_SIZES)) < 0)
+            if ((o.n_model = scene_parse_sizes(v, o.model_w, o.model_h, MAX_SIZES)) < 0)
                 die("bad --model-sizes '%s' (WxH,... or none)", v);
         } else if (!strcmp(a, "--runs")) {
             if ((o.runs = atoi(v)) < 1)

@@ -161,3 +161,30 @@ int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t 
     }
     return 0;
 }
+
+/* "WxH,WxH,..." into w[], h[] (at most max); "none" is 0 sizes; -1 on a
+ * malformed list or a size outside 1..BLOOM_MAX_DIM. */
+int scene_parse_sizes(const char *s, int *w, int *h, int max)
+{
+    int n = 0;
+    if (!strcmp(s, "none"))
+        return 0;
+    while (*s) {
+        char *end;
+        long a = strtol(s, &end, 10);
+        if (*end != 'x')
+            return -1;
+        long b = strtol(end + 1, &end, 10);
+        if (a < 1 || b < 1 || a > BLOOM_MAX_DIM || b > BLOOM_MAX_DIM || n == max)
+            return -1;
+        w[n] = (int)a;
+        h[n] = (int)b;
+        n++;
+        if (*end == ',')
+            end++;
+        else if (*end)
+            return -1;
+        s = end;
+    }
+    return n;
+}

@@ -25,4 +25,6 @@ int scene_make(const char *image_path, int w, int h, uint8_t *rgb, char *err, si
 int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t *dst,
                   size_t stride);
 
+int scene_parse_sizes(const char *s, int *w, int *h, int max); /* "WxH,...", "none" */
+
 #endif

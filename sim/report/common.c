@@ -236,28 +236,6 @@ int rrun_engine(void *ctx, const uint8_t *src, uint8_t *dst)
 
 /* ---- misc ---------------------------------------------------------------------- */
 
-int rparse_sizes(const char *s, int *w, int *h, int max)
-{
-    int n = 0;
-    while (*s) {
-        char *end;
-        const long a = strtol(s, &end, 10);
-        if (*end != 'x')
-            return -1;
-        const long b = strtol(end + 1, &end, 10);
-        if (a < 1 || b < 1 || a > BLOOM_MAX_DIM || b > BLOOM_MAX_DIM || n == max)
-            return -1;
-        w[n] = (int)a;
-        h[n] = (int)b;
-        n++;
-        if (*end == ',')
-            end++;
-        else if (*end)
-            return -1;
-        s = end;
-    }
-    return n;
-}
 
 FILE *ropen(const char *path, char *tmp, size_t tmplen)
 {

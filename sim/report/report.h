@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "bloom.h"
+#include "scene.h" /* scene_parse_sizes */
 
 /* ---- inputs (inputs.c) --------------------------------------------------- */
 
@@ -120,7 +121,6 @@ int rrun_engine(void *ctx, const uint8_t *src, uint8_t *dst);
 void rdie(const char *fmt, ...);
 void *rxmalloc(size_t n);
 /* "WxH,WxH,..." into w/h (at most max). Returns the count or -1. */
-int rparse_sizes(const char *s, int *w, int *h, int max);
 /* Writes through path.tmp and renames on close. */
 FILE *ropen(const char *path, char *tmp, size_t tmplen);
 void rclose(FILE *f, const char *tmp, const char *path);

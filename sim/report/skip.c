@@ -84,7 +84,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--icount"))
             tsv = v;
         else if (!strcmp(a, "--sizes")) {
-            if ((nsizes = rparse_sizes(v, sw, sh, MAX_SIZES)) < 1)
+            if ((nsizes = scene_parse_sizes(v, sw, sh, MAX_SIZES)) < 1)
                 rdie("bad --sizes '%s'", v);
         } else if (!strcmp(a, "--runs"))
             runs = atoi(v);

@@ -175,7 +175,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--data"))
             o.data = v;
         else if (!strcmp(a, "--sizes")) {
-            if ((o.nsizes = rparse_sizes(v, o.sw, o.sh, MAX_SIZES)) < 1)
+            if ((o.nsizes = scene_parse_sizes(v, o.sw, o.sh, MAX_SIZES)) < 1)
                 rdie("bad --sizes '%s'", v);
         } else if (!strcmp(a, "--levels")) {
             if (sscanf(v, "%d-%d", &o.lmin, &o.lmax) != 2 || o.lmin < 1 || o.lmax > BLOOM_MAX_LEVELS ||
