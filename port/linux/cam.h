@@ -11,6 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <poll.h>
+
 #include <linux/fb.h>
 
 #include "bloom.h"
@@ -86,8 +88,15 @@ typedef struct {
     size_t length;
 } cam_vbuf_t;
 
+/* The system calls capture goes through: ioctl(2) and poll(2) unless a test
+ * puts a scripted fake here (test_host.c); cam_v4l2_open sets the defaults. */
+typedef int (*cam_ioctl_fn)(int fd, unsigned long req, void *arg);
+typedef int (*cam_poll_fn)(struct pollfd *fds, nfds_t nfds, int timeout_ms);
+
 typedef struct {
     int fd;
+    cam_ioctl_fn ioctl_fn;
+    cam_poll_fn poll_fn;
     int width, height;
     uint32_t pixelformat, bytesperline, sizeimage;
     cam_vbuf_t bufs[CAM_MAX_BUFFERS];
@@ -110,6 +119,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
                      cam_frame_t *f);
 int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
 void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
+/* ioctl(2), retried while it fails with EINTR. */
 int cam_xioctl(int fd, unsigned long req, void *arg);
 
 /* ---- framebuffer (fbdev.c) ------------------------------------------------- */

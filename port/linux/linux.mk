@@ -51,9 +51,12 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 	  $(CAM_GPIO_LIBS) -o $@
 
 # Host tests of the pure parts, sanitized, against the simulator's own
-# Y'CbCr rule (sim/sim_convert.c) and a double reference. The GPIO module is
+# Y'CbCr rule (sim/sim_convert.c) and a double reference, and of
+# cam_v4l2_dequeue's faults through the ioctl/poll seam in cam_v4l2_t (a
+# scripted fake, no device). The GPIO module is
 # built out here so the refusal of --gpio-* is what is tested.
-CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c
+CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c \
+                $(CAM_DIR)/v4l2.c
 $(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) sim/sim_convert.c sim/sim.h \
                           $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(@D)

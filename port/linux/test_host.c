@@ -2,28 +2,23 @@
  * YUYV/GREY row conversion (bit-identical to the simulator's rule, within one
  * code of the real BT.601 formula), the framebuffer layout check, the
  * placement arithmetic, and the line-buffer feed (one converted row at a
- * time, BLOOM_FLAG_COPY_SOURCE) against a whole converted frame. */
+ * time, BLOOM_FLAG_COPY_SOURCE) against a whole converted frame; and the
+ * capture faults of cam_v4l2_dequeue (EINTR, EAGAIN, short bytesused,
+ * V4L2_BUF_FLAG_ERROR, ENODEV, a poll timeout) through the ioctl/poll seam in
+ * cam_v4l2_t, driven by a scripted fake. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+#include <linux/videodev2.h>
 
 #include "cam.h"
+#include "harness.h"
 #include "sim.h"
 
-static int passed, failed;
-
-#define CHECK(cond, ...)                                                   \
-    do {                                                                   \
-        if (cond) {                                                        \
-            passed++;                                                      \
-        } else {                                                           \
-            failed++;                                                      \
-            printf("FAIL %s:%d: ", __FILE__, __LINE__);                    \
-            printf(__VA_ARGS__);                                           \
-            printf("\n");                                                  \
-        }                                                                  \
-    } while (0)
 
 static int parse(cam_opts_t *o, char *err, const char *a0, const char *a1, const char *a2,
                  const char *a3)
@@ -40,8 +35,8 @@ static void test_opts(void)
 {
     cam_opts_t o;
     char err[256];
-    CHECK(parse(&o, err, NULL, NULL, NULL, NULL) == 0, "no options: %s", err);
-    CHECK(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
+    CHECKF(parse(&o, err, NULL, NULL, NULL, NULL) == 0, "no options: %s", err);
+    CHECKF(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
               o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
               o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) &&
               o.intensity == BLOOM_Q16(1.0) && o.frames == 0 && o.buffers == 4 &&
@@ -55,17 +50,17 @@ static void test_opts(void)
                     "--timeout=500", "-q", NULL};
     int argc = (int)(sizeof argv / sizeof argv[0]) - 1;
     int r = cam_parse_opts(&o, argc, argv, err, sizeof err);
-    CHECK(r == 0, "full command line: %s", err);
-    CHECK(!strcmp(o.device, "/dev/video3") && !strcmp(o.fb, "/dev/fb1") && o.width == 320 &&
+    CHECKF(r == 0, "full command line: %s", err);
+    CHECKF(!strcmp(o.device, "/dev/video3") && !strcmp(o.fb, "/dev/fb1") && o.width == 320 &&
               o.height == 240 && o.format == CAM_FMT_RGB24 && o.levels == 3 &&
               o.threshold == BLOOM_Q16(0.8) && o.knee == BLOOM_Q16(0.25) &&
               o.intensity == BLOOM_Q16(1.5) && o.frames == 10 && o.stats &&
               !strcmp(o.record, "out.raw") && o.mode == CAM_MODE_BLOOM_ONLY && o.buffers == 3 &&
               o.timeout_ms == 500 && o.quiet,
           "full command line values");
-    CHECK(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY,
+    CHECKF(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY,
           "grey");
-    CHECK(parse(&o, err, "--help", NULL, NULL, NULL) == 1, "help");
+    CHECKF(parse(&o, err, "--help", NULL, NULL, NULL) == 1, "help");
 
     static const struct {
         const char *a0, *a1, *a2, *a3, *msg;
@@ -91,10 +86,10 @@ static void test_opts(void)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         r = parse(&o, err, bad[i].a0, bad[i].a1, bad[i].a2, bad[i].a3);
-        CHECK(r == -1 && strstr(err, bad[i].msg), "%s %s: got %d '%s', want '%s'", bad[i].a0,
+        CHECKF(r == -1 && strstr(err, bad[i].msg), "%s %s: got %d '%s', want '%s'", bad[i].a0,
               bad[i].a1 ? bad[i].a1 : "", r, err, bad[i].msg);
     }
-    CHECK(parse(&o, err, "--size", "641x480", "--format", "rgb24") == 0 && o.width == 641,
+    CHECKF(parse(&o, err, "--size", "641x480", "--format", "rgb24") == 0 && o.width == 641,
           "odd width for rgb24");
 }
 
@@ -124,8 +119,8 @@ static void test_yuv(void)
                     }
                 }
             }
-    CHECK(mism == 0, "%ld Y'CbCr triples differ from sim_ycbcr_to_rgb", mism);
-    CHECK(far == 0, "%ld channels more than one code from the BT.601 formula", far);
+    CHECKF(mism == 0, "%ld Y'CbCr triples differ from sim_ycbcr_to_rgb", mism);
+    CHECKF(far == 0, "%ld channels more than one code from the BT.601 formula", far);
 
     enum { W = 38 };
     uint8_t yuyv[2 * W], rgb[3 * W + 3], grey[W];
@@ -144,12 +139,12 @@ static void test_yuv(void)
         cam_ycbcr_to_rgb(p[(x & 1) * 2], p[1], p[3], e);
         bad += memcmp(e, rgb + 3 * x, 3) != 0;
     }
-    CHECK(bad == 0 && rgb[3 * W] == 0xA5, "YUYV row: %d pixels wrong or overrun", bad);
+    CHECKF(bad == 0 && rgb[3 * W] == 0xA5, "YUYV row: %d pixels wrong or overrun", bad);
     cam_grey_row_to_rgb888(grey, rgb, W);
     bad = 0;
     for (int x = 0; x < W; x++)
         bad += rgb[3 * x] != grey[x] || rgb[3 * x + 1] != grey[x] || rgb[3 * x + 2] != grey[x];
-    CHECK(bad == 0 && rgb[3 * W] == 0xA5, "GREY row: %d pixels wrong or overrun", bad);
+    CHECKF(bad == 0 && rgb[3 * W] == 0xA5, "GREY row: %d pixels wrong or overrun", bad);
 }
 
 static void test_fb_format(void)
@@ -173,7 +168,7 @@ static void test_fb_format(void)
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
         char why[64] = "";
         bloom_format_t f = cam_fb_format(&t[i].l, why, sizeof why);
-        CHECK(f == t[i].want && (f || !strcmp(why, t[i].why)), "layout %zu: format %d '%s'", i,
+        CHECKF(f == t[i].want && (f || !strcmp(why, t[i].why)), "layout %zu: format %d '%s'", i,
               (int)f, why);
     }
 }
@@ -196,7 +191,7 @@ static void test_place(void)
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
         cam_place_t p;
         cam_place(t[i].fw, t[i].fh, t[i].sw, t[i].sh, &p);
-        CHECK(!memcmp(&p, &t[i].want, sizeof p),
+        CHECKF(!memcmp(&p, &t[i].want, sizeof p),
               "%dx%d on %dx%d: dst %d,%d src %d,%d size %dx%d", t[i].fw, t[i].fh, t[i].sw,
               t[i].sh, p.dst_x, p.dst_y, p.src_x, p.src_y, p.w, p.h);
     }
@@ -229,14 +224,14 @@ static void test_line_feed(void)
     size_t n1 = bloom_workspace_size(&cfg);
     void *ws1 = aligned_alloc(64, (n1 + 63) / 64 * 64);
     bloom_t *b1;
-    CHECK(bloom_init(&b1, ws1, n1, &cfg) == BLOOM_OK, "init pointer mode");
-    CHECK(bloom_process(b1, rgb, sizeof rgb[0], out_a, sizeof out_a[0]) == BLOOM_OK, "process");
+    CHECKF(bloom_init(&b1, ws1, n1, &cfg) == BLOOM_OK, "init pointer mode");
+    CHECKF(bloom_process(b1, rgb, sizeof rgb[0], out_a, sizeof out_a[0]) == BLOOM_OK, "process");
 
     cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
     size_t n2 = bloom_workspace_size(&cfg);
     void *ws2 = aligned_alloc(64, (n2 + 63) / 64 * 64);
     bloom_t *b2;
-    CHECK(bloom_init(&b2, ws2, n2, &cfg) == BLOOM_OK, "init copy mode");
+    CHECKF(bloom_init(&b2, ws2, n2, &cfg) == BLOOM_OK, "init copy mode");
     int bad = bloom_begin(b2) != BLOOM_OK;
     for (int y = 0; y < H; y++) {
         cam_yuyv_row_to_rgb888(yuyv[y], line, W);
@@ -248,15 +243,192 @@ static void test_line_feed(void)
     }
     while (bloom_pull_row(b2, out_b[bloom_rows_out(b2)]) == BLOOM_OK)
         ;
-    CHECK(!bad && bloom_rows_out(b2) == H, "line feed ran");
-    CHECK(!memcmp(out_a, out_b, sizeof out_a), "line-buffer feed differs from the whole frame");
+    CHECKF(!bad && bloom_rows_out(b2) == H, "line feed ran");
+    CHECKF(!memcmp(out_a, out_b, sizeof out_a), "line-buffer feed differs from the whole frame");
     int glow = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++)
             glow |= out_a[y][x] != 0;
-    CHECK(glow, "the test frame is all black");
+    CHECKF(glow, "the test frame is all black");
     free(ws1);
     free(ws2);
+}
+
+/* ---- capture faults through the ioctl/poll seam ---------------------------
+ * A script of steps, each one poll(2) or one VIDIOC_DQBUF: what it returns,
+ * errno when it fails, revents for a poll, the buffer for a DQBUF. */
+enum { STEP_POLL = 1, STEP_DQBUF };
+typedef struct {
+    int kind, ret, err;
+    short revents;
+    uint32_t index, bytesused, flags, sequence;
+} fake_step_t;
+
+static const fake_step_t *fake_script;
+static int fake_n, fake_at, fake_polls, fake_ioctls, fake_unexpected;
+
+static int fake_poll(struct pollfd *fds, nfds_t nfds, int timeout_ms)
+{
+    (void)timeout_ms;
+    fake_polls++;
+    if (fake_at >= fake_n || fake_script[fake_at].kind != STEP_POLL || nfds < 1) {
+        fake_unexpected++;
+        errno = EIO;
+        return -1;
+    }
+    const fake_step_t *s = &fake_script[fake_at++];
+    for (nfds_t i = 0; i < nfds; i++)
+        fds[i].revents = 0;
+    fds[0].revents = s->revents;
+    if (s->ret < 0)
+        errno = s->err;
+    return s->ret;
+}
+
+static int fake_ioctl(int fd, unsigned long req, void *arg)
+{
+    (void)fd;
+    fake_ioctls++;
+    if (req != (unsigned long)VIDIOC_DQBUF || fake_at >= fake_n ||
+        fake_script[fake_at].kind != STEP_DQBUF) {
+        fake_unexpected++;
+        errno = EIO;
+        return -1;
+    }
+    const fake_step_t *s = &fake_script[fake_at++];
+    if (s->ret < 0) {
+        errno = s->err;
+        return -1;
+    }
+    struct v4l2_buffer *b = arg;
+    b->index = s->index;
+    b->bytesused = s->bytesused;
+    b->flags = s->flags;
+    b->sequence = s->sequence;
+    return 0;
+}
+
+/* Run cam_v4l2_dequeue over a script with stderr captured into msg. */
+static int run_dequeue(const fake_step_t *script, int n, cam_frame_t *f, char *msg, size_t len)
+{
+    enum { W = 16, H = 4, BPL = 2 * W };
+    static uint8_t mem[3][BPL * H];
+    cam_v4l2_t c;
+    memset(&c, 0, sizeof c);
+    c.fd = -1;
+    c.ioctl_fn = fake_ioctl;
+    c.poll_fn = fake_poll;
+    c.width = W;
+    c.height = H;
+    c.pixelformat = V4L2_PIX_FMT_YUYV;
+    c.bytesperline = BPL;
+    c.sizeimage = BPL * H;
+    c.nbufs = 3;
+    for (int i = 0; i < 3; i++) {
+        c.bufs[i].start = mem[i];
+        c.bufs[i].length = sizeof mem[i];
+    }
+    c.streaming = 1;
+    fake_script = script;
+    fake_n = n;
+    fake_at = fake_polls = fake_ioctls = fake_unexpected = 0;
+
+    FILE *tmp = tmpfile();
+    int saved = dup(2);
+    fflush(stderr);
+    if (tmp)
+        dup2(fileno(tmp), 2);
+    memset(f, 0, sizeof *f);
+    int r = cam_v4l2_dequeue(&c, 100, -1, NULL, f);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    msg[0] = '\0';
+    if (tmp) {
+        rewind(tmp);
+        size_t got = fread(msg, 1, len - 1, tmp);
+        msg[got] = '\0';
+        fclose(tmp);
+    }
+    if (f->data) /* as an index into mem, so the test can check which */
+        f->data = (const uint8_t *)(f->data - mem[0]);
+    return r;
+}
+
+static void test_dequeue_faults(void)
+{
+    enum { FULL = 2 * 16 * 4 };
+    char msg[512];
+    cam_frame_t f;
+
+    /* EINTR from DQBUF is retried without polling again, the frame comes. */
+    static const fake_step_t eintr[] = {
+        {STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+        {STEP_DQBUF, -1, EINTR, 0, 0, 0, 0, 0},
+        {STEP_DQBUF, 0, 0, 0, 2, FULL, 0, 7},
+    };
+    int r = run_dequeue(eintr, 3, &f, msg, sizeof msg);
+    CHECKF(r == 0 && f.index == 2 && f.sequence == 7 && f.bytesused == FULL &&
+              (size_t)f.data == 2 * (size_t)FULL && !msg[0],
+          "EINTR retried: r %d index %d sequence %u msg '%s'", r, f.index, (unsigned)f.sequence,
+          msg);
+    CHECKF(fake_polls == 1 && fake_ioctls == 2 && !fake_unexpected && fake_at == 3,
+          "EINTR: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
+
+    /* EAGAIN from DQBUF after a plain POLLIN: poll again, then the frame. */
+    static const fake_step_t eagain[] = {
+        {STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+        {STEP_DQBUF, -1, EAGAIN, 0, 0, 0, 0, 0},
+        {STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+        {STEP_DQBUF, 0, 0, 0, 1, FULL, 0, 8},
+    };
+    r = run_dequeue(eagain, 4, &f, msg, sizeof msg);
+    CHECKF(r == 0 && f.index == 1 && f.sequence == 8 && !msg[0],
+          "EAGAIN waits again: r %d index %d msg '%s'", r, f.index, msg);
+    CHECKF(fake_polls == 2 && fake_ioctls == 2 && !fake_unexpected && fake_at == 4,
+          "EAGAIN: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
+
+    /* A signal during poll: 1, nothing dequeued, no message. */
+    static const fake_step_t sig[] = {{STEP_POLL, -1, EINTR, 0, 0, 0, 0, 0}};
+    r = run_dequeue(sig, 1, &f, msg, sizeof msg);
+    CHECKF(r == 1 && fake_ioctls == 0 && !msg[0], "poll EINTR: r %d msg '%s'", r, msg);
+
+    /* The faults: each -1 with one message naming the call. */
+    static const struct {
+        fake_step_t s[2];
+        const char *want;
+    } bad[] = {
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 0, FULL - 1, 0, 3}},
+         "bloom_cam: VIDIOC_DQBUF: short frame: 127 bytes, 128 expected (sequence 3)\n"},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 0, 0, 0, 4}},
+         "bloom_cam: VIDIOC_DQBUF: short frame: 0 bytes"},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+          {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 5}},
+         "bloom_cam: VIDIOC_DQBUF: buffer 1 (sequence 5) flagged V4L2_BUF_FLAG_ERROR\n"},
+        {{{STEP_POLL, 1, 0, POLLIN | POLLERR, 0, 0, 0, 0}, {STEP_DQBUF, -1, ENODEV, 0, 0, 0, 0, 0}},
+         "bloom_cam: VIDIOC_DQBUF: No such device\n"},
+        {{{STEP_POLL, 1, 0, POLLERR, 0, 0, 0, 0}, {STEP_DQBUF, -1, EAGAIN, 0, 0, 0, 0, 0}},
+         "bloom_cam: poll: the device reports an error (revents 0x8)\n"},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 3, FULL, 0, 6}},
+         "bloom_cam: VIDIOC_DQBUF: buffer index 3 out of range\n"},
+        {{{STEP_POLL, 0, 0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0, 0, 0}},
+         "bloom_cam: poll: no frame from the device within 100 ms\n"},
+        {{{STEP_POLL, -1, EBADF, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0, 0, 0}},
+         "bloom_cam: poll: Bad file descriptor\n"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        int steps = bad[i].s[1].kind ? 2 : 1;
+        r = run_dequeue(bad[i].s, steps, &f, msg, sizeof msg);
+        int lines = 0;
+        for (const char *p = msg; *p; p++)
+            lines += *p == '\n';
+        CHECKF(r == -1 && !strncmp(msg, bad[i].want, strlen(bad[i].want)) && lines == 1 &&
+                  fake_at == steps && !fake_unexpected,
+              "fault %zu: r %d, %d of %d steps, message '%s', want '%s'", i, r, fake_at, steps,
+              msg, bad[i].want);
+    }
+    CHECKF(strstr(bad[0].want, "VIDIOC_DQBUF") && strstr(bad[0].want, "short"),
+          "short-frame message");
 }
 
 int main(void)
@@ -266,7 +438,8 @@ int main(void)
     test_fb_format();
     test_place();
     test_line_feed();
-    printf("bloom_cam host tests: options, Y'CbCr rows, framebuffer layouts, placement, line feed\n");
-    printf("%d passed, %d failed\n", passed, failed);
-    return failed != 0;
+    test_dequeue_faults();
+    printf("bloom_cam host tests: options, Y'CbCr rows, framebuffer layouts, placement, line feed,\n"
+           "  capture faults (EINTR, EAGAIN, short bytesused, V4L2_BUF_FLAG_ERROR, ENODEV, timeout)\n");
+    return harness_finish();
 }

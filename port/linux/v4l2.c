@@ -14,11 +14,26 @@
 
 #include "cam.h"
 
+static int sys_ioctl(int fd, unsigned long req, void *arg)
+{
+    return ioctl(fd, req, arg);
+}
+
 int cam_xioctl(int fd, unsigned long req, void *arg)
 {
     int r;
     do
         r = ioctl(fd, req, arg);
+    while (r == -1 && errno == EINTR);
+    return r;
+}
+
+/* The device's ioctl through the seam in c, retried on EINTR. */
+static int xioctl(cam_v4l2_t *c, unsigned long req, void *arg)
+{
+    int r;
+    do
+        r = c->ioctl_fn(c->fd, req, arg);
     while (r == -1 && errno == EINTR);
     return r;
 }
@@ -47,6 +62,8 @@ static int bytes_per_pixel(uint32_t fourcc)
 int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int nbufs)
 {
     memset(c, 0, sizeof *c);
+    c->ioctl_fn = sys_ioctl;
+    c->poll_fn = poll;
     c->fd = open(dev, O_RDWR | O_NONBLOCK | O_CLOEXEC);
     if (c->fd < 0) {
         fprintf(stderr, "%s: open %s: %s\n", CAM_PROG, dev, strerror(errno));
@@ -55,7 +72,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
 
     struct v4l2_capability cap;
     memset(&cap, 0, sizeof cap);
-    if (cam_xioctl(c->fd, VIDIOC_QUERYCAP, &cap))
+    if (xioctl(c, VIDIOC_QUERYCAP, &cap))
         return sys_fail("VIDIOC_QUERYCAP");
     uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
     snprintf(c->card, sizeof c->card, "%s", (const char *)cap.card);
@@ -78,7 +95,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     f.fmt.pix.height = (uint32_t)h;
     f.fmt.pix.pixelformat = fourcc_of(fmt);
     f.fmt.pix.field = V4L2_FIELD_NONE;
-    if (cam_xioctl(c->fd, VIDIOC_S_FMT, &f))
+    if (xioctl(c, VIDIOC_S_FMT, &f))
         return sys_fail("VIDIOC_S_FMT");
     /* What the driver chose is what counts. */
     if (f.fmt.pix.pixelformat != fourcc_of(fmt)) {
@@ -113,7 +130,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     rb.count = (uint32_t)nbufs;
     rb.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     rb.memory = V4L2_MEMORY_MMAP;
-    if (cam_xioctl(c->fd, VIDIOC_REQBUFS, &rb))
+    if (xioctl(c, VIDIOC_REQBUFS, &rb))
         return sys_fail("VIDIOC_REQBUFS");
     if (rb.count < 2 || rb.count > CAM_MAX_BUFFERS) {
         fprintf(stderr, "%s: VIDIOC_REQBUFS: the driver gave %u buffers (2..%d needed)\n",
@@ -128,7 +145,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
         b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         b.memory = V4L2_MEMORY_MMAP;
         b.index = (uint32_t)i;
-        if (cam_xioctl(c->fd, VIDIOC_QUERYBUF, &b))
+        if (xioctl(c, VIDIOC_QUERYBUF, &b))
             return sys_fail("VIDIOC_QUERYBUF");
         if (b.length < c->sizeimage) {
             fprintf(stderr, "%s: VIDIOC_QUERYBUF: buffer %d holds %u bytes, a frame %u\n",
@@ -151,7 +168,7 @@ static int queue(cam_v4l2_t *c, int index)
     b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     b.memory = V4L2_MEMORY_MMAP;
     b.index = (uint32_t)index;
-    if (cam_xioctl(c->fd, VIDIOC_QBUF, &b))
+    if (xioctl(c, VIDIOC_QBUF, &b))
         return sys_fail("VIDIOC_QBUF");
     return 0;
 }
@@ -162,7 +179,7 @@ int cam_v4l2_start(cam_v4l2_t *c)
         if (queue(c, i))
             return -1;
     enum v4l2_buf_type t = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-    if (cam_xioctl(c->fd, VIDIOC_STREAMON, &t))
+    if (xioctl(c, VIDIOC_STREAMON, &t))
         return sys_fail("VIDIOC_STREAMON");
     c->streaming = 1;
     return 0;
@@ -173,7 +190,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
 {
     for (;;) {
         struct pollfd p[2] = {{c->fd, POLLIN, 0}, {extra_fd, POLLIN, 0}};
-        int r = poll(p, extra_fd >= 0 ? 2 : 1, timeout_ms);
+        int r = c->poll_fn(p, extra_fd >= 0 ? 2 : 1, timeout_ms);
         if (r < 0) {
             if (errno == EINTR)
                 return 1; /* the caller looks at its signal flag */
@@ -194,7 +211,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
         memset(&b, 0, sizeof b);
         b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         b.memory = V4L2_MEMORY_MMAP;
-        if (cam_xioctl(c->fd, VIDIOC_DQBUF, &b)) {
+        if (xioctl(c, VIDIOC_DQBUF, &b)) {
             if (errno == EAGAIN && !(p[0].revents & (POLLERR | POLLHUP | POLLNVAL)))
                 continue; /* nothing after all: wait again */
             if (errno == EAGAIN) {
@@ -239,7 +256,7 @@ void cam_v4l2_close(cam_v4l2_t *c)
         return;
     if (c->streaming) {
         enum v4l2_buf_type t = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        if (cam_xioctl(c->fd, VIDIOC_STREAMOFF, &t) && errno != ENODEV)
+        if (xioctl(c, VIDIOC_STREAMOFF, &t) && errno != ENODEV)
             sys_fail("VIDIOC_STREAMOFF");
         c->streaming = 0;
     }
@@ -253,7 +270,7 @@ void cam_v4l2_close(cam_v4l2_t *c)
         memset(&rb, 0, sizeof rb);
         rb.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         rb.memory = V4L2_MEMORY_MMAP;
-        cam_xioctl(c->fd, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
+        xioctl(c, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
     }
     c->nbufs = 0;
     if (c->fd > 0)

@@ -37,12 +37,19 @@ for f in /sys/class/graphics/fb[0-9]*; do log "${f##*/}: $(cat $f/name) $(cat $f
 # name format fb extra-options...: capture -> bloom -> framebuffer
 run() {
     name=$1; fmt=$2; fb=$3; shift 3
+    pan=/sys/class/graphics/${fb#/dev/}/pan
     /bloom_cam --device "$vid" --fb "$fb" --format "$fmt" --size "$SIZE" --frames "$FRAMES" \
         --threshold 0.6 --intensity 1.5 --record "/out/$name.raw" --dump-fb "/out/$name.fb" \
-        --stats "$@" > "/out/$name.txt" 2>&1
-    echo "exit $?" >> "/out/$name.txt"
-    log "$name: $(tail -n 1 /out/$name.txt)"
-    echo "/sys pan after: $(cat /sys/class/graphics/${fb#/dev/}/pan)" >> "/out/$name.txt"
+        --stats "$@" > "/out/$name.txt" 2>&1 &
+    pid=$!; seen=""
+    # the pan offsets seen while it runs (shell builtins only: no fork per look)
+    while [ -e /proc/$pid/stat ] && read -r _ _ st _ < /proc/$pid/stat && [ "$st" != Z ]; do
+        read -r p < "$pan"; case " $seen " in *" $p "*) ;; *) seen="$seen $p";; esac
+    done 2>/dev/null
+    wait $pid; echo "exit $?" >> "/out/$name.txt"
+    log "$name: $(tail -n 1 /out/$name.txt), pan seen:$seen"
+    echo "/sys pan during:$seen" >> "/out/$name.txt"
+    echo "/sys pan after: $(cat "$pan")" >> "/out/$name.txt"
 }
 run yuyv-16 yuyv "$fb16"
 run rgb24-16 rgb24 "$fb16"

@@ -1,7 +1,9 @@
 #!/bin/sh
 # make test-linux: bloom_cam against the kernel's own vivid (V4L2 capture,
 # 16 bpp RGB565 framebuffer), bochs-drm (qemu's std VGA: 32 bpp XRGB8888
-# through DRM's fbdev emulation) and vfb (32 bpp XBGR8888, refused) drivers, in
+# through DRM's fbdev emulation, given two pages with drm_kms_helper's
+# drm_fbdev_overalloc=200 so the FBIOPAN_DISPLAY double-buffering is used)
+# and vfb (32 bpp XBGR8888, refused) drivers, in
 # qemu-system-x86_64 (TCG) with a pinned Debian kernel. The kernel package
 # is downloaded (apt-get download) and unpacked into $B/linux/kernel once.
 # The framebuffer contents are compared with bloom_sim run on the frames the
@@ -137,9 +139,12 @@ add_mod() { # dependencies first, each once
 for m in virtio_pci virtio_blk vivid vfb bochs; do add_mod $m || exit 1; done
 [ -n "$gpio_off" ] || add_mod gpio-sim || exit 1
 echo "$order" | tr ' ' '\n' | grep . > "$work/root/modules.order"
+# module options (insmod does not read them from the kernel command line, so
+# drm_kms_helper.drm_fbdev_overalloc=200 there would be ignored: it is here)
 cat > "$work/root/modules.args" <<ARGS
 vivid n_devs=1 node_types=0x10101 num_inputs=1 input_types=0x00
 vfb vfb_enable=1 mode_option=640x480-32 videomemorysize=2457600
+drm_kms_helper drm_fbdev_overalloc=200
 ARGS
 cp "$bb" "$work/root/bin/busybox"
 cp "$B/linux/bloom_cam.static" "$work/root/bloom_cam"
@@ -201,6 +206,21 @@ frame_check grey-16 rgb565 $P
 frame_check grey-32 xrgb8888 $P
 frame_check bloomonly-16 rgb565 $P --view bloom
 frame_check off-32 xrgb8888 --threshold 256 --knee 0 --intensity 0
+# bochs' fbdev has two pages (drm_fbdev_overalloc=200): the 32 bpp cases must
+# have flipped with FBIOPAN_DISPLAY (the second page's offset seen in /sys
+# while running) and put the pan back to 0,0; their pictures are checked above
+pan_bad=""
+for c in yuyv-32 rgb24-32 grey-32 off-32; do
+    t=$r/$c.txt
+    grep -q ", double-buffered;" "$t" 2>/dev/null && grep -q '^/sys pan during:.* 0,[1-9]' "$t" &&
+        grep -q '^/sys pan after: 0,0$' "$t" || pan_bad="$pan_bad $c"
+done
+if [ -z "$pan_bad" ]; then
+    ok "pan: the 32 bpp cases double-buffered, /sys pan seen:$(sed -n 's/^\/sys pan during://p' "$r/yuyv-32.txt"), 0,0 after"
+else
+    bad "pan: not double-buffered, never panned, or not restored:$pan_bad"
+    for c in $pan_bad; do grep -h "buffered\|/sys pan" "$r/$c.txt" | sed "s/^/       $c: /"; done
+fi
 fault_check() { # case exit-status text
     if grep -q "^exit $2\$" "$r/$1.txt" 2>/dev/null && grep -qF -- "$3" "$r/$1.txt"; then
         ok "$1: '$3', exit $2"
