@@ -5,6 +5,14 @@
 
 #include <stddef.h>
 
+/* The compiler and flags of the engine build, for the report (bench.mk). */
+#ifndef BENCH_CC
+#define BENCH_CC "cc"
+#endif
+#ifndef BENCH_FLAGS
+#define BENCH_FLAGS "(unknown)"
+#endif
+
 #define MAX_SIZES 8
 #define MAX_ROWS 256
 #define SLOW_RUN_S 0.25 /* a warm-up slower than this: SLOW_RUNS runs */

@@ -8,12 +8,6 @@
 #include "scene.h"
 #include "variants.h"
 
-#ifndef BENCH_CC
-#define BENCH_CC "cc"
-#endif
-#ifndef BENCH_FLAGS
-#define BENCH_FLAGS "(unknown)"
-#endif
 
 /* ---- output files ------------------------------------------------------------- */
 
