@@ -44,6 +44,17 @@ static int sys_fail(const char *call)
     return -1;
 }
 
+/* An mmap capture buffer descriptor, index set, everything else zero. */
+static struct v4l2_buffer mmap_buffer(int index)
+{
+    struct v4l2_buffer b;
+    memset(&b, 0, sizeof b);
+    b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    b.memory = V4L2_MEMORY_MMAP;
+    b.index = (uint32_t)index;
+    return b;
+}
+
 static uint32_t fourcc_of(enum cam_pixfmt f)
 {
     switch (f) {
@@ -140,11 +151,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     }
     c->nbufs = (int)rb.count;
     for (int i = 0; i < c->nbufs; i++) {
-        struct v4l2_buffer b;
-        memset(&b, 0, sizeof b);
-        b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        b.memory = V4L2_MEMORY_MMAP;
-        b.index = (uint32_t)i;
+        struct v4l2_buffer b = mmap_buffer(i);
         if (xioctl(c, VIDIOC_QUERYBUF, &b))
             return sys_fail("VIDIOC_QUERYBUF");
         if (b.length < c->sizeimage) {
@@ -163,11 +170,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
 
 static int queue(cam_v4l2_t *c, int index)
 {
-    struct v4l2_buffer b;
-    memset(&b, 0, sizeof b);
-    b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-    b.memory = V4L2_MEMORY_MMAP;
-    b.index = (uint32_t)index;
+    struct v4l2_buffer b = mmap_buffer(index);
     if (xioctl(c, VIDIOC_QBUF, &b))
         return sys_fail("VIDIOC_QBUF");
     return 0;
@@ -207,10 +210,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             continue; /* only the button: wait again */
         /* POLLERR: DQBUF tells why (ENODEV after a disconnect, EPIPE, ...) */
 
-        struct v4l2_buffer b;
-        memset(&b, 0, sizeof b);
-        b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        b.memory = V4L2_MEMORY_MMAP;
+        struct v4l2_buffer b = mmap_buffer(0);
         if (xioctl(c, VIDIOC_DQBUF, &b)) {
             if (errno == EAGAIN && !(p[0].revents & (POLLERR | POLLHUP | POLLNVAL)))
                 continue; /* nothing after all: wait again */

@@ -35,26 +35,28 @@ static uint8_t u8_round(double v)
 }
 
 /* Bilinear resample of a packed 3-channel 8-bit image, pixel centres aligned. */
+/* Destination pixel i of n, sampled from a row (or column) of ns: the two
+ * source neighbours (edges clamped) and the weight of the second. */
+static double src_pos(int i, int ns, int n, int *i0, int *i1)
+{
+    double f = ((double)i + 0.5) * ns / n - 0.5;
+    if (f < 0.0)
+        f = 0.0;
+    *i0 = (int)f;
+    if (*i0 > ns - 1)
+        *i0 = ns - 1;
+    *i1 = *i0 + 1 < ns ? *i0 + 1 : ns - 1;
+    return f - *i0;
+}
+
 static void stretch(const uint8_t *s, int sw, int sh, uint8_t *d, int w, int h)
 {
     for (int y = 0; y < h; y++) {
-        double fy = ((double)y + 0.5) * sh / h - 0.5;
-        if (fy < 0.0)
-            fy = 0.0;
-        int y0 = (int)fy;
-        if (y0 > sh - 1)
-            y0 = sh - 1;
-        const int y1 = y0 + 1 < sh ? y0 + 1 : sh - 1;
-        const double ay = fy - y0;
+        int y0, y1;
+        const double ay = src_pos(y, sh, h, &y0, &y1);
         for (int x = 0; x < w; x++) {
-            double fx = ((double)x + 0.5) * sw / w - 0.5;
-            if (fx < 0.0)
-                fx = 0.0;
-            int x0 = (int)fx;
-            if (x0 > sw - 1)
-                x0 = sw - 1;
-            const int x1 = x0 + 1 < sw ? x0 + 1 : sw - 1;
-            const double ax = fx - x0;
+            int x0, x1;
+            const double ax = src_pos(x, sw, w, &x0, &x1);
             for (int c = 0; c < 3; c++) {
                 const double a = s[((size_t)y0 * (size_t)sw + (size_t)x0) * 3u + (size_t)c];
                 const double b = s[((size_t)y0 * (size_t)sw + (size_t)x1) * 3u + (size_t)c];
