@@ -20,9 +20,10 @@ CPPFLAGS_CORE := -Iinclude -Isrc
 HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
 SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
-CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_row_sse2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c
+CORE_SRC := src/bloom.c src/bloom_row.c src/bloom_row_sse2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c \
+            src/bloom_graph.c src/bloom_graph_rows.c $(sort $(wildcard src/bloom_preset_*.c))
 CORE_HDR := $(wildcard include/*.h src/*.h)
-SIM_SRC := sim/bloom_model.c sim/imgio.c
+SIM_SRC := sim/bloom_model.c sim/imgio.c sim/model_presets.c $(filter-out sim/model_presets.c,$(sort $(wildcard sim/model_*.c)))
 SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # Make targets `make test` runs after the test binaries, one pass/fail each;
@@ -62,7 +63,8 @@ clang-build: | $(B)/clang
 # The compile-time switch combinations must build too (warnings as errors).
 ARM_VARIANTS := "-DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0" \
   "-DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0 -DBLOOM_SMALL=1 -DBLOOM_USE_SKIP=0 -DBLOOM_CHECK_RINGS=0" \
-  "-DBLOOM_USE_RGB565=0 -DBLOOM_USE_RGBQ16=0 -DBLOOM_SMALL=1"
+  "-DBLOOM_USE_RGB565=0 -DBLOOM_USE_RGBQ16=0 -DBLOOM_SMALL=1" \
+  "-DBLOOM_USE_GAMEDEV=0 -DBLOOM_USE_XNA=0 -DBLOOM_USE_ATTENUATION=0 -DBLOOM_USE_ARM=0 -DBLOOM_USE_COD=0"
 freestanding: | $(B)/arm
 	@for v in $(ARM_VARIANTS); do for f in $(CORE_SRC); do \
 	  $(ARM_CC) $(WARN) -Os -mcpu=cortex-m4 -mthumb -ffreestanding $(CPPFLAGS_CORE) $$v \

@@ -27,6 +27,27 @@ extern "C" {
 #define BLOOM_MAX_INTENSITY (10u << BLOOM_FRAC_BITS) /* gamma-space 10.0 */
 #define BLOOM_WORKSPACE_ALIGN 8
 
+/* The pipelines (sim/docs/presets.md): the default and the seed recipes,
+ * each a preset of the same streaming engine. */
+typedef enum {
+    BLOOM_PRESET_UNITY = 0,   /* box down / tent up, soft knee, additive (default) */
+    BLOOM_PRESET_GAMEDEV,     /* luminance threshold, 9-tap Gaussian at 1/2..1/8, Reinhard, gamma 2.2 */
+    BLOOM_PRESET_XNA,         /* threshold subtraction at 1/4, Kawase passes, screen combine */
+    BLOOM_PRESET_ATTENUATION, /* the default with the first pass scaled by a depth plane */
+    BLOOM_PRESET_ARM,         /* dual filtering on a one-channel luminance plane, mask, baked map */
+    BLOOM_PRESET_COD,         /* 13-tap down with Karis average, 3x3 tent up, energy-conserving */
+    BLOOM_PRESET_COUNT
+} bloom_preset_t;
+
+/* A one-channel plane beside the frame, same size: the depth plane of the
+ * attenuation preset (0 = near ... max = far), the mask or the baked map of
+ * the arm preset. Rows are (pointer, stride) like the frame's. */
+typedef enum {
+    BLOOM_AUX_NONE = 0,
+    BLOOM_AUX_U8,   /* one byte per pixel (R8 / GREY) */
+    BLOOM_AUX_U16   /* one native uint16_t per pixel (V4L2 Z16) */
+} bloom_aux_format_t;
+
 typedef enum {
     BLOOM_FMT_RGB888 = 1, /* bytes R, G, B (V4L2 RGB24) */
     BLOOM_FMT_XRGB8888,   /* LE word 0xXXRRGGBB: bytes B, G, R, X (fbdev 32 bpp) */
@@ -41,8 +62,12 @@ enum {
                                          needs; without it, it keeps pointers */
     BLOOM_FLAG_NO_SKIP = 1u << 3,     /* compute rows known to be zero anyway
                                          (for tests and benchmarks) */
-    BLOOM_FLAG_NO_SIMD = 1u << 4      /* C row kernels only, no SSE2/NEON (same
+    BLOOM_FLAG_NO_SIMD = 1u << 4,     /* C row kernels only, no SSE2/NEON (same
                                          bits; for tests and benchmarks) */
+    BLOOM_FLAG_SATURATE = 1u << 5,    /* xna: clamp to 1.0 between passes (8-bit targets) */
+    BLOOM_FLAG_BAKED = 1u << 6,       /* arm: no pyramid; out = S + S*map*strength
+                                         with the aux plane as the map */
+    BLOOM_FLAG_ADDITIVE = 1u << 7     /* cod: additive levels instead of energy-conserving */
 };
 
 typedef enum {
@@ -62,8 +87,28 @@ typedef enum {
     BLOOM_E_BUSY = -11,
     BLOOM_E_STATE = -12,
     BLOOM_E_INTERNAL = -13,
-    BLOOM_E_TOO_BIG = -14
+    BLOOM_E_TOO_BIG = -14,
+    BLOOM_E_PRESET = -15,    /* unknown preset, or compiled out */
+    BLOOM_E_STRENGTH = -16,
+    BLOOM_E_PASSES = -17,
+    BLOOM_E_ATTENUATION = -18,
+    BLOOM_E_WEIGHT = -19,
+    BLOOM_E_TINT = -20,
+    BLOOM_E_AUX = -21        /* aux plane missing, unexpected or of an unknown format */
 } bloom_status_t;
+
+/* Parameters of the presets other than the default; a preset ignores the
+ * ones it does not name. All Q16.16. */
+typedef struct {
+    uint32_t strength;       /* gamedev: scene + strength*bloom, 0 .. 16.0;
+                                arm with BLOOM_FLAG_BAKED: map strength 0 .. 16.0 */
+    int passes;              /* xna: Kawase passes P, 1 .. 8 */
+    uint32_t attenuation;    /* attenuation: a, 0 .. 1.0 */
+    uint32_t max_reduction;  /* attenuation: r, 0 .. 1.0 */
+    uint32_t level_weight[BLOOM_MAX_LEVELS]; /* cod: blend factor c_k, 0 .. 1.0, of the
+                                upsample into level k (k = 0: the final composite) */
+    uint32_t tint[3];        /* cod and arm: glow colour R, G, B, 0 .. 1.0 */
+} bloom_preset_params_t;
 
 typedef struct {
     int width, height;        /* 1 .. BLOOM_MAX_DIM */
@@ -73,6 +118,9 @@ typedef struct {
     uint32_t soft_knee;       /* Q16.16, 0 .. 1.0 (0 = hard knee) */
     uint32_t intensity;       /* gamma space, Q16.16, 0 .. 10.0 */
     uint32_t flags;           /* BLOOM_FLAG_* */
+    bloom_preset_t preset;    /* BLOOM_PRESET_UNITY (0) unless set */
+    bloom_aux_format_t aux_fmt; /* BLOOM_AUX_NONE unless the preset reads a plane */
+    bloom_preset_params_t p;  /* the preset's own parameters */
 } bloom_config_t;
 
 typedef struct {
@@ -95,6 +143,22 @@ typedef struct bloom bloom_t;
  * 5 levels, RGB888 in and out, sRGB). */
 void bloom_config_default(bloom_config_t *cfg, int width, int height);
 
+/* Switch cfg to preset p with that preset's default parameters (size,
+ * formats and flags other than the preset's own are kept).
+ * Returns BLOOM_E_PRESET for an unknown or compiled-out preset. */
+bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p);
+
+/* "unity", "gamedev", "xna", "attenuation", "arm", "cod"; NULL if unknown. */
+const char *bloom_preset_name(bloom_preset_t p);
+/* The preset of that name, or -1. Compiled-out presets are still named. */
+int bloom_preset_from_name(const char *name);
+/* Whether this build carries preset p (BLOOM_USE_<PRESET>). */
+int bloom_preset_available(bloom_preset_t p);
+
+/* cod: the level count whose glow reaches about radius_px output pixels,
+ * whatever the frame size (sim/docs/presets.md: reach of L levels). */
+int bloom_levels_for_radius(int radius_px);
+
 /* Validate cfg and describe the engine it gives. Pure. */
 bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info);
 
@@ -115,6 +179,10 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
  * and strides match. */
 bloom_status_t bloom_begin(bloom_t *b);
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row);
+/* The same with the aux plane's row (presets that read one). */
+bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *aux_row);
+/* The aux plane for bloom_run_rows/bloom_process: its row 0 and stride. */
+bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride);
 bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row);
 int bloom_rows_in(const bloom_t *b);
 int bloom_rows_out(const bloom_t *b);

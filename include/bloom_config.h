@@ -20,6 +20,27 @@
 #define BLOOM_USE_RGBQ16 1 /* linear Q16.16 words: HDR input and output */
 #endif
 
+/* Presets besides the default (sim/docs/presets.md). 0 leaves a preset's
+ * code out; bloom_query() then refuses it with BLOOM_E_PRESET. With all of
+ * them 0 the row-graph engine (src/bloom_graph.c) is left out too. */
+#ifndef BLOOM_USE_GAMEDEV
+#define BLOOM_USE_GAMEDEV 0 /* in progress */
+#endif
+#ifndef BLOOM_USE_XNA
+#define BLOOM_USE_XNA 0 /* in progress */
+#endif
+#ifndef BLOOM_USE_ATTENUATION
+#define BLOOM_USE_ATTENUATION 1
+#endif
+#ifndef BLOOM_USE_ARM
+#define BLOOM_USE_ARM 0 /* in progress */
+#endif
+#ifndef BLOOM_USE_COD
+#define BLOOM_USE_COD 0 /* in progress */
+#endif
+#define BLOOM_USE_GRAPH \
+    (BLOOM_USE_GAMEDEV || BLOOM_USE_XNA || BLOOM_USE_ATTENUATION || BLOOM_USE_ARM || BLOOM_USE_COD)
+
 /* Skip what a scene does not need: dark source rows, all-zero rows of every
  * level, output rows without bloom (a copy). 0 leaves the code out. */
 #ifndef BLOOM_USE_SKIP

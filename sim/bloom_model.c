@@ -165,6 +165,33 @@ static uint32_t encode(const model_t *m, int linear, double v, int n)
     return (uint32_t)floor(e * n + 0.5);
 }
 
+double bloom_model_fdiv(double a, double b)
+{
+    return fdiv(a, b);
+}
+
+static void model_units(model_t *m, int bittrue, int lin_bits)
+{
+    memset(m, 0, sizeof *m);
+    m->bt = bittrue != 0;
+    m->one = ldexp(1.0, lin_bits ? lin_bits : 20);
+    m->q16 = m->one / Q_ONE;
+}
+
+double bloom_model_decode(int bittrue, int linear, uint32_t code, int n, int lin_bits)
+{
+    model_t m;
+    model_units(&m, bittrue, lin_bits);
+    return decode(&m, linear, code, n);
+}
+
+uint32_t bloom_model_encode(int bittrue, int linear, double v, int n, int lin_bits)
+{
+    model_t m;
+    model_units(&m, bittrue, lin_bits);
+    return encode(&m, linear, v, n);
+}
+
 /* ---- step 3: the knee (prefilter) ------------------------------------ */
 
 static void knee(const model_t *m, double rgb[3])
@@ -369,8 +396,13 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
     /* 2-3. D1 = knee(boxdown(S)); Dk+1 = boxdown(Dk) */
     if (bloom_model_box_down(&out->S, &out->D[1], m.bt))
         goto fail;
-    for (i = 0; i < (size_t)out->D[1].w * (size_t)out->D[1].h; i++)
-        knee(&m, out->D[1].px + 3 * i);
+    for (i = 0; i < (size_t)out->D[1].w * (size_t)out->D[1].h; i++) {
+        double *v = out->D[1].px + 3 * i;
+        knee(&m, v);
+        if (p->d1_scale)
+            for (k = 0; k < 3; k++)
+                v[k] = m.bt ? fdiv(v[k] * p->d1_scale[i] + 32768.0, Q_ONE) : v[k] * p->d1_scale[i];
+    }
     for (k = 1; k < L; k++)
         if (bloom_model_box_down(&out->D[k], &out->D[k + 1], m.bt))
             goto fail;

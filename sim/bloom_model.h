@@ -24,6 +24,11 @@ typedef struct {
     uint32_t threshold_q, knee_q, intensity_q;
     int lin_bits; /* bit-true: fraction bits F of the internal samples (BLOOM_LIN_BITS,
                      16..20); 0 means 20. T_q and K_q are then in Q(32-F).F */
+    /* Optional factor per level-1 pixel (w1*h1, row-major) applied to D1
+     * after the knee (the attenuation preset): real factors in float mode,
+     * Q16 integers (0 .. 65536) in bit-true mode, there D1 = (D1*f + 2^15) >> 16.
+     * NULL: none. */
+    const double *d1_scale;
 } bloom_model_params_t;
 
 /* src: width*height pixels, 3 words each (R,G,B), row-major, top row first.
@@ -45,7 +50,15 @@ typedef struct {
 int bloom_model_run(const bloom_model_params_t *p, const uint32_t *src, const int src_max[3],
                     uint32_t *dst_codes, const int dst_max[3], double *dst_value);
 
-/* helpers, also used by tests */
+/* helpers, also used by tests and the preset models */
+/* A code (0..n, or n = 0: a Q16.16 word) decoded as the core does (step 1 of
+ * fixed-point.md): real linear light in float mode, the Q(32-F).F integer in
+ * bit-true mode (lin_bits F, 0 = 20). */
+double bloom_model_decode(int bittrue, int linear, uint32_t code, int n, int lin_bits);
+/* The inverse (step 7): v in the same units -> output code 0..n (n = 0: Q16.16). */
+uint32_t bloom_model_encode(int bittrue, int linear, double v, int n, int lin_bits);
+/* floor(a / b) for integers a < 2^53, b >= 1 held in doubles, exactly. */
+double bloom_model_fdiv(double a, double b);
 double bloom_srgb_to_linear(double x);   /* the sRGB curve of bloom-model.md, extended unchanged above 1 */
 double bloom_linear_to_srgb(double x);   /* its inverse, for x >= 0 */
 int bloom_model_levels(int w, int h, int requested);  /* L by the level-count rule; -1 on bad arguments */
@@ -86,5 +99,37 @@ void bloom_model_image_free(bloom_model_image_t *im);
 /* The prefilter (soft knee) on one pixel in place, with p's mode and
  * parameters (p is not otherwise validated). */
 void bloom_model_knee(const bloom_model_params_t *p, double rgb[3]);
+
+/* ---- presets (sim/docs/presets.md) --------------------------------------
+ * The model of every preset of the core, driven by the core's own
+ * configuration: float mode takes the parameters as the real values they
+ * stand for (Q16.16 / 65536; intensity through the sRGB curve), bit-true
+ * mode the core's quantized values (bloom_query). */
+#include "bloom.h"
+
+typedef struct {
+    const bloom_config_t *cfg; /* preset, sizes, formats, flags, parameters */
+    int bittrue;
+    const uint32_t *src; /* w*h*3 codes as for bloom_model_run */
+    int src_max[3];
+    const uint32_t *aux; /* w*h one-channel codes (0..aux_max), or NULL */
+    int aux_max;         /* 255 (BLOOM_AUX_U8) or 65535 (BLOOM_AUX_U16) */
+    uint32_t *dst_codes; /* w*h*3, or NULL */
+    int dst_max[3];
+    double *dst_value;   /* w*h*3 linear values before the encode, or NULL */
+} bloom_model_preset_args_t;
+
+/* Returns the number of levels used (>= 1), or -1 on bad arguments. */
+int bloom_model_preset_run(const bloom_model_preset_args_t *a);
+/* One per preset (sim/model_<name>.c); same contract. */
+int bloom_model_unity(const bloom_model_preset_args_t *a);
+int bloom_model_attenuation(const bloom_model_preset_args_t *a);
+int bloom_model_gamedev(const bloom_model_preset_args_t *a);
+int bloom_model_xna(const bloom_model_preset_args_t *a);
+int bloom_model_arm(const bloom_model_preset_args_t *a);
+int bloom_model_cod(const bloom_model_preset_args_t *a);
+/* bloom_model_params_t for a preset args' common part (sizes, knee,
+ * intensity, flags, mode). Returns 0, or -1 when bloom_query refuses cfg. */
+int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_params_t *p);
 
 #endif

@@ -13,6 +13,7 @@
  * >= 3 keep delay lines (sim/docs/streaming.md). */
 #include <string.h>
 
+#include "bloom_graph.h"
 #include "bloom_internal.h"
 
 static inline int imin(int a, int b)
@@ -72,6 +73,13 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
     case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
     case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
+    case BLOOM_E_PRESET: return "preset unknown or compiled out";
+    case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
+    case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";
+    case BLOOM_E_ATTENUATION: return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
+    case BLOOM_E_WEIGHT: return "level weight above 1.0 (Q16.16 65536)";
+    case BLOOM_E_TINT: return "tint above 1.0 (Q16.16 65536)";
+    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
     }
     return "unknown status";
 }
@@ -89,6 +97,66 @@ void bloom_config_default(bloom_config_t *cfg, int width, int height)
     cfg->flags = 0;
 }
 
+static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity", "gamedev", "xna",
+                                                               "attenuation", "arm", "cod"};
+
+const char *bloom_preset_name(bloom_preset_t p)
+{
+    return (unsigned)p < BLOOM_PRESET_COUNT ? preset_names[p] : NULL;
+}
+
+/* No strcmp: a freestanding build links nothing but memcpy/memset. */
+static bool same_name(const char *a, const char *b)
+{
+    while (*a && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+int bloom_preset_from_name(const char *name)
+{
+    for (int i = 0; name && i < BLOOM_PRESET_COUNT; i++)
+        if (same_name(name, preset_names[i]))
+            return i;
+    return -1;
+}
+
+int bloom_preset_available(bloom_preset_t p)
+{
+    if (p == BLOOM_PRESET_UNITY)
+        return 1;
+#if BLOOM_USE_GRAPH
+    return bloom_preset_ops(p) != NULL;
+#else
+    return 0;
+#endif
+}
+
+bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
+{
+    if (!cfg)
+        return BLOOM_E_NULL;
+    if (!bloom_preset_available(p))
+        return BLOOM_E_PRESET;
+    bloom_config_t d;
+    bloom_config_default(&d, cfg->width, cfg->height);
+    d.in_fmt = cfg->in_fmt;
+    d.out_fmt = cfg->out_fmt;
+    d.flags = cfg->flags & (uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
+                                      BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD);
+    d.preset = p;
+#if BLOOM_USE_GRAPH
+    if (p != BLOOM_PRESET_UNITY)
+        bloom_preset_ops(p)->defaults(&d);
+#endif
+    *cfg = d;
+    return BLOOM_OK;
+}
+
+#define PRESET_FLAGS (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE)
+
 static bloom_status_t validate(const bloom_config_t *c)
 {
     if (c->width < 1 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM)
@@ -104,8 +172,19 @@ static bloom_status_t validate(const bloom_config_t *c)
     if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
     if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD))
+                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | PRESET_FLAGS))
         return BLOOM_E_FLAGS;
+    if (c->preset != BLOOM_PRESET_UNITY) {
+#if BLOOM_USE_GRAPH
+        return bloom_graph_validate(c); /* the preset checks its own flags and aux plane */
+#else
+        return BLOOM_E_PRESET;
+#endif
+    }
+    if (c->flags & PRESET_FLAGS)
+        return BLOOM_E_FLAGS;
+    if (c->aux_fmt != BLOOM_AUX_NONE)
+        return BLOOM_E_AUX;
     return BLOOM_OK;
 }
 
@@ -564,8 +643,55 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
     return BLOOM_OK;
 }
 
+#if BLOOM_USE_GRAPH
+/* A preset's engine: bloom_t (graph set), the graph, its rings. */
+#define GRAPH_OFF align8(sizeof(bloom_t))
+#define GRAPH_RINGS align8(GRAPH_OFF + sizeof(struct bloom_graph))
+
+static bloom_status_t graph_query(const bloom_config_t *cfg, bloom_info_t *info)
+{
+    struct bloom_graph tmp;
+    bloom_status_t st = bloom_graph_plan(&tmp, cfg, info);
+    if (st == BLOOM_OK && info) {
+        if (info->workspace_bytes > SIZE_MAX - GRAPH_RINGS)
+            return BLOOM_E_TOO_BIG;
+        info->workspace_bytes += GRAPH_RINGS;
+    }
+    return st;
+}
+
+static bloom_status_t graph_init(bloom_t **out, uint8_t *ws, size_t ws_bytes, const bloom_config_t *cfg)
+{
+    if (ws_bytes < GRAPH_RINGS)
+        return BLOOM_E_WORKSPACE;
+    bloom_t *b = (bloom_t *)(void *)ws;
+    memset(b, 0, sizeof *b);
+    b->cfg = *cfg;
+    struct bloom_graph *g = (struct bloom_graph *)(void *)(ws + GRAPH_OFF);
+    bloom_status_t st = bloom_graph_plan(g, cfg, NULL);
+    if (st != BLOOM_OK)
+        return st;
+    const uint64_t need = bloom_graph_carve(g, NULL, NULL) + GRAPH_RINGS;
+    if (need > SIZE_MAX)
+        return BLOOM_E_TOO_BIG;
+    if (ws_bytes < need)
+        return BLOOM_E_WORKSPACE;
+    if (bloom_graph_carve(g, ws + GRAPH_RINGS, NULL) + GRAPH_RINGS != need)
+        return BLOOM_E_INTERNAL;
+    b->graph = g;
+    *out = b;
+    return bloom_begin(b);
+}
+#endif
+
 bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
 {
+#if BLOOM_USE_GRAPH
+    if (cfg && cfg->preset != BLOOM_PRESET_UNITY) {
+        bloom_status_t st = validate(cfg);
+        return st != BLOOM_OK ? st : graph_query(cfg, info);
+    }
+#endif
     bloom_t tmp;
     return plan(&tmp, cfg, info);
 }
@@ -586,6 +712,10 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
     bloom_status_t st = validate(cfg);
     if (st != BLOOM_OK)
         return st;
+#if BLOOM_USE_GRAPH
+    if (cfg->preset != BLOOM_PRESET_UNITY)
+        return graph_init(out, (uint8_t *)ws, ws_bytes, cfg);
+#endif
     if (ws_bytes < sizeof(bloom_t))
         return BLOOM_E_WORKSPACE;
     /* Plan in place (no engine-sized stack frame); a buffer found too small
@@ -611,6 +741,10 @@ bloom_status_t bloom_begin(bloom_t *b)
 {
     if (!b)
         return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_begin(b->graph);
+#endif
     b->src_n = b->out_n = b->e_next = 0;
     memset(b->d_next, 0, sizeof b->d_next);
     memset(b->u_next, 0, sizeof b->u_next);
@@ -631,18 +765,61 @@ bloom_status_t bloom_begin(bloom_t *b)
 
 int bloom_rows_in(const bloom_t *b)
 {
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return b->graph->src_n;
+#endif
     return b->src_n;
 }
 
 int bloom_rows_out(const bloom_t *b)
 {
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return b->graph->node[b->graph->out_node].next;
+#endif
     return b->out_n;
+}
+
+static int rows_total(const bloom_t *b)
+{
+    return b->cfg.height;
+}
+
+bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
+{
+    if (!b || !aux)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph && b->graph->aux_bpp) {
+        b->graph->aux_frame = (const uint8_t *)aux;
+        b->graph->aux_stride = aux_stride;
+        return BLOOM_OK;
+    }
+#endif
+    (void)aux_stride;
+    return BLOOM_E_AUX;
+}
+
+bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *aux_row)
+{
+    if (!b || !src_row)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_push(b->graph, src_row, aux_row);
+#endif
+    return aux_row ? BLOOM_E_AUX : bloom_push_row(b, src_row);
 }
 
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_push(b->graph, src_row, NULL);
+#endif
     if (b->src_n >= b->h[0])
         return BLOOM_E_STATE;
     const int r = b->src_n, slot = r % b->src_cap;
@@ -662,6 +839,10 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
 {
     if (!b || !dst_row)
         return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_pull(b->graph, dst_row);
+#endif
     const int y = b->out_n;
     if (y >= b->h[0])
         return BLOOM_DONE;
@@ -690,19 +871,30 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         return BLOOM_E_NULL;
     const uint8_t *s = (const uint8_t *)src;
     uint8_t *d = (uint8_t *)dst;
-    const int end = b->src_n + nrows;
-    if (nrows < 0 || end > b->h[0])
+    const int end = bloom_rows_in(b) + nrows;
+    if (nrows < 0 || end > rows_total(b))
         return BLOOM_E_STATE;
+    const uint8_t *aux = NULL;
+    ptrdiff_t aux_stride = 0;
+#if BLOOM_USE_GRAPH
+    if (b->graph && b->graph->aux_bpp) {
+        aux = b->graph->aux_frame;
+        aux_stride = b->graph->aux_stride;
+        if (!aux)
+            return BLOOM_E_AUX;
+    }
+#endif
     for (;;) {
         bloom_status_t st;
         do
-            st = bloom_pull_row(b, d + (ptrdiff_t)b->out_n * dst_stride);
+            st = bloom_pull_row(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride);
         while (st == BLOOM_OK);
         if (st < 0)
             return st;
-        if (b->src_n == end)
+        const int r = bloom_rows_in(b);
+        if (r == end)
             return BLOOM_OK;
-        st = bloom_push_row(b, s + (ptrdiff_t)b->src_n * src_stride);
+        st = bloom_push_row_aux(b, s + (ptrdiff_t)r * src_stride, aux ? aux + (ptrdiff_t)r * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
     }
@@ -713,8 +905,8 @@ bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, 
 {
     bloom_status_t st = bloom_begin(b);
     if (st == BLOOM_OK)
-        st = bloom_run_rows(b, src, src_stride, b->h[0], dst, dst_stride);
-    if (st == BLOOM_OK && b->out_n != b->h[0])
+        st = bloom_run_rows(b, src, src_stride, rows_total(b), dst, dst_stride);
+    if (st == BLOOM_OK && bloom_rows_out(b) != rows_total(b))
         st = BLOOM_E_INTERNAL;
     return st;
 }

@@ -83,22 +83,43 @@ void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, in
 /* Composite of n samples in place: bl[i] = min(((I*bl[i] + 32768) >> 16) + sv[i], 2^32 - 1). */
 void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 
+/* Flat kernels of the fast output path (bloom_row_out_k), on n samples in
+ * 32-bit arithmetic that wraps: exact while the values stay below 2^29,
+ * which holds for the default pipeline on 8/6/5-bit input (U <= 16 * 2^F).
+ * vtent: dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3.
+ * htent_eo: e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3 and
+ *           o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3 (reads v[-3 .. n+2]).
+ * scale: x[i] = low 32 bits of (I x[i] + 32768) >> 16. */
+void bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+void bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
+void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
+
 /* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
  * the C ones, or SIMD twins that give the same bits. */
 typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add,
                               uint32_t *dst, int x0, int n, int sw);
 typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+typedef void (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+typedef void (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
+typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
     bloom_composite_fn composite;
+    bloom_vtent_fn vtent;       /* NULL in BLOOM_SMALL builds */
+    bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
+    bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
     bool simd;        /* false: the C kernels */
     const char *name; /* "c", "sse2", "neon" */
 } bloom_kernels_t;
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
-/* bloom_row_out_c with the tent and composite of k. */
+/* bloom_row_out_c with the kernels of k. For 8/6/5-bit sRGB input and
+ * output it takes the fast path (flat vertical tent, horizontal tent into
+ * even/odd columns, fused composite and encode), which relies on the bound
+ * of the default pipeline: u values at most 16 * 2^F (sums of at most 16
+ * decoded 8/6/5-bit samples). */
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
                      const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o);
 
@@ -109,12 +130,18 @@ void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
 void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+void bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+void bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
+void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
 #define BLOOM_SIMD_NEON 1
 void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+void bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+void bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
+void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);
 #endif
 
 /* Pixel access (bloom_pixel.c). */
@@ -133,7 +160,11 @@ typedef struct {
     int width;  /* pixels */
 } bloom_ring_t;
 
+struct bloom_graph;
+
 struct bloom {
+    struct bloom_graph *graph; /* the row-graph engine of a preset other than
+                                  the default (bloom_graph.h), or NULL */
     bloom_config_t cfg;
     int L;
     int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];

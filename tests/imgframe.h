@@ -26,4 +26,21 @@ static inline frame_t frame_from_img(const img_t *im)
     return f;
 }
 
+/* tests/data/<name> (or $BLOOM_DATA_DIR/<name>) as a frame; 0 (with a
+ * message) if it cannot be read. */
+static inline int imgframe_load(const char *name, frame_t *out)
+{
+    const char *dir = getenv("BLOOM_DATA_DIR");
+    char path[512], err[512];
+    img_t im;
+    snprintf(path, sizeof path, "%s/%s", dir ? dir : "tests/data", name);
+    if (img_read(path, &im, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return 0;
+    }
+    *out = frame_from_img(&im);
+    img_free(&im);
+    return 1;
+}
+
 #endif

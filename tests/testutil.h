@@ -226,6 +226,23 @@ static inline frame_t run_engine(const bloom_config_t *c, const frame_t *src)
     return out;
 }
 
+/* The same with an aux plane (aux may be NULL for presets without one). */
+static inline frame_t run_engine_aux(const bloom_config_t *c, const frame_t *src, const void *aux,
+                                     ptrdiff_t aux_stride)
+{
+    engine_t e = engine_new(c);
+    frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
+    bloom_status_t st = aux ? bloom_set_aux(e.b, aux, aux_stride) : BLOOM_OK;
+    if (st == BLOOM_OK)
+        st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride);
+    if (st != BLOOM_OK) {
+        fprintf(stderr, "bloom_process: %s\n", bloom_status_str(st));
+        exit(2);
+    }
+    engine_free(&e);
+    return out;
+}
+
 static inline void engine_free(engine_t *e)
 {
     if (!guarded_intact(&e->ws)) {

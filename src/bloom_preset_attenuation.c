@@ -1,0 +1,68 @@
+/* Preset "attenuation": the default pipeline with its first pass (D_1,
+ * after the knee) multiplied by max(lerp(1, d, a), r), d the depth plane
+ * (aux, 0 = near, max code = far) averaged over the 2x2 block of the
+ * half-resolution pixel (sim/docs/presets.md).
+ *
+ * Integer form: d_q = (sum of the four samples' Q16 values + 2) >> 2,
+ * f = 65536 - ((a * (65536 - d_q) + 32768) >> 16), factor = max(f, r),
+ * D_1 = (D_1 * factor + 32768) >> 16 (a 64-bit product: D_1 < 2^28,
+ * factor <= 2^16). With a = 0 the factor is exactly 1 and the preset
+ * computes the default's bits. */
+#include "bloom_graph_rows.h"
+
+#if BLOOM_USE_ATTENUATION
+
+static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
+{
+    uint32_t *row = (uint32_t *)dst;
+    bg_fn_d1(g, n, r, in, dst);
+    const uint32_t a = g->cfg.p.attenuation, rmin = g->cfg.p.max_reduction;
+    const int w0 = g->w[0];
+    for (int x = 0; x < n->w; x++) {
+        const int x0 = 2 * x, x1 = 2 * x + 1 < w0 ? 2 * x + 1 : w0 - 1;
+        const uint32_t d = (bg_aux_q16(g, in[1][0], x0) + bg_aux_q16(g, in[1][0], x1) +
+                            bg_aux_q16(g, in[1][1], x0) + bg_aux_q16(g, in[1][1], x1) + 2u) >> 2;
+        uint32_t f = 65536u - (uint32_t)(((uint64_t)a * (65536u - d) + 32768u) >> 16);
+        if (f < rmin)
+            f = rmin;
+        if (f == 65536u)
+            continue;
+        for (int c = 0; c < 3; c++)
+            row[3 * x + c] = (uint32_t)(((uint64_t)row[3 * x + c] * f + 32768u) >> 16);
+    }
+}
+
+static void defaults(bloom_config_t *cfg)
+{
+    cfg->aux_fmt = BLOOM_AUX_U8;
+    cfg->p.attenuation = BLOOM_ONE * 3u / 4u; /* a = 0.75 */
+    cfg->p.max_reduction = BLOOM_ONE / 4u;    /* r = 0.25 */
+}
+
+static bloom_status_t validate(const bloom_config_t *cfg)
+{
+    if (cfg->aux_fmt != BLOOM_AUX_U8 && cfg->aux_fmt != BLOOM_AUX_U16)
+        return BLOOM_E_AUX;
+    if (cfg->p.attenuation > BLOOM_ONE || cfg->p.max_reduction > BLOOM_ONE)
+        return BLOOM_E_ATTENUATION;
+    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
+        return BLOOM_E_FLAGS;
+    return BLOOM_OK;
+}
+
+static bloom_status_t build(bloom_graph_t *g)
+{
+    const int u1 = bg_build_updown(g, d1_atten, true);
+    const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
+    bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
+    bg_input(g, o, u1, BG_UP, -1, 1);
+    g->out_node = o;
+    return BLOOM_OK;
+}
+
+const bloom_preset_ops_t bloom_preset_attenuation = {"attenuation", defaults, validate, build};
+
+#else
+typedef int bloom_preset_attenuation_unused_t;
+#endif
