@@ -223,7 +223,7 @@ uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x)
         return c + ((c + 32768u) >> 16); /* c * 65536 / 65535, rounded: exact at 0 and 65535 */
     }
     const uint32_t c = ((const uint8_t *)row)[x];
-    return (c * 65536u + 127u) / 255u;
+    return c * 257u + (c >= 128u); /* (c * 65536 + 127) / 255: c * 65536 = 255 * 257c + c */
 }
 
 /* ---- planning ---------------------------------------------------------- */
@@ -272,6 +272,7 @@ bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, blo
     g->out.linear = (cfg->flags & BLOOM_FLAG_LINEAR) != 0;
     g->out.debug = (cfg->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
     g->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
+    bloom_kernels_select(&g->kern, cfg->flags);
     g->src_bpp = bloom_format_bpp(cfg->in_fmt);
     g->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
     g->src_row_bytes = (size_t)cfg->width * (size_t)g->src_bpp;

@@ -69,6 +69,7 @@ struct bloom_graph {
     int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
     bloom_knee_t knee;                             /* threshold and knee, Q12.20 */
     bloom_out_t out;                               /* formats, sRGB or linear, I_q */
+    bloom_kernels_t kern;                          /* row kernels (C or SIMD, same bits) */
     int nnodes, out_node;
     bg_node_t node[BG_MAX_NODES];
     /* scratch rows for row functions: BG_SCRATCH rows of scratch_len words */

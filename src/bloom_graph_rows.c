@@ -25,7 +25,7 @@ void bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *co
     (void)r;
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    bloom_row_box_c(s, (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
+    g->kern.box(s, (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
 }
 
 /* Input 0: the same level's row (BG_SAME 0..0); input 1: the level below,
@@ -36,7 +36,7 @@ void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r,
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
     memcpy(dst, in[0][0], (size_t)n->w * 3u * sizeof(uint32_t));
-    bloom_row_tent_c(u, r & 1, (const uint32_t *)dst, (uint32_t *)dst, 0, n->w, g->node[n->in[1].node].w);
+    g->kern.tent(u, r & 1, (const uint32_t *)dst, (uint32_t *)dst, 0, n->w, g->node[n->in[1].node].w);
 }
 
 /* The output node of the additive pipelines. Input 0: the source row
@@ -47,8 +47,12 @@ void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r,
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
-    bloom_row_out_c(u, r & 1, (const uint8_t *)in[0][0], (uint8_t *)dst, n->w, g->node[n->in[1].node].w,
-                    &g->out);
+    if (g->kern.simd)
+        bloom_row_out_k(&g->kern, u, r & 1, (const uint8_t *)in[0][0], (uint8_t *)dst, n->w,
+                        g->node[n->in[1].node].w, &g->out);
+    else
+        bloom_row_out_c(u, r & 1, (const uint8_t *)in[0][0], (uint8_t *)dst, n->w, g->node[n->in[1].node].w,
+                        &g->out);
 }
 
 int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux)

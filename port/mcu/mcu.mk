@@ -21,7 +21,9 @@ MCU_CPU_m4 := -mcpu=cortex-m4
 MCU_CPU_m7 := -mcpu=cortex-m7
 MCU_BUILDS := full rgb565 min minnc
 MCU_DEF_full :=
-MCU_DEF_rgb565 := -DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0
+# The default preset only: the figures are for the pipeline a small target runs.
+MCU_DEF_nopresets := -DBLOOM_USE_GAMEDEV=0 -DBLOOM_USE_XNA=0 -DBLOOM_USE_ATTENUATION=0 -DBLOOM_USE_ARM=0 -DBLOOM_USE_COD=0
+MCU_DEF_rgb565 := -DBLOOM_USE_RGB888=0 -DBLOOM_USE_XRGB8888=0 -DBLOOM_USE_RGBQ16=0 $(MCU_DEF_nopresets)
 MCU_DEF_min := $(MCU_DEF_rgb565) -DBLOOM_SMALL=1 -DBLOOM_USE_SKIP=0
 MCU_DEF_minnc := $(MCU_DEF_min) -DBLOOM_CHECK_RINGS=0
 MCU_LEVELS := 5 7

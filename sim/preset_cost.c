@@ -1,0 +1,241 @@
+/* Cost of every preset against the default, measured side by side in one
+ * run (issue 4), and the workspace each needs.
+ *
+ *   preset_cost [--sizes WxH,...] [--runs N] [--md FILE] [--csv FILE]
+ *       times bloom_process per preset (median of N runs, rounds
+ *       interleaved so that load changes hit every preset alike), as ratios
+ *       to the default preset and to a cold memcpy of the frame measured in
+ *       the same rounds; prints a table, writes Markdown and CSV.
+ *   preset_cost --one NAME W H
+ *       one bloom_process call of preset NAME (for callgrind: make
+ *       preset-icount).
+ *   preset_cost --list    the presets this build has.
+ *
+ * The scene is sim/bench's (a real photograph stretched to the frame, plus
+ * bright spots). Presets with an aux plane get a synthetic one: a vertical
+ * depth ramp (attenuation: far at the top), no mask (arm). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bloom.h"
+#include "bench/scene.h"
+
+#define MAX_SIZES 8
+#define RING_BYTES (256u << 20) /* beyond any last-level cache */
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
+}
+
+static int cmp_d(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+typedef struct {
+    bloom_config_t cfg;
+    void *ws;
+    bloom_t *b;
+    uint8_t *aux;
+    size_t ws_bytes;
+} engine_t;
+
+static int engine_make(engine_t *e, bloom_preset_t p, int w, int h)
+{
+    memset(e, 0, sizeof *e);
+    bloom_config_default(&e->cfg, w, h);
+    if (bloom_config_preset(&e->cfg, p) != BLOOM_OK)
+        return -1;
+    bloom_info_t info;
+    bloom_status_t st = bloom_query(&e->cfg, &info);
+    if (st != BLOOM_OK) {
+        fprintf(stderr, "preset_cost: %s: %s\n", bloom_preset_name(p), bloom_status_str(st));
+        return -1;
+    }
+    e->ws_bytes = info.workspace_bytes;
+    e->ws = aligned_alloc(64, (e->ws_bytes + 63u) & ~(size_t)63u);
+    if (!e->ws || bloom_init(&e->b, e->ws, e->ws_bytes, &e->cfg) != BLOOM_OK)
+        return -1;
+    if (e->cfg.aux_fmt != BLOOM_AUX_NONE) {
+        const int bpp = e->cfg.aux_fmt == BLOOM_AUX_U16 ? 2 : 1;
+        e->aux = malloc((size_t)w * (size_t)h * (size_t)bpp);
+        if (!e->aux)
+            return -1;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                const unsigned v = (unsigned)(65535 - (long)y * 65535 / (h > 1 ? h - 1 : 1));
+                if (bpp == 2) {
+                    const uint16_t v16 = (uint16_t)v;
+                    memcpy(e->aux + 2 * ((size_t)y * (size_t)w + (size_t)x), &v16, 2);
+                } else {
+                    e->aux[(size_t)y * (size_t)w + (size_t)x] = (uint8_t)(v >> 8);
+                }
+            }
+        if (bloom_set_aux(e->b, e->aux, (ptrdiff_t)w * bpp) != BLOOM_OK)
+            return -1;
+    }
+    return 0;
+}
+
+static void engine_drop(engine_t *e)
+{
+    free(e->ws);
+    free(e->aux);
+}
+
+static int run(engine_t *e, const uint8_t *src, uint8_t *dst, int w)
+{
+    return bloom_process(e->b, src, (ptrdiff_t)w * 3, dst, (ptrdiff_t)w * 3) == BLOOM_OK ? 0 : -1;
+}
+
+static int one(const char *name, int w, int h)
+{
+    const int p = bloom_preset_from_name(name);
+    if (p < 0 || !bloom_preset_available((bloom_preset_t)p)) {
+        printf("skipped: preset %s not in this build\n", name);
+        return 0;
+    }
+    char err[256];
+    uint8_t *src = malloc((size_t)w * (size_t)h * 3), *dst = malloc((size_t)w * (size_t)h * 3);
+    engine_t e;
+    if (!src || !dst || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err) ||
+        engine_make(&e, (bloom_preset_t)p, w, h) || run(&e, src, dst, w)) {
+        fprintf(stderr, "preset_cost: %s %dx%d failed\n", name, w, h);
+        return 1;
+    }
+    unsigned long long sum = 0;
+    for (size_t i = 0; i < (size_t)w * (size_t)h * 3; i++)
+        sum = sum * 31u + dst[i];
+    printf("%s %dx%d checksum %016llx workspace %zu\n", name, w, h, sum, e.ws_bytes);
+    engine_drop(&e);
+    free(src);
+    free(dst);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    int sw[MAX_SIZES], sh[MAX_SIZES], nsizes = 0, runs = 15;
+    const char *md = NULL, *csv = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--one") && i + 3 < argc)
+            return one(argv[i + 1], atoi(argv[i + 2]), atoi(argv[i + 3]));
+        if (!strcmp(argv[i], "--list")) {
+            for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
+                if (bloom_preset_available((bloom_preset_t)p))
+                    printf("%s\n", bloom_preset_name((bloom_preset_t)p));
+            return 0;
+        }
+        if (!strcmp(argv[i], "--sizes") && i + 1 < argc) {
+            nsizes = scene_parse_sizes(argv[++i], sw, sh, MAX_SIZES);
+            if (nsizes < 1) {
+                fprintf(stderr, "preset_cost: bad --sizes\n");
+                return 2;
+            }
+        } else if (!strcmp(argv[i], "--runs") && i + 1 < argc) {
+            runs = atoi(argv[++i]);
+            if (runs < 1 || runs > 1000)
+                return 2;
+        } else if (!strcmp(argv[i], "--md") && i + 1 < argc) {
+            md = argv[++i];
+        } else if (!strcmp(argv[i], "--csv") && i + 1 < argc) {
+            csv = argv[++i];
+        } else {
+            fprintf(stderr, "usage: preset_cost [--sizes WxH,...] [--runs N] [--md F] [--csv F] | --one NAME W H | --list\n");
+            return 2;
+        }
+    }
+    if (!nsizes) {
+        sw[0] = 640, sh[0] = 480, sw[1] = 1920, sh[1] = 1080;
+        nsizes = 2;
+    }
+    FILE *fm = md ? fopen(md, "w") : NULL, *fc = csv ? fopen(csv, "w") : NULL;
+    if ((md && !fm) || (csv && !fc)) {
+        fprintf(stderr, "preset_cost: cannot write %s\n", md && !fm ? md : csv);
+        return 1;
+    }
+    if (fc)
+        fprintf(fc, "size,preset,median_ms,x_default,x_memcpy,workspace_bytes\n");
+    if (fm)
+        fprintf(fm, "| size | preset | median ms | x default | x cold memcpy | workspace bytes |\n"
+                    "|---|---|---:|---:|---:|---:|\n");
+    printf("%-10s %-12s %10s %10s %10s %12s\n", "size", "preset", "median ms", "x default", "x memcpy",
+           "workspace");
+    for (int s = 0; s < nsizes; s++) {
+        const int w = sw[s], h = sh[s];
+        const size_t fb = (size_t)w * (size_t)h * 3;
+        char err[256];
+        uint8_t *src = malloc(fb), *dst = malloc(fb);
+        size_t nring = RING_BYTES / fb < 4 ? 4 : RING_BYTES / fb;
+        uint8_t *ring = malloc(nring * fb);
+        if (!src || !dst || !ring || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err)) {
+            fprintf(stderr, "preset_cost: %s\n", src && dst && ring ? err : "out of memory");
+            return 1;
+        }
+        for (size_t i = 0; i < nring; i++)
+            memcpy(ring + i * fb, src, fb);
+        engine_t e[BLOOM_PRESET_COUNT];
+        int have[BLOOM_PRESET_COUNT];
+        double *t[BLOOM_PRESET_COUNT + 1];
+        for (int p = 0; p <= BLOOM_PRESET_COUNT; p++)
+            t[p] = calloc((size_t)runs, sizeof(double));
+        for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
+            have[p] = bloom_preset_available((bloom_preset_t)p) && !engine_make(&e[p], (bloom_preset_t)p, w, h) &&
+                      !run(&e[p], src, dst, w); /* warm-up */
+        size_t slot = 0;
+        for (int r = 0; r < runs; r++) {
+            for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+                if (!have[p])
+                    continue;
+                const double t0 = now_ms();
+                run(&e[p], src, dst, w);
+                t[p][r] = now_ms() - t0;
+            }
+            /* the floor: copy a frame that is not in any cache */
+            const double t0 = now_ms();
+            memcpy(dst, ring + slot * fb, fb);
+            t[BLOOM_PRESET_COUNT][r] = now_ms() - t0;
+            slot = (slot + 1) % nring;
+        }
+        const double mc = median(t[BLOOM_PRESET_COUNT], runs), def = median(t[0], runs);
+        char size[32];
+        snprintf(size, sizeof size, "%dx%d", w, h);
+        for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+            if (!have[p])
+                continue;
+            const double m = p == 0 ? def : median(t[p], runs);
+            printf("%-10s %-12s %10.3f %10.2f %10.1f %12zu\n", size, bloom_preset_name((bloom_preset_t)p), m,
+                   m / def, m / mc, e[p].ws_bytes);
+            if (fc)
+                fprintf(fc, "%s,%s,%.4f,%.3f,%.2f,%zu\n", size, bloom_preset_name((bloom_preset_t)p), m, m / def,
+                        m / mc, e[p].ws_bytes);
+            if (fm)
+                fprintf(fm, "| %s | %s | %.2f | %.2f | %.1f | %zu |\n", size, bloom_preset_name((bloom_preset_t)p),
+                        m, m / def, m / mc, e[p].ws_bytes);
+            engine_drop(&e[p]);
+        }
+        printf("%-10s %-12s %10.3f %10.2f %10.1f\n", size, "memcpy", mc, mc / def, 1.0);
+        for (int p = 0; p <= BLOOM_PRESET_COUNT; p++)
+            free(t[p]);
+        free(src);
+        free(dst);
+        free(ring);
+    }
+    if (fm)
+        fclose(fm);
+    if (fc)
+        fclose(fc);
+    return 0;
+}
