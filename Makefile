@@ -50,7 +50,7 @@ $(B)/gen_tables: sim/gen_tables.c | $(B)
 	$(CC) $(WARN) -O2 $< -lm -o $@
 
 # ---- sanitized test build ------------------------------------------------
-$(B)/san/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) | $(B)/san
+$(B)/san/%: tests/%.c $(wildcard tests/*.h) $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) | $(B)/san
 	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
 
 # Everything with clang too, warnings as errors (a compile check).
@@ -79,7 +79,7 @@ freestanding: | $(B)/arm
 	echo "freestanding: Cortex-M4 core references only:" $$undef
 
 # clang's sanitizers check more than gcc's (an offset on a null pointer, ...).
-$(B)/clangsan/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
+$(B)/clangsan/%: tests/%.c $(wildcard tests/*.h) $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(B)/clangsan
 	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
 test-clang-san: $(B)/clangsan/test_core $(B)/clangsan/test_extreme
@@ -89,7 +89,7 @@ test-clang-san: $(B)/clangsan/test_core $(B)/clangsan/test_extreme
 	  tail -n 1 $(B)/clangsan/$$t.log; [ $$st -eq 0 ] || { tail -n 20 $(B)/clangsan/$$t.log; exit 1; }; done
 
 # The size-optimized core (BLOOM_SMALL) must compute the same bits.
-$(B)/small/%: tests/%.c tests/harness.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
+$(B)/small/%: tests/%.c $(wildcard tests/*.h) $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(B)/small
 	$(CC) $(WARN) -O2 -DBLOOM_SMALL=1 $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
 test-small: $(B)/small/test_conformance $(B)/small/test_core

@@ -19,7 +19,7 @@ CROSS_CFLAGS ?= -O2
 # frames through the engine and diffs with the host instead.
 CROSS_SKIP_TESTS ?= test_conformance test_extreme
 CROSS_BINS := $(TESTS) corpus_hash bloom_demo bloom_info
-CROSS_TEST_HDR := tests/harness.h tests/testutil.h tests/conform.h
+CROSS_TEST_HDR := $(wildcard tests/*.h)
 CROSS_CORE_HDR := $(CORE_HDR) $(wildcard include/*.h src/*.h)
 
 CHECKS += test-cross
