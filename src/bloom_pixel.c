@@ -152,6 +152,146 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
     bloom_encode_row(fmt, linear, v, p, 1);
 }
 
+#if !BLOOM_SMALL
+/* sRGB encode without the code bound test: v clamped to the top threshold
+ * t[n] first, so the bucket code is at most n - 1 (the top threshold is not
+ * at a bucket start: tests/test_simd.c checks it for the tables built in)
+ * and t[c + 1] exists. Every v >= t[n] gives n, as the reference does. */
+static BLOOM_ALWAYS_INLINE uint32_t enc_fast(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
+                                             uint32_t n)
+{
+    const uint32_t top = t[n];
+    v = v < top ? v : top;
+    const uint32_t c = bkt[v >> shift];
+    return c + (v >= t[c + 1]);
+}
+#define FENC8(v) enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
+#define FENC6(v) enc_fast(v, bloom_srgb_bkt6, BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63)
+#define FENC5(v) enc_fast(v, bloom_srgb_bkt5, BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31)
+
+uint32_t bloom_enc_srgb_fast(uint32_t v, int bits)
+{
+    return bits == 8 ? FENC8(v) : bits == 6 ? FENC6(v) : FENC5(v);
+}
+
+uint32_t bloom_enc_srgb_ref(uint32_t v, int bits)
+{
+    return bits == 8 ? ENC8(v, false) : bits == 6 ? ENC6(v, false) : ENC5(v, false);
+}
+
+bool bloom_encode_eo_ok(bloom_format_t in_fmt, bloom_format_t out_fmt, bool linear)
+{
+    const bool in = (BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888) ||
+                    (BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888) ||
+                    (BLOOM_USE_RGB565 && in_fmt == BLOOM_FMT_RGB565);
+    const bool out = (BLOOM_USE_RGB888 && out_fmt == BLOOM_FMT_RGB888) ||
+                     (BLOOM_USE_XRGB8888 && out_fmt == BLOOM_FMT_XRGB8888) ||
+                     (BLOOM_USE_RGB565 && out_fmt == BLOOM_FMT_RGB565);
+    return in && out && !linear;
+}
+
+/* One output pixel: bloom b[0..2] + the source pixel at p, encoded at q.
+ * fi, fo and dbg are constants after inlining. */
+static BLOOM_ALWAYS_INLINE void eo_px(bloom_format_t fi, bloom_format_t fo, bool dbg, const uint8_t *p,
+                                      const uint32_t *b, uint8_t *q)
+{
+    uint32_t v[3] = {b[0], b[1], b[2]};
+    if (!dbg) {
+        uint32_t s[3];
+        if (fi == BLOOM_FMT_RGB565)
+            BLOOM_DEC_RGB565(p, s, false);
+        else if (fi == BLOOM_FMT_XRGB8888)
+            BLOOM_DEC_XRGB8888(p, s, false);
+        else
+            BLOOM_DEC_RGB888(p, s, false);
+        v[0] += s[0];
+        v[1] += s[1];
+        v[2] += s[2];
+    }
+    if (fo == BLOOM_FMT_RGB565) {
+        const uint32_t w = (FENC5(v[0]) << 11) | (FENC6(v[1]) << 5) | FENC5(v[2]);
+        q[0] = (uint8_t)w;
+        q[1] = (uint8_t)(w >> 8);
+    } else if (fo == BLOOM_FMT_XRGB8888) {
+        q[0] = (uint8_t)FENC8(v[2]);
+        q[1] = (uint8_t)FENC8(v[1]);
+        q[2] = (uint8_t)FENC8(v[0]);
+        q[3] = 0xFF;
+    } else {
+        q[0] = (uint8_t)FENC8(v[0]);
+        q[1] = (uint8_t)FENC8(v[1]);
+        q[2] = (uint8_t)FENC8(v[2]);
+    }
+}
+
+static BLOOM_ALWAYS_INLINE void eo_loop(bloom_format_t fi, bloom_format_t fo, bool dbg, const uint8_t *p,
+                                        const uint32_t *e, const uint32_t *o, uint8_t *q, int n)
+{
+    const size_t ib = fi == BLOOM_FMT_RGB565 ? 2u : fi == BLOOM_FMT_XRGB8888 ? 4u : 3u;
+    const size_t ob = fo == BLOOM_FMT_RGB565 ? 2u : fo == BLOOM_FMT_XRGB8888 ? 4u : 3u;
+    int x = 0;
+    for (; x + 2 <= n; x += 2, p += 2 * ib, q += 2 * ob, e += 3, o += 3) {
+        eo_px(fi, fo, dbg, p, e, q);
+        eo_px(fi, fo, dbg, p + ib, o, q + ob);
+    }
+    if (x < n)
+        eo_px(fi, fo, dbg, p, e, q);
+}
+
+/* The output format as a constant. */
+static BLOOM_ALWAYS_INLINE void eo_out(bloom_format_t fi, bloom_format_t fo, bool dbg, const uint8_t *p,
+                                       const uint32_t *e, const uint32_t *o, uint8_t *q, int n)
+{
+    switch (fo) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        eo_loop(fi, BLOOM_FMT_RGB565, dbg, p, e, o, q, n);
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        eo_loop(fi, BLOOM_FMT_XRGB8888, dbg, p, e, o, q, n);
+        return;
+#endif
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        eo_loop(fi, BLOOM_FMT_RGB888, dbg, p, e, o, q, n);
+        return;
+#endif
+    default: /* refused by bloom_encode_eo_ok */
+        return;
+    }
+}
+
+void bloom_encode_eo(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                     const uint32_t *e, const uint32_t *o, uint8_t *dst, int n)
+{
+    if (debug) { /* the source is not read: one loop per output format */
+        eo_out(BLOOM_FMT_RGB888, out_fmt, true, src, e, o, dst, n);
+        return;
+    }
+    switch (in_fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        eo_out(BLOOM_FMT_RGB565, out_fmt, false, src, e, o, dst, n);
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        eo_out(BLOOM_FMT_XRGB8888, out_fmt, false, src, e, o, dst, n);
+        return;
+#endif
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        eo_out(BLOOM_FMT_RGB888, out_fmt, false, src, e, o, dst, n);
+        return;
+#endif
+    default: /* refused by bloom_encode_eo_ok */
+        return;
+    }
+}
+#endif
+
 /* Largest byte of p[0..n): 32 lanes of fixed-count loops so that even
  * -O2's cheapest vectorizer turns them into byte-max instructions. */
 static uint8_t max_bytes(const uint8_t *p, size_t n)

@@ -8,6 +8,12 @@
 
 #include "bloom_internal.h"
 
+#if defined(__GNUC__) && !BLOOM_SMALL
+#define BLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define BLOOM_ALWAYS_INLINE inline
+#endif
+
 /* Linear decode: round(c / n * 2^F); n is odd, so there is no tie. */
 static inline uint32_t bloom_dec_linear(uint32_t c, uint32_t n)
 {
@@ -59,5 +65,22 @@ static inline void bloom_dec_rgbq16(const uint8_t *p, uint32_t *o)
 /* Rows: n pixels from src (packed) to dst (3 samples each) and back. */
 void bloom_decode_row(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n);
 void bloom_encode_row(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_t *dst, int n);
+
+#if !BLOOM_SMALL
+/* The last step of the fast output path (bloom_row_out_k): output pixels
+ * x = 0 .. n-1 get v = P + S, P = (x odd ? o : e)[3 (x >> 1) + ch] (the
+ * bloom, already scaled by the intensity), S the decoded source pixel (0 in
+ * the debug view), sRGB-encoded into dst. Formats RGB888, XRGB8888, RGB565
+ * in and out (bloom_encode_eo_ok); P + S must not pass 2^32 - 1. Same
+ * codes as bloom_decode_row + bloom_row_composite_c + bloom_encode_row. */
+bool bloom_encode_eo_ok(bloom_format_t in_fmt, bloom_format_t out_fmt, bool linear);
+void bloom_encode_eo(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                     const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
+/* The sRGB code of v by the bucket table with v clamped to the top
+ * threshold first (no bound test on the code), and by the reference
+ * encoder: tests compare them over every v. */
+uint32_t bloom_enc_srgb_fast(uint32_t v, int bits);
+uint32_t bloom_enc_srgb_ref(uint32_t v, int bits);
+#endif
 
 #endif

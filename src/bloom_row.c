@@ -45,12 +45,6 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     bloom_row_box_range_c(s, dst, 0, dw, sw);
 }
 
-#if defined(__GNUC__) && !BLOOM_SMALL
-#define BLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define BLOOM_ALWAYS_INLINE inline
-#endif
-
 /* One decoded pixel; fmt and lin are constants after inlining. */
 static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *o)
 {
@@ -312,9 +306,75 @@ void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, ui
     }
 }
 
+void bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+{
+    for (int i = 0; i < n; i++)
+        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+}
+
+void bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+{
+    for (int i = 0; i < n; i++) {
+        const uint32_t p = v[i - 3], c = v[i], q = v[i + 3];
+        e[i] = (3u * p + 4u * c + q + 4u) >> 3;
+        o[i] = (p + 4u * c + 3u * q + 4u) >> 3;
+    }
+}
+
+void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity)
+{
+    for (int i = 0; i < n; i++)
+        x[i] = (uint32_t)(((uint64_t)intensity * x[i] + 32768u) >> 16);
+}
+
+#if !BLOOM_SMALL
+/* Level-1 columns per chunk of the fast output path (stack: 3 x 32 words). */
+#define OUT_FAST_CH 32
+
+/* The fast output path of bloom_row_out_k (see bloom_internal.h for the
+ * bound it relies on). Per chunk of level-1 columns m0 .. m0+n-1: the
+ * vertical tent V of columns m0-1 .. m0+n (edges replicated) in one flat
+ * pass, the horizontal tent into the even (e) and odd (od) output columns,
+ * the intensity, then the composite and encode per output pixel. Same bits
+ * as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
+ * for I <= 224.4 and P + S < 2^32. */
+static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
+                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
+{
+    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
+    uint32_t vb[3 * (OUT_FAST_CH + 2)], e[3 * OUT_FAST_CH], od[3 * OUT_FAST_CH];
+    for (int m0 = 0; m0 < sw; m0 += OUT_FAST_CH) {
+        const int n = imin(OUT_FAST_CH, sw - m0);
+        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
+        const size_t c0 = (size_t)lo * 3u;
+        uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
+        k->vtent(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1));
+        if (m0 == 0)
+            memcpy(vb, vb + 3, 3u * sizeof *vb);
+        if (m0 + n == sw)
+            memcpy(vb + 3 * (n + 1), vb + 3 * n, 3u * sizeof *vb);
+        k->htent_eo(vb + 3, e, od, 3 * n);
+        if (o->intensity != 65536u) { /* (65536 x + 32768) >> 16 = x */
+            k->scale(e, 3 * n, o->intensity);
+            k->scale(od, 3 * n, o->intensity);
+        }
+        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
+        bloom_encode_eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od,
+                        dst + (size_t)x0 * obpp, nx);
+    }
+}
+#endif
+
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
                      const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
+#if !BLOOM_SMALL
+    if (k->vtent && sw >= 1 && sw == (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+        out_fast(k, u, odd, src, dst, w, sw, o);
+        return;
+    }
+#endif
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     if (o->debug)
@@ -334,6 +394,15 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->box = bloom_row_box_c;
     k->tent = bloom_row_tent_c;
     k->composite = bloom_row_composite_c;
+#if !BLOOM_SMALL
+    k->vtent = bloom_row_vtent_c;
+    k->htent_eo = bloom_row_htent_eo_c;
+    k->scale = bloom_row_scale_c;
+#else
+    k->vtent = NULL;
+    k->htent_eo = NULL;
+    k->scale = NULL;
+#endif
     k->simd = false;
     k->name = "c";
     if (flags & BLOOM_FLAG_NO_SIMD)
@@ -342,12 +411,22 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->box = bloom_row_box_sse2_any;
     k->tent = bloom_row_tent_sse2_any;
     k->composite = bloom_row_composite_sse2_any;
+#if !BLOOM_SMALL
+    k->vtent = bloom_row_vtent_sse2;
+    k->htent_eo = bloom_row_htent_eo_sse2;
+    k->scale = bloom_row_scale_sse2;
+#endif
     k->simd = true;
     k->name = "sse2";
 #elif defined(BLOOM_SIMD_NEON)
     k->box = bloom_row_box_neon_any;
     k->tent = bloom_row_tent_neon_any;
     k->composite = bloom_row_composite_neon_any;
+#if !BLOOM_SMALL
+    k->vtent = bloom_row_vtent_neon;
+    k->htent_eo = bloom_row_htent_eo_neon;
+    k->scale = bloom_row_scale_neon;
+#endif
     k->simd = true;
     k->name = "neon";
 #endif

@@ -49,6 +49,34 @@ void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint3
         bloom_row_composite_c(bl + i, sv + i, n - i, intensity);
 }
 
+#if !BLOOM_SMALL
+void bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+{
+    vtent_flat(a, b, c, dst, n);
+}
+
+void bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+{
+    htent_eo_flat(v, e, o, n);
+}
+
+/* x = low 32 bits of (I x + 32768) >> 16: a widening multiply, then a
+ * rounding narrowing shift (truncating, as the C twin's cast). */
+void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity)
+{
+    const uint32x2_t I = vdup_n_u32(intensity);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const uint32x4_t v = vld1q_u32(x + i);
+        const uint32x2_t lo = vrshrn_n_u64(vmull_u32(vget_low_u32(v), I), 16);
+        const uint32x2_t hi = vrshrn_n_u64(vmull_u32(vget_high_u32(v), I), 16);
+        vst1q_u32(x + i, vcombine_u32(lo, hi));
+    }
+    if (i < n)
+        bloom_row_scale_c(x + i, n - i, intensity);
+}
+#endif
+
 #else
 typedef int bloom_row_neon_empty; /* ISO C wants a declaration in every file */
 #endif

@@ -148,3 +148,36 @@ static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, u
         bloom_row_tent_c(u, odd, add ? add + (size_t)(xb - x0) * 3u : NULL,
                          dst + (size_t)(xb - x0) * 3u, xb, end - xb, sw);
 }
+
+#if !BLOOM_SMALL
+/* ---- flat kernels of the fast output path --------------------------------- */
+
+/* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3, 32-bit lanes (as the C twin). */
+static void vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+{
+    const VT k4 = DUP(4u);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const VT va = LD4(a + i);
+        const VT s = ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4));
+        ST4(dst + i, SHR(s, 3));
+    }
+    if (i < n)
+        bloom_row_vtent_c(a + i, b + i, c + i, dst + i, n - i);
+}
+
+/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */
+static void htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+{
+    const VT k4 = DUP(4u);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const VT p = LD4(v + i - 3), q = LD4(v + i + 3);
+        const VT m = ADD(ADD(SHL(LD4(v + i), 2), k4), ADD(p, q));
+        ST4(e + i, SHR(ADD(m, SHL(p, 1)), 3));
+        ST4(o + i, SHR(ADD(m, SHL(q, 1)), 3));
+    }
+    if (i < n)
+        bloom_row_htent_eo_c(v + i, e + i, o + i, n - i);
+}
+#endif

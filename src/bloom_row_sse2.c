@@ -67,6 +67,35 @@ void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint3
         bloom_row_composite_c(bl + i, sv + i, n - i, intensity);
 }
 
+#if !BLOOM_SMALL
+void bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+{
+    vtent_flat(a, b, c, dst, n);
+}
+
+void bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+{
+    htent_eo_flat(v, e, o, n);
+}
+
+/* x = low 32 bits of (I x + 32768) >> 16: even and odd lanes through
+ * pmuludq, the low dwords put back together. */
+void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity)
+{
+    const __m128i I = _mm_set1_epi32((int)intensity), rnd = _mm_set1_epi64x(32768);
+    const __m128i lo32 = _mm_set1_epi64x(0xFFFFFFFFll);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const __m128i v = LD4(x + i);
+        const __m128i ev = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(v, I), rnd), 16);
+        const __m128i od = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(_mm_srli_epi64(v, 32), I), rnd), 16);
+        ST4(x + i, _mm_or_si128(_mm_and_si128(ev, lo32), _mm_slli_epi64(od, 32)));
+    }
+    if (i < n)
+        bloom_row_scale_c(x + i, n - i, intensity);
+}
+#endif
+
 #else
 typedef int bloom_row_sse2_empty; /* ISO C wants a declaration in every file */
 #endif

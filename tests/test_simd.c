@@ -3,7 +3,7 @@
  * random and extreme inputs; then whole frames through bloom_process with
  * and without BLOOM_FLAG_NO_SIMD. On a target without SIMD kernels it
  * compares the C kernels with themselves (and says so). */
-#include "bloom_internal.h"
+#include "bloom_pixel.h"
 #include "harness.h"
 #include "testutil.h"
 
@@ -235,6 +235,175 @@ static void test_composite_formula(const bloom_kernels_t *ks)
     CHECK(bad == 0);
 }
 
+#if !BLOOM_SMALL
+/* The flat kernels of the fast output path: any 32-bit inputs (both wrap
+ * the same way), unaligned, every width. */
+static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    static const uint32_t Is[] = {0u, 1u, 65535u, 65536u, 98304u, 14707629u, 0xFFFFFFFFu};
+    int bad = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int n = widths[wi] * 3; /* samples */
+        for (int mode = 0; mode < 4; mode++)
+            for (int off = 0; off < 4; off++) {
+                const uint32_t max = mode == 3 ? 0xFFFFFFFFu : 16u << BLOOM_LIN_BITS;
+                /* vtent */
+                row_t in[3];
+                for (int i = 0; i < 3; i++) {
+                    in[i] = row_new((size_t)n, (off + i) & 3, 0);
+                    fill(in[i].p, (size_t)n, mode, max);
+                }
+                row_t a = row_new((size_t)n, off, 1), c = row_new((size_t)n, 3 - off, 1);
+                ks->vtent(in[0].p, in[1].p, in[2].p, a.p, n);
+                kc->vtent(in[0].p, in[1].p, in[2].p, c.p, n);
+                int ok = memcmp(a.p, c.p, (size_t)n * 4u) == 0 && row_guard_ok(&a) && row_guard_ok(&c);
+                for (int i = 0; i < n && ok && mode != 3; i++)
+                    ok = c.p[i] == (uint32_t)((3ull * in[0].p[i] + 4ull * in[1].p[i] + in[2].p[i] + 4u) >> 3);
+                if (!ok) {
+                    bad++;
+                    fprintf(stderr, "vtent: n %d mode %d offset %d differs\n", n, mode, off);
+                }
+                free(a.base);
+                free(c.base);
+                /* htent_eo: v[-3 .. n+2] */
+                row_t v = row_new((size_t)n + 6u, off, 0);
+                fill(v.p, (size_t)n + 6u, mode, max);
+                row_t e1 = row_new((size_t)n, (off + 1) & 3, 1), o1 = row_new((size_t)n, (off + 2) & 3, 1);
+                row_t e2 = row_new((size_t)n, (off + 3) & 3, 1), o2 = row_new((size_t)n, off, 1);
+                ks->htent_eo(v.p + 3, e1.p, o1.p, n);
+                kc->htent_eo(v.p + 3, e2.p, o2.p, n);
+                ok = memcmp(e1.p, e2.p, (size_t)n * 4u) == 0 && memcmp(o1.p, o2.p, (size_t)n * 4u) == 0 &&
+                     row_guard_ok(&e1) && row_guard_ok(&o1) && row_guard_ok(&e2) && row_guard_ok(&o2);
+                for (int i = 0; i < n && ok && mode != 3; i++) {
+                    const uint64_t pv = v.p[i], cv = v.p[i + 3], qv = v.p[i + 6];
+                    ok = e2.p[i] == (uint32_t)((3u * pv + 4u * cv + qv + 4u) >> 3) &&
+                         o2.p[i] == (uint32_t)((pv + 4u * cv + 3u * qv + 4u) >> 3);
+                }
+                if (!ok) {
+                    bad++;
+                    fprintf(stderr, "htent_eo: n %d mode %d offset %d differs\n", n, mode, off);
+                }
+                free(v.base);
+                free(e1.base);
+                free(o1.base);
+                free(e2.base);
+                free(o2.base);
+                /* scale */
+                for (int ii = 0; ii < (int)(sizeof Is / sizeof Is[0]); ii++) {
+                    row_t x1 = row_new((size_t)n, (off + ii) & 3, 1), x2 = row_new((size_t)n, (off + ii + 1) & 3, 1);
+                    fill(x1.p, (size_t)n, mode, max);
+                    memcpy(x2.p, x1.p, (size_t)n * 4u);
+                    ks->scale(x1.p, n, Is[ii]);
+                    kc->scale(x2.p, n, Is[ii]);
+                    if (memcmp(x1.p, x2.p, (size_t)n * 4u) != 0 || !row_guard_ok(&x1) || !row_guard_ok(&x2)) {
+                        bad++;
+                        fprintf(stderr, "scale: n %d mode %d I %u differs\n", n, mode, (unsigned)Is[ii]);
+                    }
+                    free(x1.base);
+                    free(x2.base);
+                }
+                for (int i = 0; i < 3; i++)
+                    free(in[i].base);
+            }
+    }
+    CHECKF(bad == 0, "%d flat kernel cases differ", bad);
+}
+
+/* The encoder without the bound test against the reference, every value. */
+static void test_enc_fast(void)
+{
+    int bad = 0;
+    CHECK(bloom_srgb_bkt8[bloom_srgb_enc8[255] >> (BLOOM_LIN_BITS - 12)] < 255);
+    CHECK(bloom_srgb_bkt6[bloom_srgb_enc6[63] >> (BLOOM_LIN_BITS - 10)] < 63);
+    CHECK(bloom_srgb_bkt5[bloom_srgb_enc5[31] >> (BLOOM_LIN_BITS - 9)] < 31);
+    for (int bits = 5; bits <= 8; bits++) {
+        if (bits == 7)
+            continue;
+        for (uint32_t v = 0; v <= BLOOM_LIN_ONE + 4096u; v++)
+            bad += bloom_enc_srgb_fast(v, bits) != bloom_enc_srgb_ref(v, bits);
+        for (int i = 0; i < 100000; i++) {
+            const uint32_t v = rng_next(&seed);
+            bad += bloom_enc_srgb_fast(v, bits) != bloom_enc_srgb_ref(v, bits);
+        }
+        bad += bloom_enc_srgb_fast(0xFFFFFFFFu, bits) != bloom_enc_srgb_ref(0xFFFFFFFFu, bits);
+    }
+    CHECKF(bad == 0, "%d values encode differently", bad);
+}
+
+/* The output row kernel: bloom_row_out_k (fast path where it applies) with
+ * the SIMD and the C kernels against bloom_row_out_c, U at the bound of the
+ * default pipeline (16 * 2^F) and below. */
+static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                          BLOOM_FMT_RGBQ16};
+    static const uint32_t Is[] = {65536u, 14707629u, 98304u, 0u, 1u};
+    int bad = 0, cases = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int w = widths[wi], sw = (w + 1) / 2;
+        for (int fi = 0; fi < 4; fi++)
+            for (int fo = 0; fo < 4; fo++) {
+                const int ib = bloom_format_bpp(fmts[fi]), ob = bloom_format_bpp(fmts[fo]);
+                if (ib == 0 || ob == 0)
+                    continue;
+                for (int var = 0; var < 6; var++) {
+                    const int mode = var % 3;
+                    bloom_out_t o;
+                    o.in_fmt = fmts[fi];
+                    o.out_fmt = fmts[fo];
+                    o.linear = var == 4;
+                    o.debug = var == 5;
+                    o.intensity = Is[var % 5];
+                    row_t u[3];
+                    const uint32_t *up[3];
+                    for (int i = 0; i < 3; i++) {
+                        u[i] = row_new((size_t)sw * 3u, (var + i) & 3, 0);
+                        fill(u[i].p, (size_t)sw * 3u, mode, fmts[fi] == BLOOM_FMT_RGBQ16 ? 0xFFFFFFFFu
+                                                                                          : 16u << BLOOM_LIN_BITS);
+                        up[i] = u[i].p;
+                    }
+                    uint8_t *src = (uint8_t *)xmalloc((size_t)w * (size_t)ib + 1u);
+                    for (int i = 0; i < w * ib; i++)
+                        src[i] = (uint8_t)rng_next(&seed);
+                    if (fmts[fi] == BLOOM_FMT_RGBQ16)
+                        for (int i = 0; i < w * 3; i++) {
+                            const uint32_t q = rng_next(&seed) % (1u << 25);
+                            memcpy(src + 4 * i, &q, 4);
+                        }
+                    uint8_t *d[3];
+                    for (int j = 0; j < 3; j++) {
+                        d[j] = (uint8_t *)xmalloc((size_t)w * (size_t)ob + 1u + 8u);
+                        memset(d[j], 0x5A, (size_t)w * (size_t)ob + 8u);
+                        d[j] += 1; /* unaligned */
+                    }
+                    for (int odd = 0; odd < 2; odd++) {
+                        bloom_row_out_k(ks, up, odd, src, d[0], w, sw, &o);
+                        bloom_row_out_k(kc, up, odd, src, d[1], w, sw, &o);
+                        bloom_row_out_c(up, odd, src, d[2], w, sw, &o);
+                        cases++;
+                        const size_t nb = (size_t)w * (size_t)ob;
+                        int ok = memcmp(d[0], d[2], nb) == 0 && memcmp(d[1], d[2], nb) == 0;
+                        for (int j = 0; j < 3; j++)
+                            for (int g = 0; g < 7; g++)
+                                ok = ok && d[j][nb + (size_t)g] == 0x5A;
+                        if (!ok) {
+                            bad++;
+                            fprintf(stderr, "out: w %d in %d out %d var %d odd %d differs\n", w, (int)fmts[fi],
+                                    (int)fmts[fo], var, odd);
+                        }
+                    }
+                    for (int j = 0; j < 3; j++)
+                        free(d[j] - 1);
+                    free(src);
+                    for (int i = 0; i < 3; i++)
+                        free(u[i].base);
+                }
+            }
+    }
+    CHECKF(bad == 0, "%d of %d output rows differ", bad, cases);
+}
+#endif
+
 /* Whole frames: SIMD engine against the NO_SIMD engine. */
 static void test_frames(void)
 {
@@ -311,7 +480,7 @@ int main(void)
     bloom_kernels_select(&kc, BLOOM_FLAG_NO_SIMD);
     CHECK(!kc.simd && kc.box == bloom_row_box_c && kc.tent == bloom_row_tent_c);
     if (ks.simd)
-        printf("SIMD kernels: %s (box, tent, composite) against C\n", ks.name);
+        printf("SIMD kernels: %s (box, tent, composite, vtent, htent_eo, scale) against C\n", ks.name);
     else
         printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");
 
@@ -328,6 +497,11 @@ int main(void)
     test_composite(&ks, &kc);
     test_composite_formula(&ks);
     test_composite_formula(&kc);
+#if !BLOOM_SMALL
+    test_flat(&ks, &kc);
+    test_enc_fast();
+    test_out(&ks, &kc);
+#endif
     test_frames();
     return harness_finish();
 }
