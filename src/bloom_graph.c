@@ -279,7 +279,10 @@ bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, blo
     g->aux_row_bytes = (size_t)cfg->width * (size_t)g->aux_bpp;
     g->scratch_len = (size_t)cfg->width * 3u + 16u;
     g->out_node = -1;
+    g->scratch_rows = -1;
     st = bloom_preset_ops(cfg->preset)->build(g);
+    if (g->scratch_rows < 0 || g->scratch_rows > BG_SCRATCH)
+        g->scratch_rows = BG_SCRATCH;
     if (st != BLOOM_OK)
         return st;
     if (g->failed || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0])
@@ -335,7 +338,7 @@ uint64_t bloom_graph_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
             TAKE(g->aux_ptr, const uint8_t *, cap);
     }
     TAKE(g->src_tag, int32_t, cap);
-    TAKE(g->scratch, uint32_t, (uint64_t)BG_SCRATCH * g->scratch_len);
+    TAKE(g->scratch, uint32_t, (uint64_t)g->scratch_rows * g->scratch_len);
     if (base)
         g->src_cap = cap;
     for (int i = 0; i < g->nnodes; i++) {

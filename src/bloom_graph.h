@@ -75,6 +75,8 @@ struct bloom_graph {
     /* scratch rows for row functions: BG_SCRATCH rows of scratch_len words */
     uint32_t *scratch;
     size_t scratch_len;
+    int scratch_rows; /* rows the preset's row functions use; a build hook that
+                         leaves it at -1 gets BG_SCRATCH */
     /* source and aux rings: one slot per pushed row, the same for both */
     const uint8_t **src_ptr, **aux_ptr;
     uint8_t *src_copy, *aux_copy;
@@ -131,7 +133,7 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi);
 
 /* ---- helpers for row functions --------------------------------------- */
 
-/* Scratch row i (0 .. BG_SCRATCH-1) of g->scratch_len words (at least
+/* Scratch row i (0 .. g->scratch_rows - 1) of g->scratch_len words (at least
  * 3 * width + 16). Row functions run one at a time: a scratch row is free
  * again when the function returns. */
 static inline uint32_t *bg_scratch(const bloom_graph_t *g, int i)

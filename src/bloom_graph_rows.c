@@ -68,19 +68,24 @@ int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
         D[k] = bg_node(g, bg_fn_box, g->w[k], g->h[k], 3, k);
         bg_input(g, D[k], D[k - 1], BG_DOWN, -1, 2);
     }
-    /* up chain: U_L = D_L; U_k = D_k + tent(U_k+1). D_1 is computed a
-     * second time for the up pass (no delay line at the widest level). */
+    /* up chain: U_L = D_L; U_k = D_k + tent(U_k+1). As in the default
+     * engine, D_1 is computed a second time for the up pass and, when
+     * L >= 3, D_2 from that copy: no delay line at the two widest levels. */
+    int up[3] = {0, D[1], L >= 2 ? D[2] : -1};
+    if (L >= 2) {
+        up[1] = bg_node(g, d1_fn, g->w[1], g->h[1], 3, 1);
+        bg_input(g, up[1], BG_SRC, BG_DOWN, -1, 2);
+        if (d1_aux)
+            bg_input(g, up[1], BG_AUX, BG_DOWN, 0, 1);
+    }
+    if (L >= 3) {
+        up[2] = bg_node(g, bg_fn_box, g->w[2], g->h[2], 3, 2);
+        bg_input(g, up[2], up[1], BG_DOWN, -1, 2);
+    }
     U = D[L];
     for (int k = L - 1; k >= 1; k--) {
-        int dk = D[k];
-        if (k == 1) {
-            dk = bg_node(g, d1_fn, g->w[1], g->h[1], 3, 1);
-            bg_input(g, dk, BG_SRC, BG_DOWN, -1, 2);
-            if (d1_aux)
-                bg_input(g, dk, BG_AUX, BG_DOWN, 0, 1);
-        }
         const int u = bg_node(g, bg_fn_add_tent, g->w[k], g->h[k], 3, k);
-        bg_input(g, u, dk, BG_SAME, 0, 0);
+        bg_input(g, u, k <= 2 ? up[k] : D[k], BG_SAME, 0, 0);
         bg_input(g, u, U, BG_UP, -1, 1);
         U = u;
     }

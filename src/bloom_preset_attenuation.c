@@ -58,6 +58,7 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, u1, BG_UP, -1, 1);
     g->out_node = o;
+    g->scratch_rows = 0;
     return BLOOM_OK;
 }
 
