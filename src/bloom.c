@@ -648,7 +648,9 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
 #define GRAPH_OFF align8(sizeof(bloom_t))
 #define GRAPH_RINGS align8(GRAPH_OFF + sizeof(struct bloom_graph))
 
-static bloom_status_t graph_query(const bloom_config_t *cfg, bloom_info_t *info)
+/* Not inlined: the graph (about 6 KB) must not enlarge bloom_query's frame on
+ * the default path (the Cortex-M stack figure). */
+static BLOOM_NOINLINE bloom_status_t graph_query(const bloom_config_t *cfg, bloom_info_t *info)
 {
     struct bloom_graph tmp;
     bloom_status_t st = bloom_graph_plan(&tmp, cfg, info);
