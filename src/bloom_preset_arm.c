@@ -1,0 +1,323 @@
+/* Preset "arm": the Arm mobile guide's bloom (sim/docs/presets/arm.md).
+ *
+ * Dual filtering (Bjorge, SIGGRAPH 2015) on a one-channel plane:
+ *   P    = Y(S) * mask           full resolution, Y = Rec.709 luminance
+ *   D_1  = knee(down(P))         the soft knee on one channel, no division
+ *   D_k  = down(D_k-1)           k = 2 .. L
+ *   U_L  = D_L,  U_k = up(U_k+1) k = L-1 .. 1 (a blur: no per-level sum)
+ *   B    = up(U_1)               full resolution
+ *   out  = S + I * tint * B      (DEBUG_VIEW: I * tint * B)
+ * down: 4x4 [1 1 1 1; 1 5 5 1; 1 5 5 1; 1 1 1 1] / 32 over 2x-1 .. 2x+2,
+ *       = (4x4 box + 4 * 2x2 centre) / 32, round half up;
+ * up:   3x3 per output parity, /192 (arm.md derives it from the 8 taps),
+ *       round half up, the /3 as a multiply by 0xAAAAAAAB >> 33.
+ * With BLOOM_FLAG_BAKED there is no pyramid: out = S + S * map * strength,
+ * the aux plane being the map: one output node.
+ *
+ * Every value of the plane is a Q12.20 linear sample <= M = 2^28 - 16;
+ * the sums that can pass 2^32 are formed in 64 bits (arm.md, overflow). */
+#include "bloom_graph_rows.h"
+#include "bloom_pixel.h"
+
+#include <string.h>
+
+#if BLOOM_USE_ARM
+
+/* Rec.709 luminance weights, Q16, summing to 65536. */
+#define ARM_WR 13933u
+#define ARM_WG 46871u
+#define ARM_WB 4732u
+
+static inline int imin(int a, int b)
+{
+    return a < b ? a : b;
+}
+
+/* A mask or map code as Q16 (0 .. 65536), = bg_aux_q16: U8 c*65536/255
+ * rounded = 257c + (c >= 128); U16 c*65536/65535 rounded. */
+static inline uint32_t aux_q16(const uint8_t *row, int x, bool u16)
+{
+    if (u16) {
+        uint16_t c16;
+        memcpy(&c16, row + 2 * x, 2);
+        return (uint32_t)c16 + (((uint32_t)c16 + 32768u) >> 16);
+    }
+    const uint32_t c = row[x];
+    return c * 257u + (c >> 7);
+}
+
+/* Pad a column-sum row: p[0] = p[1] (column -1), p[sw+1] = p[sw+2] = p[sw]. */
+static inline void pad(uint32_t *p, int sw)
+{
+    p[0] = p[1];
+    p[sw + 1] = p[sw];
+    p[sw + 2] = p[sw];
+}
+
+/* Horizontal half of the dual down filter: c4 = 4-row column sums, c2 =
+ * the centre two rows' sums, both padded (column i at index i + 1).
+ * D = (S16 + 4 C4 + 16) >> 5 = ((S16 >> 1) + 2 C4 + 8) >> 4 (both sides
+ * below 2^32: S16 <= 16M, C4 <= 4M). */
+static void down_h(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int dw)
+{
+    for (int x = 0; x < dw; x++) {
+        const uint32_t *a = c4 + 2 * x, *b = c2 + 2 * x;
+        const uint32_t s16 = a[0] + a[1] + a[2] + a[3], cc = b[1] + b[2];
+        dst[x] = ((s16 >> 1) + 2u * cc + 8u) >> 4;
+    }
+}
+
+/* The soft knee on one channel, in place: max(soft, b - T), soft =
+ * clamp(b - T + K, 0, 2K)^2 / (4K) rounded; 0 below T - K. */
+static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
+{
+    const uint32_t t = kn->t, k = kn->k, cut = t > k ? t - k : 0u, hi = t + k;
+    for (int x = 0; x < w; x++) {
+        const uint32_t b = row[x];
+        if (b <= cut) {
+            row[x] = 0;
+        } else if (b >= hi) {
+            row[x] = b - t; /* soft = K <= b - T */
+        } else {              /* T - K < b < T + K: K >= 1 */
+            const uint64_t xx = (uint64_t)(b - cut);
+            const uint32_t soft = bloom_div_u64_u32(xx * xx + 2u * (uint64_t)k, 4u * k);
+            row[x] = b > t && b - t > soft ? b - t : soft;
+        }
+    }
+}
+
+/* D_1. Input 0: source rows 2r-1 .. 2r+2; input 1 (with a mask): aux rows
+ * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee. */
+static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                  void *dst)
+{
+    (void)r;
+    const int w0 = g->w[0];
+    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *rgb = bg_scratch(g, 2);
+    const bool mask = g->aux_bpp != 0, u16 = g->aux_bpp == 2;
+    for (int i = 0; i < 4; i++) {
+        bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i], rgb, w0);
+        const uint8_t *m = mask ? (const uint8_t *)in[1][i] : NULL;
+        for (int x = 0; x < w0; x++) {
+            const uint32_t *p = rgb + 3 * x;
+            /* Y <= M: 64-bit products (weights x 2^28) */
+            uint32_t y = (uint32_t)(((uint64_t)ARM_WR * p[0] + (uint64_t)ARM_WG * p[1] + (uint64_t)ARM_WB * p[2] +
+                                     32768u) >> 16);
+            if (mask) {
+                const uint32_t q = aux_q16(m, x, u16);
+                if (q != 65536u)
+                    y = (uint32_t)(((uint64_t)y * q + 32768u) >> 16);
+            }
+            if (i == 0) {
+                c4[x + 1] = y;
+            } else {
+                c4[x + 1] += y;
+                if (i == 1)
+                    c2[x + 1] = y;
+                else if (i == 2)
+                    c2[x + 1] += y;
+            }
+        }
+    }
+    pad(c4, w0);
+    pad(c2, w0);
+    down_h(c4, c2, (uint32_t *)dst, n->w);
+    knee1((uint32_t *)dst, n->w, &g->knee);
+}
+
+/* D_k, k >= 2. Input 0: D_k-1 rows 2r-1 .. 2r+2 (one channel). */
+static void fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                    void *dst)
+{
+    (void)r;
+    const int sw = g->node[n->in[0].node].w;
+    const uint32_t *s0 = (const uint32_t *)in[0][0], *s1 = (const uint32_t *)in[0][1],
+                   *s2 = (const uint32_t *)in[0][2], *s3 = (const uint32_t *)in[0][3];
+    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1);
+    for (int x = 0; x < sw; x++) {
+        const uint32_t mid = s1[x] + s2[x];
+        c2[x + 1] = mid;
+        c4[x + 1] = mid + s0[x] + s3[x];
+    }
+    pad(c4, sw);
+    pad(c2, sw);
+    down_h(c4, c2, (uint32_t *)dst, n->w);
+}
+
+/* The dual up filter of rows u[0..2] = m-1, m, m+1 (width sw) onto a row of
+ * parity odd (width dw = 2sw or 2sw - 1). Vertical: a = A0 (1,3,0), v = T
+ * (3,4,1) (mirrored for odd rows), padded; horizontal: even column 2n
+ * 11a(n-1) + 28a(n) + a(n+1) + v(n-1) + 3v(n), odd 2n+1 mirrored; the sum
+ * S <= 192M is 64-bit; out = floor((S + 96) / 192) = floor(q / 3),
+ * q = (S + 96) >> 6 < 2^30, q / 3 = (q * 0xAAAAAAAB) >> 33. */
+static void up_row(const bloom_graph_t *g, const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int odd,
+                   uint32_t *dst, int dw, int sw)
+{
+    uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
+    if (odd) {
+        const uint32_t *t = u0;
+        u0 = u2;
+        u2 = t;
+    }
+    for (int i = 0; i < sw; i++) {
+        a[i + 1] = u0[i] + 3u * u1[i];
+        v[i + 1] = 3u * u0[i] + 4u * u1[i] + u2[i];
+    }
+    pad(a, sw);
+    pad(v, sw);
+    for (int n = 0; n < sw; n++) {
+        const uint64_t a0 = a[n], a1 = a[n + 1], a2 = a[n + 2], v0 = v[n], v1 = v[n + 1], v2 = v[n + 2];
+        const uint64_t se = 11u * a0 + 28u * a1 + a2 + v0 + 3u * v1;
+        const uint32_t qe = (uint32_t)((se + 96u) >> 6);
+        dst[2 * n] = (uint32_t)(((uint64_t)qe * 0xAAAAAAABu) >> 33);
+        if (2 * n + 1 < dw) {
+            const uint64_t so = a0 + 28u * a1 + 11u * a2 + 3u * v1 + v2;
+            const uint32_t qo = (uint32_t)((so + 96u) >> 6);
+            dst[2 * n + 1] = (uint32_t)(((uint64_t)qo * 0xAAAAAAABu) >> 33);
+        }
+    }
+}
+
+/* U_k. Input 0: U_k+1 rows m-1 .. m+1 (BG_UP). */
+static void fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                  void *dst)
+{
+    up_row(g, (const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2], r & 1,
+           (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
+}
+
+/* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
+static void tint_factors(const bloom_graph_t *g, uint32_t f[3])
+{
+    for (int c = 0; c < 3; c++)
+        f[c] = (uint32_t)(((uint64_t)g->out.intensity * g->cfg.p.tint[c] + 32768u) >> 16);
+}
+
+static inline uint32_t sat32(uint64_t v)
+{
+    return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
+}
+
+/* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
+ * v_c = S_c + ((g_c * B + 32768) >> 16), encoded. */
+static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                   void *dst)
+{
+    const int w = n->w;
+    uint32_t *b = bg_scratch(g, 2), *v = bg_scratch(g, 3);
+    up_row(g, (const uint32_t *)in[1][0], (const uint32_t *)in[1][1], (const uint32_t *)in[1][2], r & 1, b, w,
+           g->node[n->in[1].node].w);
+    uint32_t any = 0;
+    for (int x = 0; x < w; x++)
+        any |= b[x];
+    const uint8_t *src = (const uint8_t *)in[0][0];
+    if (!any) { /* decode + encode of the source (or zeros in the debug view) */
+        bloom_row_copy_c(src, (uint8_t *)dst, w, &g->out);
+        return;
+    }
+    uint32_t f[3];
+    tint_factors(g, f);
+    if (g->out.debug)
+        memset(v, 0, (size_t)w * 3u * sizeof *v);
+    else
+        bloom_decode_row(g->out.in_fmt, g->out.linear, src, v, w);
+    for (int x = 0; x < w; x++) {
+        const uint64_t bx = b[x];
+        uint32_t *p = v + 3 * x;
+        p[0] = sat32(((f[0] * bx + 32768u) >> 16) + p[0]);
+        p[1] = sat32(((f[1] * bx + 32768u) >> 16) + p[1]);
+        p[2] = sat32(((f[2] * bx + 32768u) >> 16) + p[2]);
+    }
+    bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst, w);
+}
+
+/* Baked output. Input 0: the source row; input 1: the map row.
+ * f = (map_q16 * strength + 32768) >> 16 (<= 2^20), v = S + ((S f + 2^15) >> 16)
+ * computed as (S (65536 + f) + 2^15) >> 16 (S * 65536 is a multiple of
+ * 2^16): one multiply-add per channel. Debug view: (S f + 2^15) >> 16. */
+static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
+                         const void *const *const in[BG_MAX_IN], void *dst)
+{
+    (void)r;
+    const int w = n->w;
+    uint32_t *v = bg_scratch(g, 0);
+    const uint8_t *map = (const uint8_t *)in[1][0];
+    const bool u16 = g->aux_bpp == 2;
+    const uint64_t strength = g->cfg.p.strength, one = g->out.debug ? 0u : 65536u;
+    const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
+    for (int x0 = 0; x0 < w; x0 += 256) { /* chunks of 256 pixels stay in the cache */
+        const int cn = imin(256, w - x0);
+        bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][0] + (size_t)x0 * (size_t)g->src_bpp,
+                         v, cn);
+        for (int x = 0; x < cn; x++) {
+            const uint64_t f = ((uint64_t)aux_q16(map, x0 + x, u16) * strength + 32768u) >> 16;
+            const uint64_t m = one + f;
+            uint32_t *p = v + 3 * x;
+            p[0] = sat32((p[0] * m + 32768u) >> 16);
+            p[1] = sat32((p[1] * m + 32768u) >> 16);
+            p[2] = sat32((p[2] * m + 32768u) >> 16);
+        }
+        bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst + (size_t)x0 * obpp, cn);
+    }
+}
+
+static void defaults(bloom_config_t *cfg)
+{
+    cfg->aux_fmt = BLOOM_AUX_NONE; /* no mask: every pixel may bloom */
+    cfg->p.tint[0] = cfg->p.tint[1] = cfg->p.tint[2] = BLOOM_ONE;
+    cfg->p.strength = BLOOM_ONE; /* baked map strength 1.0 */
+}
+
+static bloom_status_t validate(const bloom_config_t *cfg)
+{
+    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_ADDITIVE))
+        return BLOOM_E_FLAGS;
+    if ((cfg->flags & BLOOM_FLAG_BAKED) && cfg->aux_fmt == BLOOM_AUX_NONE)
+        return BLOOM_E_AUX; /* the baked map is the aux plane */
+    if (cfg->aux_fmt != BLOOM_AUX_NONE && cfg->aux_fmt != BLOOM_AUX_U8 && cfg->aux_fmt != BLOOM_AUX_U16)
+        return BLOOM_E_AUX;
+    for (int c = 0; c < 3; c++)
+        if (cfg->p.tint[c] > BLOOM_ONE)
+            return BLOOM_E_TINT;
+    if (cfg->p.strength > 16u * BLOOM_ONE)
+        return BLOOM_E_STRENGTH;
+    return BLOOM_OK;
+}
+
+static bloom_status_t build(bloom_graph_t *g)
+{
+    const int L = g->L;
+    if (g->cfg.flags & BLOOM_FLAG_BAKED) {
+        const int o = bg_node(g, fn_out_baked, g->w[0], g->h[0], 3, 0);
+        bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
+        bg_input(g, o, BG_AUX, BG_SAME, 0, 0);
+        g->out_node = o;
+        return BLOOM_OK;
+    }
+    int d = bg_node(g, fn_d1, g->w[1], g->h[1], 1, 1);
+    bg_input(g, d, BG_SRC, BG_DOWN, -1, 2);
+    if (g->aux_bpp)
+        bg_input(g, d, BG_AUX, BG_DOWN, -1, 2);
+    for (int k = 2; k <= L; k++) {
+        const int nd = bg_node(g, fn_down, g->w[k], g->h[k], 1, k);
+        bg_input(g, nd, d, BG_DOWN, -1, 2);
+        d = nd;
+    }
+    int u = d; /* U_L = D_L */
+    for (int k = L - 1; k >= 1; k--) {
+        const int nu = bg_node(g, fn_up, g->w[k], g->h[k], 1, k);
+        bg_input(g, nu, u, BG_UP, -1, 1);
+        u = nu;
+    }
+    const int o = bg_node(g, fn_out, g->w[0], g->h[0], 3, 0);
+    bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
+    bg_input(g, o, u, BG_UP, -1, 1);
+    g->out_node = o;
+    return BLOOM_OK;
+}
+
+const bloom_preset_ops_t bloom_preset_arm = {"arm", defaults, validate, build};
+
+#else
+typedef int bloom_preset_arm_unused_t;
+#endif
