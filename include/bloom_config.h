@@ -33,7 +33,7 @@
 #define BLOOM_USE_ATTENUATION 1
 #endif
 #ifndef BLOOM_USE_ARM
-#define BLOOM_USE_ARM 0 /* in progress */
+#define BLOOM_USE_ARM 1
 #endif
 #ifndef BLOOM_USE_COD
 #define BLOOM_USE_COD 0 /* in progress */
