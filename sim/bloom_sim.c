@@ -33,6 +33,7 @@ typedef struct {
     uint32_t *in_codes, *out_codes, *fl_codes, *bt_codes;
     uint8_t *rgb, *sbs;
     float *lin;
+    const sim_aux_t *aux; /* the --aux plane when the preset reads one, else NULL */
 } engine_t;
 
 static void engine_free(engine_t *e)
@@ -51,8 +52,51 @@ static void engine_free(engine_t *e)
 }
 
 /* (Re)builds the engine when the frame size or the formats change. */
-static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_frame_t *f, char *err,
-                        size_t errlen)
+/* "preset attenuation (a 0.75, r 0.25, depth plane d.pgm)": the preset and
+ * the parameters it reads. */
+static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf, size_t len)
+{
+    const bloom_preset_params_t *p = &c->p;
+    int n = snprintf(buf, len, "preset %s", bloom_preset_name(c->preset));
+    char more[512] = "";
+    size_t m = 0;
+#define ADD(...) (m += (size_t)snprintf(more + m, sizeof more - m, __VA_ARGS__))
+    switch (c->preset) {
+    case BLOOM_PRESET_GAMEDEV:
+        ADD(", strength %.5g", p->strength / 65536.0);
+        break;
+    case BLOOM_PRESET_XNA:
+        ADD(", %d passes%s", p->passes, (c->flags & BLOOM_FLAG_SATURATE) ? ", saturate" : "");
+        break;
+    case BLOOM_PRESET_ATTENUATION:
+        ADD(", attenuation %.5g, max reduction %.5g", p->attenuation / 65536.0,
+            p->max_reduction / 65536.0);
+        break;
+    case BLOOM_PRESET_ARM:
+        if (c->flags & BLOOM_FLAG_BAKED)
+            ADD(", baked, strength %.5g", p->strength / 65536.0);
+        ADD(", tint %.5g,%.5g,%.5g", p->tint[0] / 65536.0, p->tint[1] / 65536.0, p->tint[2] / 65536.0);
+        break;
+    case BLOOM_PRESET_COD:
+        ADD(", weights");
+        for (int k = 0; k < c->levels && k < BLOOM_MAX_LEVELS; k++)
+            ADD("%s%.5g", k ? "," : " ", p->level_weight[k] / 65536.0);
+        ADD(", tint %.5g,%.5g,%.5g%s", p->tint[0] / 65536.0, p->tint[1] / 65536.0,
+            p->tint[2] / 65536.0, (c->flags & BLOOM_FLAG_ADDITIVE) ? ", additive" : "");
+        break;
+    default:
+        break;
+    }
+    if (c->aux_fmt != BLOOM_AUX_NONE && o->aux_path)
+        ADD(", %s %s, %s", sim_preset_aux_name(c), o->aux_path,
+            c->aux_fmt == BLOOM_AUX_U16 ? "16-bit" : "8-bit");
+#undef ADD
+    if (m && n >= 0 && (size_t)n < len)
+        snprintf(buf + n, len - (size_t)n, " (%s)", more + 2);
+}
+
+static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
+                        const sim_frame_t *f, char *err, size_t errlen)
 {
     bloom_config_t c = o->cfg;
     c.width = f->w;
@@ -69,6 +113,11 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_frame_t *f, 
     if (e->b && !memcmp(&c, &e->cfg, sizeof c))
         return 0;
     engine_free(e);
+    if (c.aux_fmt != BLOOM_AUX_NONE && (aux->w != f->w || aux->h != f->h))
+        return sim_errf(err, errlen,
+                        "%s: --aux: the %s is %dx%d but the frame is %dx%d (it must be the "
+                        "frame's size)",
+                        o->aux_path, sim_preset_aux_name(&c), aux->w, aux->h, f->w, f->h);
     bloom_status_t st = bloom_query(&c, &e->info);
     if (st != BLOOM_OK)
         return sim_errf(err, errlen, "engine configuration for %dx%d: %s", f->w, f->h,
@@ -92,11 +141,19 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_frame_t *f, 
         return sim_errf(err, errlen, "out of memory for %dx%d frames", f->w, f->h);
     if ((st = bloom_init(&e->b, e->ws, e->info.workspace_bytes, &c)) != BLOOM_OK)
         return sim_errf(err, errlen, "engine init: %s", bloom_status_str(st));
+    if (c.aux_fmt != BLOOM_AUX_NONE) {
+        e->aux = aux;
+        if ((st = bloom_set_aux(e->b, aux->data, (ptrdiff_t)aux->w * (aux->fmt == BLOOM_AUX_U16 ? 2 : 1))) !=
+            BLOOM_OK)
+            return sim_errf(err, errlen, "engine aux plane: %s", bloom_status_str(st));
+    }
     sim_fmt_max(c.in_fmt, e->in_max);
     sim_fmt_max(c.out_fmt, e->out_max);
-    printf("engine: %dx%d %s -> %s%s%s, %d levels (%d built), threshold %.5g, knee %.5g, "
+    char pd[640];
+    preset_desc(&c, o, pd, sizeof pd);
+    printf("engine: %dx%d %s -> %s, %s%s%s, %d levels (%d built), threshold %.5g, knee %.5g, "
            "intensity %.5g, workspace %zu bytes, latency %d rows\n",
-           f->w, f->h, sim_fmt_name(c.in_fmt), sim_fmt_name(c.out_fmt),
+           f->w, f->h, sim_fmt_name(c.in_fmt), sim_fmt_name(c.out_fmt), pd,
            (c.flags & BLOOM_FLAG_LINEAR) ? ", linear" : ", sRGB",
            (c.flags & BLOOM_FLAG_DEBUG_VIEW) ? ", bloom-only view" : "", c.levels, e->info.levels,
            c.threshold / 65536.0, c.soft_knee / 65536.0, c.intensity / 65536.0,
@@ -104,24 +161,23 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_frame_t *f, 
     return 0;
 }
 
-/* Runs one reference model (float or bit-true) on the engine's input. */
+/* Runs the preset's reference model (float or bit-true) on the engine's
+ * input (bloom_model_preset_run: the same configuration and aux plane). */
 static int run_model(const engine_t *e, int bittrue, uint32_t *dst)
 {
-    bloom_model_params_t p;
-    memset(&p, 0, sizeof p);
-    p.width = e->w;
-    p.height = e->h;
-    p.levels = e->cfg.levels;
-    p.linear = (e->cfg.flags & BLOOM_FLAG_LINEAR) != 0;
-    p.debug_view = (e->cfg.flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
-    p.bittrue = bittrue;
-    p.threshold = e->cfg.threshold / 65536.0;
-    p.soft_knee = e->cfg.soft_knee / 65536.0;
-    p.intensity = e->cfg.intensity / 65536.0;
-    p.threshold_q = e->info.threshold_q;
-    p.knee_q = e->info.knee_q;
-    p.intensity_q = e->info.intensity_q;
-    return bloom_model_run(&p, e->in_codes, e->in_max, dst, e->out_max, NULL) < 0 ? -1 : 0;
+    bloom_model_preset_args_t a;
+    memset(&a, 0, sizeof a);
+    a.cfg = &e->cfg;
+    a.bittrue = bittrue;
+    a.src = e->in_codes;
+    memcpy(a.src_max, e->in_max, sizeof a.src_max);
+    if (e->aux) {
+        a.aux = e->aux->codes;
+        a.aux_max = e->aux->max;
+    }
+    a.dst_codes = dst;
+    memcpy(a.dst_max, e->out_max, sizeof a.dst_max);
+    return bloom_model_preset_run(&a) < 0 ? -1 : 0;
 }
 
 /* ---- statistics and progress -------------------------------------------- */
@@ -178,6 +234,7 @@ typedef struct {
     stats_t st;
     sim_out_t *out, *sbs;
     progress_t prog;
+    sim_aux_t aux;
 } run_t;
 
 static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, char *err,
@@ -185,8 +242,13 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
 {
     const sim_opts_t *o = r->o;
     engine_t *e = &r->eng;
-    if (engine_setup(e, o, f, err, errlen))
+    if (engine_setup(e, o, &r->aux, f, err, errlen)) {
+        if (o->ninputs > 1) {
+            size_t l = strlen(err);
+            snprintf(err + l, errlen - l, " (frame %ld of the sequence, %s)", gi, name);
+        }
         return -1;
+    }
     const size_t n = (size_t)f->w * (size_t)f->h;
     sim_to_engine(f, e->cfg.in_fmt, (e->cfg.flags & BLOOM_FLAG_LINEAR) != 0, e->src);
     const ptrdiff_t ss = (ptrdiff_t)f->w * bloom_format_bpp(e->cfg.in_fmt);
@@ -218,8 +280,8 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
     int len = snprintf(line, sizeof line, "frame %ld", gi);
     if (o->ninputs > 1)
         len += snprintf(line + len, sizeof line - (size_t)len, " (%s)", name);
-    len += snprintf(line + len, sizeof line - (size_t)len, ": %dx%d, engine %.3f ms", f->w, f->h,
-                    best * 1e3);
+    len += snprintf(line + len, sizeof line - (size_t)len, ": %dx%d, preset %s, engine %.3f ms",
+                    f->w, f->h, bloom_preset_name(e->cfg.preset), best * 1e3);
     if (o->compare) {
         if (run_model(e, 0, e->fl_codes))
             return sim_errf(err, errlen, "frame %ld: the float model failed", gi);
@@ -302,9 +364,9 @@ static void print_summary(const run_t *r)
     for (long i = 0; i < st->frames; i++)
         sum += t[i];
     med = st->frames % 2 ? t[st->frames / 2] : (t[st->frames / 2 - 1] + t[st->frames / 2]) / 2;
-    printf("summary: %ld frame%s, engine per frame: mean %.3f ms, median %.3f ms, min %.3f ms, "
+    printf("summary: %ld frame%s, preset %s, engine per frame: mean %.3f ms, median %.3f ms, min %.3f ms, "
            "max %.3f ms (%.1f Mpixel/s)\n",
-           st->frames, st->frames == 1 ? "" : "s", 1e3 * sum / (double)st->frames, 1e3 * med,
+           st->frames, st->frames == 1 ? "" : "s", bloom_preset_name(r->o->cfg.preset), 1e3 * sum / (double)st->frames, 1e3 * med,
            1e3 * t[0], 1e3 * t[st->frames - 1], sum > 0 ? st->pixels / sum / 1e6 : 0.0);
     free(t);
     if (r->o->compare && st->samples)
@@ -314,6 +376,47 @@ static void print_summary(const run_t *r)
     if (r->o->bittrue)
         printf("summary vs bit-true model: %llu of %llu samples differ\n", st->bt_diff,
                st->bt_samples);
+}
+
+/* The aux plane: --aux loaded (its depth decides BLOOM_AUX_U8/U16) and
+ * checked against the preset, or, without --aux, the preset asked whether
+ * it runs without one. *status is 1 for a file that cannot be used, 2 for
+ * a command line that lacks the plane or gives one the preset does not read. */
+static int aux_check(sim_opts_t *o, sim_aux_t *aux, char *err, size_t errlen, int *status)
+{
+    bloom_config_t t = o->cfg;
+    bloom_info_t info;
+    t.width = t.height = 16;
+    if (!o->aux_path) {
+        if (t.aux_fmt == BLOOM_AUX_NONE)
+            return 0;
+        const char *what = sim_preset_aux_name(&t);
+        t.aux_fmt = BLOOM_AUX_NONE;
+        bloom_status_t st = bloom_query(&t, &info);
+        if (st == BLOOM_E_AUX) {
+            *status = 2;
+            return sim_errf(err, errlen,
+                            "preset %s: %s (its %s: give it with --aux FILE, a grey PGM or "
+                            "PNG of the frames' size)",
+                            bloom_preset_name(t.preset), bloom_status_str(st), what);
+        }
+        o->cfg.aux_fmt = BLOOM_AUX_NONE; /* the plane is optional: run without it */
+        return 0;
+    }
+    if (sim_aux_load(aux, o->aux_path, err, errlen)) {
+        *status = 1;
+        return -1;
+    }
+    t.aux_fmt = o->cfg.aux_fmt = aux->fmt;
+    bloom_status_t st = bloom_query(&t, &info);
+    if (st == BLOOM_E_AUX) {
+        *status = 2;
+        return sim_errf(err, errlen, "--aux: preset %s: %s", bloom_preset_name(t.preset),
+                        bloom_status_str(st));
+    }
+    if (!o->quiet)
+        printf("aux: %s: %s, %s\n", o->aux_path, aux->desc, sim_preset_aux_name(&o->cfg));
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -337,6 +440,8 @@ int main(int argc, char **argv)
         fputs("bloom_sim: out of memory\n", stderr);
         goto done;
     }
+    if (aux_check(&o, &r.aux, err, sizeof err, &rc))
+        goto fail;
     /* every input is opened (and Y4M/raw checked whole) before any output */
     for (int i = 0; i < o.ninputs; i++) {
         if (sim_source_open(&src[i], o.inputs[i], &o.in, err, sizeof err))
@@ -442,6 +547,7 @@ done:
     free(o.inputs);
     sim_frame_free(&frame);
     engine_free(&r.eng);
+    sim_aux_free(&r.aux);
     free(r.st.times);
     return rc;
 }

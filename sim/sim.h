@@ -3,6 +3,7 @@
  *   sim_source.c   input files: format detection, PPM/PGM/PFM (imgio), Y4M, raw dumps
  *   sim_png.c      PNG read/write (libpng)       sim_jpeg.c  JPEG read (libjpeg)
  *   sim_exr.c      OpenEXR read (OpenEXRCore)    sim_convert.c  pixel rules
+ *   sim_aux.c      --aux: the one-channel plane of the presets (depth, mask, map)
  *   sim_out.c      output files: patterns, temp files, PPM/PNG/PFM/Y4M writers
  *   bloom_sim.c    options, the frame loop, statistics, progress
  *
@@ -106,6 +107,22 @@ void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int
 void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear,
                         float *out);
 
+/* ---- the aux plane (sim_aux.c) ------------------------------------------
+ * A grey PGM/PNG read once for every frame: 8-bit (BLOOM_AUX_U8) or 16-bit
+ * (BLOOM_AUX_U16); other maxvals are rescaled to 255 or 65535. */
+typedef struct {
+    int w, h;
+    bloom_aux_format_t fmt;
+    int max;          /* 255 or 65535 */
+    uint8_t *data;    /* the engine's plane: w bytes (U8) or w native uint16 (U16) per row */
+    uint32_t *codes;  /* the same codes for the model, w*h */
+    char desc[64];    /* "PGM 64x48 8-bit grey" */
+} sim_aux_t;
+
+/* Errors name the file: "depth.png: --aux: an RGB image; ...". */
+int sim_aux_load(sim_aux_t *a, const char *path, char *err, size_t errlen);
+void sim_aux_free(sim_aux_t *a);
+
 /* ---- options (sim_opts.c) ---------------------------------------------- */
 typedef struct {
     const char **inputs;
@@ -115,7 +132,11 @@ typedef struct {
     int view_bloom;                        /* --view bloom */
     int diff_gain;                         /* side-by-side difference amplification */
     int fps_num, fps_den;                  /* Y4M output rate when the input has none */
-    bloom_config_t cfg;                    /* levels, threshold, knee, intensity, flags */
+    bloom_config_t cfg;                    /* preset with its defaults, then the options
+                                              given: levels, threshold, knee, intensity,
+                                              flags, preset parameters (aux_fmt: the
+                                              preset's until --aux is loaded) */
+    const char *aux_path;                  /* --aux FILE, or NULL */
     int in_fmt_set, out_fmt_set;
     bloom_format_t in_fmt, out_fmt;
     int compare, bittrue;
@@ -128,6 +149,10 @@ typedef struct {
 /* Parses argv into o. Returns 0 to run, 1 when --help was printed (exit
  * 0), -1 after printing a usage error to stderr (exit 2). */
 int sim_opts_parse(int argc, char **argv, sim_opts_t *o);
+/* "unity, attenuation": the presets this build carries. */
+const char *sim_presets_available(void);
+/* What the preset's aux plane is ("depth plane", "mask", ...); NULL when it reads none. */
+const char *sim_preset_aux_name(const bloom_config_t *c);
 
 /* ---- outputs (sim_out.c) ---------------------------------------------- */
 typedef enum { SIM_OUT_PPM, SIM_OUT_PNG, SIM_OUT_PFM, SIM_OUT_Y4M } sim_out_kind_t;

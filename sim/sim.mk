@@ -7,10 +7,10 @@
 # pkg-config. Without the OpenEXR headers the tool builds without EXR input.
 
 SIMTOOL_SRC := sim/bloom_sim.c sim/sim_opts.c sim/sim_source.c sim/sim_convert.c \
-               sim/sim_out.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c
+               sim/sim_out.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c sim/sim_aux.c
 SIMTOOL_HDR := sim/sim.h
 SIMTEST_SRC := tests/sim/simtest.c tests/sim/simtest_formats.c tests/sim/simtest_errors.c \
-               tests/sim/simtest_gen.c tests/sim/simtest_util.c
+               tests/sim/simtest_gen.c tests/sim/simtest_util.c tests/sim/simtest_presets.c
 SIMTEST_HDR := tests/sim/simtest.h tests/sim/simtest_cases.h
 
 SIMTOOL_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)

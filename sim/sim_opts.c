@@ -55,11 +55,38 @@ static const char usage_text[] =
     "                           otherwise; output rgb888. A forced conversion follows the\n"
     "                           engine's own rules: codes to rgbq16 decode to Q16.16, HDR\n"
     "                           to 8/5/6-bit codes encodes clipped at 1.0\n"
+    "\n";
+
+static const char usage_presets[] =
+    "Presets (sim/docs/presets.md): the options above and below apply on top of the\n"
+    "preset's own defaults, whatever their order on the command line.\n"
+    "  --preset NAME            unity (default), gamedev, xna, attenuation, arm, cod\n"
+    "  --strength S             gamedev: scene + S*bloom; arm with --baked: the map's\n"
+    "                           strength; 0..16\n"
+    "  --passes P               xna: Kawase passes, 1..8\n"
+    "  --saturate               xna: clamp at 1.0 between passes, as 8-bit targets did\n"
+    "  --attenuation A          attenuation: a of max(lerp(1, depth, a), r), 0..1\n"
+    "  --max-reduction R        attenuation: r, 0..1\n"
+    "  --aux FILE               the preset's one-channel plane, read once and used for\n"
+    "                           every frame: attenuation's depth (0 near .. max far), arm's\n"
+    "                           mask (which pixels may bloom) or with --baked its bloom map;\n"
+    "                           a grey PGM or PNG of the frames' size, 8-bit or 16-bit\n"
+    "  --tint R,G,B             cod, arm: glow colour, each 0..1\n"
+    "  --weights c0,c1,...      cod: level weights c_k, each 0..1 (k = 0: the final\n"
+    "                           composite); levels not given keep the preset's weights\n"
+    "  --additive               cod: additive levels instead of energy-conserving\n"
+    "  --baked                  arm: no pyramid, out = S + S*map*strength with --aux as map\n"
+    "  --radius PX              cod: the level count whose glow reaches about PX output\n"
+    "                           pixels at any frame size (instead of --levels)\n";
+
+static const char usage_rest[] =
     "\n"
     "Checks:\n"
-    "  --compare                also run the float model: per frame the peak and mean error\n"
-    "                           in output LSB and the share of exact samples, and a summary\n"
-    "  --bittrue                also run the bit-true model; any differing sample fails the run\n"
+    "  --compare                also run the preset's float model: per frame the peak and\n"
+    "                           mean error in output LSB and the share of exact samples,\n"
+    "                           and a summary\n"
+    "  --bittrue                also run the preset's bit-true model; any differing sample\n"
+    "                           fails the run\n"
     "\n"
     "Run:\n"
     "  --frames N               at most N frames\n"
@@ -138,7 +165,8 @@ static const char *const with_value[] = {
     "-o", "--output", "--side-by-side", "--view", "--diff-gain", "--fps", "--levels",
     "--threshold", "--knee", "--intensity", "--format", "--in-format", "--out-format",
     "--frames", "--repeat", "--progress-after", "--raw-size", "--raw-format", "--raw-stride",
-    "--decode16"};
+    "--decode16", "--preset", "--strength", "--passes", "--attenuation", "--max-reduction",
+    "--aux", "--tint", "--weights", "--radius"};
 
 static int takes_value(const char *name)
 {
@@ -148,7 +176,82 @@ static int takes_value(const char *name)
     return 0;
 }
 
-static int apply(sim_opts_t *o, const char *a, const char *v)
+/* The options given, applied over the preset's defaults at the end. */
+enum {
+    SET_LEVELS = 1u << 0, SET_THRESHOLD = 1u << 1, SET_KNEE = 1u << 2, SET_INTENSITY = 1u << 3,
+    SET_STRENGTH = 1u << 4, SET_PASSES = 1u << 5, SET_ATTENUATION = 1u << 6,
+    SET_MAX_REDUCTION = 1u << 7, SET_TINT = 1u << 8, SET_WEIGHTS = 1u << 9, SET_RADIUS = 1u << 10,
+    SET_SATURATE = 1u << 11, SET_ADDITIVE = 1u << 12, SET_BAKED = 1u << 13, SET_AUX = 1u << 14
+};
+
+typedef struct {
+    unsigned set;
+    int preset;              /* -1: not given (unity) */
+    const char *preset_arg;
+    bloom_config_t v;        /* the values given */
+    int nweights;
+    long radius;
+} given_t;
+
+#define PB(p) (1u << (p))
+/* Which presets read a parameter (bloom.h, bloom_preset_params_t and the
+ * preset flags); the options of the others are refused by name. */
+static const struct {
+    unsigned bit;
+    const char *opt;
+    unsigned presets;
+} param_use[] = {
+    {SET_STRENGTH, "--strength", PB(BLOOM_PRESET_GAMEDEV) | PB(BLOOM_PRESET_ARM)},
+    {SET_PASSES, "--passes", PB(BLOOM_PRESET_XNA)},
+    {SET_SATURATE, "--saturate", PB(BLOOM_PRESET_XNA)},
+    {SET_ATTENUATION, "--attenuation", PB(BLOOM_PRESET_ATTENUATION)},
+    {SET_MAX_REDUCTION, "--max-reduction", PB(BLOOM_PRESET_ATTENUATION)},
+    {SET_AUX, "--aux", PB(BLOOM_PRESET_ATTENUATION) | PB(BLOOM_PRESET_ARM)},
+    {SET_TINT, "--tint", PB(BLOOM_PRESET_COD) | PB(BLOOM_PRESET_ARM)},
+    {SET_WEIGHTS, "--weights", PB(BLOOM_PRESET_COD)},
+    {SET_ADDITIVE, "--additive", PB(BLOOM_PRESET_COD)},
+    {SET_BAKED, "--baked", PB(BLOOM_PRESET_ARM)},
+    {SET_RADIUS, "--radius", PB(BLOOM_PRESET_COD)},
+};
+
+const char *sim_presets_available(void)
+{
+    static char list[128];
+    size_t len = 0;
+    list[0] = '\0';
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
+        if (bloom_preset_available((bloom_preset_t)p))
+            len += (size_t)snprintf(list + len, sizeof list - len, "%s%s", len ? ", " : "",
+                                    bloom_preset_name((bloom_preset_t)p));
+    return list;
+}
+
+const char *sim_preset_aux_name(const bloom_config_t *c)
+{
+    switch (c->preset) {
+    case BLOOM_PRESET_ATTENUATION: return "depth plane";
+    case BLOOM_PRESET_ARM: return (c->flags & BLOOM_FLAG_BAKED) ? "baked bloom map" : "mask";
+    default: return c->aux_fmt != BLOOM_AUX_NONE ? "aux plane" : NULL;
+    }
+}
+
+/* "a,b,c": n values in lo..hi to Q16.16; returns the count, or -1. */
+static int parse_list_q16(const char *s, double lo, double hi, uint32_t *out, int max)
+{
+    int n = 0;
+    for (;;) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s || n == max || !(v >= lo && v <= hi) || (*end && *end != ','))
+            return -1;
+        out[n++] = (uint32_t)(v * 65536.0 + 0.5);
+        if (!*end)
+            return n;
+        s = end + 1;
+    }
+}
+
+static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
 {
     long n;
     if (!strcmp(a, "-o") || !strcmp(a, "--output"))
@@ -175,16 +278,73 @@ static int apply(sim_opts_t *o, const char *a, const char *v)
     } else if (!strcmp(a, "--levels")) {
         if (parse_long(v, 1, BLOOM_MAX_LEVELS, &n))
             return bad(a, v);
-        o->cfg.levels = (int)n;
+        g->v.levels = (int)n;
+        g->set |= SET_LEVELS;
     } else if (!strcmp(a, "--threshold")) {
-        if (parse_real_q16(v, 0, 256, &o->cfg.threshold))
+        if (parse_real_q16(v, 0, 256, &g->v.threshold))
             return bad(a, v);
+        g->set |= SET_THRESHOLD;
     } else if (!strcmp(a, "--knee")) {
-        if (parse_real_q16(v, 0, 1, &o->cfg.soft_knee))
+        if (parse_real_q16(v, 0, 1, &g->v.soft_knee))
             return bad(a, v);
+        g->set |= SET_KNEE;
     } else if (!strcmp(a, "--intensity")) {
-        if (parse_real_q16(v, 0, 10, &o->cfg.intensity))
+        if (parse_real_q16(v, 0, 10, &g->v.intensity))
             return bad(a, v);
+        g->set |= SET_INTENSITY;
+    } else if (!strcmp(a, "--preset")) {
+        g->preset = bloom_preset_from_name(v);
+        g->preset_arg = v;
+        if (g->preset < 0) {
+            fprintf(stderr, "bloom_sim: --preset: unknown preset '%s' (this build has: %s)\n", v,
+                    sim_presets_available());
+            return -1;
+        }
+        if (!bloom_preset_available((bloom_preset_t)g->preset)) {
+            char up[32];
+            size_t k = 0;
+            for (const char *q = bloom_preset_name((bloom_preset_t)g->preset); *q && k + 1 < sizeof up; q++)
+                up[k++] = (char)(*q >= 'a' && *q <= 'z' ? *q - 'a' + 'A' : *q);
+            up[k] = '\0';
+            fprintf(stderr,
+                    "bloom_sim: --preset: '%s' is compiled out of this build (BLOOM_USE_%s=0 in "
+                    "include/bloom_config.h); this build has: %s\n",
+                    v, up, sim_presets_available());
+            return -1;
+        }
+    } else if (!strcmp(a, "--strength")) {
+        if (parse_real_q16(v, 0, 16, &g->v.p.strength))
+            return bad(a, v);
+        g->set |= SET_STRENGTH;
+    } else if (!strcmp(a, "--passes")) {
+        if (parse_long(v, 1, 8, &n))
+            return bad(a, v);
+        g->v.p.passes = (int)n;
+        g->set |= SET_PASSES;
+    } else if (!strcmp(a, "--attenuation")) {
+        if (parse_real_q16(v, 0, 1, &g->v.p.attenuation))
+            return bad(a, v);
+        g->set |= SET_ATTENUATION;
+    } else if (!strcmp(a, "--max-reduction")) {
+        if (parse_real_q16(v, 0, 1, &g->v.p.max_reduction))
+            return bad(a, v);
+        g->set |= SET_MAX_REDUCTION;
+    } else if (!strcmp(a, "--aux")) {
+        o->aux_path = v;
+        g->set |= SET_AUX;
+    } else if (!strcmp(a, "--tint")) {
+        if (parse_list_q16(v, 0, 1, g->v.p.tint, 3) != 3)
+            return bad(a, v);
+        g->set |= SET_TINT;
+    } else if (!strcmp(a, "--weights")) {
+        g->nweights = parse_list_q16(v, 0, 1, g->v.p.level_weight, BLOOM_MAX_LEVELS);
+        if (g->nweights < 1)
+            return bad(a, v);
+        g->set |= SET_WEIGHTS;
+    } else if (!strcmp(a, "--radius")) {
+        if (parse_long(v, 1, 1L << 20, &g->radius))
+            return bad(a, v);
+        g->set |= SET_RADIUS;
     } else if (!strcmp(a, "--format") || !strcmp(a, "--in-format") || !strcmp(a, "--out-format")) {
         bloom_format_t f;
         if (sim_fmt_parse(v, &f))
@@ -228,6 +388,77 @@ static int apply(sim_opts_t *o, const char *a, const char *v)
     return 0;
 }
 
+/* The configuration: the preset's defaults (bloom_config_preset), then
+ * every option given. */
+static int build_config(sim_opts_t *o, const given_t *g, uint32_t flags)
+{
+    const bloom_preset_t p = g->preset < 0 ? BLOOM_PRESET_UNITY : (bloom_preset_t)g->preset;
+    const char *pn = bloom_preset_name(p);
+    for (size_t i = 0; i < sizeof param_use / sizeof param_use[0]; i++)
+        if ((g->set & param_use[i].bit) && !(param_use[i].presets & PB(p))) {
+            char who[64] = "";
+            size_t len = 0;
+            for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
+                if (param_use[i].presets & PB(q))
+                    len += (size_t)snprintf(who + len, sizeof who - len, "%s%s", len ? " or " : "",
+                                            bloom_preset_name((bloom_preset_t)q));
+            fprintf(stderr, "bloom_sim: %s applies to the %s preset, not %s (give --preset)\n",
+                    param_use[i].opt, who, pn);
+            return -1;
+        }
+    if ((g->set & SET_RADIUS) && (g->set & SET_LEVELS)) {
+        fputs("bloom_sim: --radius chooses the level count: give --radius or --levels, not both\n",
+              stderr);
+        return -1;
+    }
+    bloom_config_default(&o->cfg, 1, 1);
+    o->cfg.flags = flags;
+    bloom_status_t st = bloom_config_preset(&o->cfg, p);
+    if (st != BLOOM_OK) {
+        fprintf(stderr, "bloom_sim: --preset %s: %s (this build has: %s)\n", pn,
+                bloom_status_str(st), sim_presets_available());
+        return -1;
+    }
+    bloom_config_t *c = &o->cfg;
+    if (g->set & SET_LEVELS)
+        c->levels = g->v.levels;
+    if (g->set & SET_THRESHOLD)
+        c->threshold = g->v.threshold;
+    if (g->set & SET_KNEE)
+        c->soft_knee = g->v.soft_knee;
+    if (g->set & SET_INTENSITY)
+        c->intensity = g->v.intensity;
+    if (g->set & SET_STRENGTH)
+        c->p.strength = g->v.p.strength;
+    if (g->set & SET_PASSES)
+        c->p.passes = g->v.p.passes;
+    if (g->set & SET_ATTENUATION)
+        c->p.attenuation = g->v.p.attenuation;
+    if (g->set & SET_MAX_REDUCTION)
+        c->p.max_reduction = g->v.p.max_reduction;
+    if (g->set & SET_TINT)
+        memcpy(c->p.tint, g->v.p.tint, sizeof c->p.tint);
+    for (int k = 0; k < g->nweights; k++)
+        c->p.level_weight[k] = g->v.p.level_weight[k];
+    if (g->set & SET_SATURATE)
+        c->flags |= BLOOM_FLAG_SATURATE;
+    if (g->set & SET_ADDITIVE)
+        c->flags |= BLOOM_FLAG_ADDITIVE;
+    if (g->set & SET_BAKED)
+        c->flags |= BLOOM_FLAG_BAKED;
+#if BLOOM_USE_COD
+    if (g->set & SET_RADIUS) {
+        const int l = bloom_levels_for_radius((int)g->radius);
+        if (l < 1 || l > BLOOM_MAX_LEVELS) {
+            fprintf(stderr, "bloom_sim: --radius %ld: no level count reaches it\n", g->radius);
+            return -1;
+        }
+        c->levels = l;
+    }
+#endif
+    return 0;
+}
+
 int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
 {
     memset(o, 0, sizeof *o);
@@ -242,6 +473,10 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
         fprintf(stderr, "bloom_sim: out of memory\n");
         return -1;
     }
+    given_t g;
+    memset(&g, 0, sizeof g);
+    g.preset = -1;
+    uint32_t flags = 0;
     int only_inputs = 0;
     for (int i = 1; i < argc; i++) {
         char *a = argv[i];
@@ -253,11 +488,20 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
             only_inputs = 1;
         } else if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             fputs(usage_text, stdout);
+            fputs(usage_presets, stdout);
+            printf("  This build has: %s.\n", sim_presets_available());
+            fputs(usage_rest, stdout);
             return 1;
         } else if (!strcmp(a, "--linear")) {
-            o->cfg.flags |= BLOOM_FLAG_LINEAR;
+            flags |= BLOOM_FLAG_LINEAR;
         } else if (!strcmp(a, "--copy-source")) {
-            o->cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
+            flags |= BLOOM_FLAG_COPY_SOURCE;
+        } else if (!strcmp(a, "--saturate")) {
+            g.set |= SET_SATURATE;
+        } else if (!strcmp(a, "--additive")) {
+            g.set |= SET_ADDITIVE;
+        } else if (!strcmp(a, "--baked")) {
+            g.set |= SET_BAKED;
         } else if (!strcmp(a, "--compare")) {
             o->compare = 1;
         } else if (!strcmp(a, "--bittrue")) {
@@ -281,7 +525,7 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
                 fprintf(stderr, "bloom_sim: %s needs a value (see bloom_sim --help)\n", a);
                 return -1;
             }
-            if (apply(o, name, v))
+            if (apply(o, &g, name, v))
                 return -1;
         }
     }
@@ -300,6 +544,6 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
     if (o->sbs_pattern)
         o->compare = 1;
     if (o->view_bloom)
-        o->cfg.flags |= BLOOM_FLAG_DEBUG_VIEW;
-    return 0;
+        flags |= BLOOM_FLAG_DEBUG_VIEW;
+    return build_config(o, &g, flags);
 }

@@ -2,7 +2,7 @@
  * GPIO frame-sync output and mode button (libgpiod v1).
  *
  * Modules: cam_opts.c (command line), cam_conv.c (row conversion, pure
- * framebuffer logic), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
+ * framebuffer logic), cam_aux.c (the --aux plane of the presets), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
  * main.c (frame loop, signals, statistics, recording). Everything is
  * allocated before the first frame; the frame loop allocates nothing. */
 #ifndef BLOOM_CAM_H
@@ -35,8 +35,13 @@ typedef struct {
     const char *fb;           /* --fb, default /dev/fb0; "none": off-screen */
     int width, height;        /* --size WxH, default 640x480 */
     enum cam_pixfmt format;   /* --format, default yuyv */
-    int levels;               /* bloom parameters, bloom_config_default's */
-    uint32_t threshold, knee, intensity; /* Q16.16 */
+    bloom_preset_t preset;    /* --preset NAME, default unity */
+    int levels;               /* bloom parameters: the preset's defaults (bloom_config_preset) */
+    uint32_t threshold, knee, intensity; /* Q16.16 */ /* unless given on the command line */
+    bloom_preset_params_t params; /* the preset's parameters, defaults then the options */
+    uint32_t preset_flags;    /* BLOOM_FLAG_SATURATE / _BAKED / _ADDITIVE */
+    bloom_aux_format_t aux_fmt; /* what the preset reads by default (U8 until --aux is read) */
+    const char *aux;          /* --aux FILE: the preset's plane, read once after S_FMT */
     long frames;              /* --frames N, 0 = until a signal */
     int buffers;              /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
     int timeout_ms;           /* --timeout MS for poll (default 2000) */
@@ -54,6 +59,18 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
 void cam_usage(void *stream);
 const char *cam_format_name(enum cam_pixfmt f);
 const char *cam_mode_name(enum cam_mode m);
+/* The engine configuration of the options for a w x h RGB888 frame (the
+ * preset, its defaults, the options given). */
+void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg);
+
+/* ---- the aux plane (cam_aux.c) ------------------------------------------- */
+/* Reads a binary PGM (P5): maxval <= 255 gives BLOOM_AUX_U8, above
+ * BLOOM_AUX_U16 (native uint16_t); codes rescaled to 255 / 65535 when
+ * maxval is below. The plane must be w x h (the capture size after
+ * VIDIOC_S_FMT). Returns 0, or -1 with err naming the file and the
+ * problem. *data is malloc'd (w * bytes per sample per row). */
+int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_t **data,
+                 char *err, size_t errlen);
 
 /* ---- pure helpers (cam_conv.c) ------------------------------------------- */
 /* One row of YUYV (BT.601 limited range, the simulator's integer rule) to

@@ -19,6 +19,18 @@ void cam_usage(void *stream)
           "  --threshold T         0..256 (default 1.0)\n"
           "  --knee S              0..1 (default 0.5)\n"
           "  --intensity I         0..10 (default 1.0)\n"
+          "  --preset NAME         unity (default), gamedev, xna, attenuation, arm, cod; the\n"
+          "                        preset's defaults, then the options given\n"
+          "  --strength S          gamedev, arm --baked: 0..16\n"
+          "  --passes P            xna: Kawase passes, 1..8     --saturate  xna: clamp at 1.0\n"
+          "  --attenuation A       attenuation: a, 0..1         --max-reduction R  r, 0..1\n"
+          "  --aux FILE            the preset's one-channel plane, read once: attenuation's\n"
+          "                        depth, arm's mask or --baked map; an 8- or 16-bit binary\n"
+          "                        PGM of the capture size\n"
+          "  --tint R,G,B          cod, arm: glow colour, each 0..1\n"
+          "  --weights c0,c1,...   cod: level weights, each 0..1   --additive  cod: additive\n"
+          "  --baked               arm: the baked bloom map (--aux) instead of the pyramid\n"
+          "  --radius PX           cod: levels for a glow of about PX pixels (not --levels)\n"
           "  --mode M              bloom | off | bloom-only: what to show first (default bloom)\n"
           "  --frames N            stop after N frames (default: until SIGINT/SIGTERM)\n"
           "  --buffers N           capture buffers, 2..16 (default 4)\n"
@@ -120,7 +132,76 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
 static const char *const with_value[] = {
     "--device", "--fb", "--size", "--format", "--levels", "--threshold", "--knee",
     "--intensity", "--mode", "--frames", "--buffers", "--timeout", "--gpio-frame",
-    "--gpio-button", "--record", "--dump-fb", NULL};
+    "--gpio-button", "--record", "--dump-fb", "--preset", "--strength", "--passes",
+    "--attenuation", "--max-reduction", "--aux", "--tint", "--weights", "--radius", NULL};
+
+/* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
+static int parse_list01(const char *s, uint32_t *out, int max)
+{
+    int n = 0;
+    for (;;) {
+        char *end;
+        errno = 0;
+        double v = strtod(s, &end);
+        if (errno || end == s || n == max || !(v >= 0 && v <= 1) || (*end && *end != ','))
+            return -1;
+        out[n++] = BLOOM_Q16(v);
+        if (!*end)
+            return n;
+        s = end + 1;
+    }
+}
+
+/* The options given, applied over the preset's defaults at the end. */
+enum {
+    G_LEVELS = 1u << 0, G_THRESHOLD = 1u << 1, G_KNEE = 1u << 2, G_INTENSITY = 1u << 3,
+    G_STRENGTH = 1u << 4, G_PASSES = 1u << 5, G_SATURATE = 1u << 6, G_ATTENUATION = 1u << 7,
+    G_MAX_REDUCTION = 1u << 8, G_AUX = 1u << 9, G_TINT = 1u << 10, G_WEIGHTS = 1u << 11,
+    G_ADDITIVE = 1u << 12, G_BAKED = 1u << 13, G_RADIUS = 1u << 14
+};
+#define PB(p) (1u << (p))
+/* Which presets read each option (bloom.h); the others refuse it by name. */
+static const struct {
+    unsigned bit;
+    const char *opt;
+    unsigned presets;
+} param_use[] = {
+    {G_STRENGTH, "--strength", PB(BLOOM_PRESET_GAMEDEV) | PB(BLOOM_PRESET_ARM)},
+    {G_PASSES, "--passes", PB(BLOOM_PRESET_XNA)},
+    {G_SATURATE, "--saturate", PB(BLOOM_PRESET_XNA)},
+    {G_ATTENUATION, "--attenuation", PB(BLOOM_PRESET_ATTENUATION)},
+    {G_MAX_REDUCTION, "--max-reduction", PB(BLOOM_PRESET_ATTENUATION)},
+    {G_AUX, "--aux", PB(BLOOM_PRESET_ATTENUATION) | PB(BLOOM_PRESET_ARM)},
+    {G_TINT, "--tint", PB(BLOOM_PRESET_COD) | PB(BLOOM_PRESET_ARM)},
+    {G_WEIGHTS, "--weights", PB(BLOOM_PRESET_COD)},
+    {G_ADDITIVE, "--additive", PB(BLOOM_PRESET_COD)},
+    {G_BAKED, "--baked", PB(BLOOM_PRESET_ARM)},
+    {G_RADIUS, "--radius", PB(BLOOM_PRESET_COD)},
+};
+
+/* "unity, attenuation": the presets this build carries. */
+static void available(char *buf, size_t len)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int p = 0; p < BLOOM_PRESET_COUNT && n < len; p++)
+        if (bloom_preset_available((bloom_preset_t)p))
+            n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? ", " : "",
+                                  bloom_preset_name((bloom_preset_t)p));
+}
+
+void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg)
+{
+    bloom_config_default(cfg, w, h);
+    bloom_config_preset(cfg, o->preset);
+    cfg->levels = o->levels;
+    cfg->threshold = o->threshold;
+    cfg->soft_knee = o->knee;
+    cfg->intensity = o->intensity;
+    cfg->p = o->params;
+    cfg->flags |= o->preset_flags;
+    cfg->aux_fmt = o->aux_fmt;
+}
 
 int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errlen)
 {
@@ -139,6 +220,12 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     o->buffers = 4;
     o->timeout_ms = 2000;
     o->mode = CAM_MODE_BLOOM;
+    o->preset = BLOOM_PRESET_UNITY;
+    unsigned given = 0;
+    int nweights = 0;
+    long radius = 0;
+    bloom_config_t gv; /* values given */
+    memset(&gv, 0, sizeof gv);
 
     for (int i = 1; i < argc; i++) {
         char name[32];
@@ -152,6 +239,10 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         }
         if (!strcmp(a, "--stats")) {
             o->stats = 1;
+            continue;
+        }
+        if (!strcmp(a, "--saturate") || !strcmp(a, "--additive") || !strcmp(a, "--baked")) {
+            given |= a[2] == 's' ? G_SATURATE : a[2] == 'a' ? G_ADDITIVE : G_BAKED;
             continue;
         }
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
@@ -191,16 +282,63 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         } else if (!strcmp(name, "--levels")) {
             if (parse_long(v, 1, BLOOM_MAX_LEVELS, &l))
                 return fail(err, errlen, "--levels: '%s' is not 1..16", v);
-            o->levels = (int)l;
+            gv.levels = (int)l;
+            given |= G_LEVELS;
         } else if (!strcmp(name, "--threshold")) {
-            if (parse_q16(v, 0, 256, &o->threshold))
+            if (parse_q16(v, 0, 256, &gv.threshold))
                 return fail(err, errlen, "--threshold: '%s' is not 0..256", v);
+            given |= G_THRESHOLD;
         } else if (!strcmp(name, "--knee")) {
-            if (parse_q16(v, 0, 1, &o->knee))
+            if (parse_q16(v, 0, 1, &gv.soft_knee))
                 return fail(err, errlen, "--knee: '%s' is not 0..1", v);
+            given |= G_KNEE;
         } else if (!strcmp(name, "--intensity")) {
-            if (parse_q16(v, 0, 10, &o->intensity))
+            if (parse_q16(v, 0, 10, &gv.intensity))
                 return fail(err, errlen, "--intensity: '%s' is not 0..10", v);
+            given |= G_INTENSITY;
+        } else if (!strcmp(name, "--preset")) {
+            const int p = bloom_preset_from_name(v);
+            char list[128];
+            available(list, sizeof list);
+            if (p < 0)
+                return fail(err, errlen, "--preset: unknown preset '%s' (this build has: %s)", v,
+                            list);
+            if (!bloom_preset_available((bloom_preset_t)p))
+                return fail(err, errlen,
+                            "--preset: '%s' is compiled out of this build (BLOOM_USE_*); this "
+                            "build has: %s",
+                            v, list);
+            o->preset = (bloom_preset_t)p;
+        } else if (!strcmp(name, "--strength")) {
+            if (parse_q16(v, 0, 16, &gv.p.strength))
+                return fail(err, errlen, "--strength: '%s' is not 0..16", v);
+            given |= G_STRENGTH;
+        } else if (!strcmp(name, "--passes")) {
+            if (parse_long(v, 1, 8, &l))
+                return fail(err, errlen, "--passes: '%s' is not 1..8", v);
+            gv.p.passes = (int)l;
+            given |= G_PASSES;
+        } else if (!strcmp(name, "--attenuation") || !strcmp(name, "--max-reduction")) {
+            const int att = name[2] == 'a';
+            if (parse_q16(v, 0, 1, att ? &gv.p.attenuation : &gv.p.max_reduction))
+                return fail(err, errlen, "%s: '%s' is not 0..1", name, v);
+            given |= att ? G_ATTENUATION : G_MAX_REDUCTION;
+        } else if (!strcmp(name, "--aux")) {
+            o->aux = v;
+            given |= G_AUX;
+        } else if (!strcmp(name, "--tint")) {
+            if (parse_list01(v, gv.p.tint, 3) != 3)
+                return fail(err, errlen, "--tint: '%s' is not R,G,B (each 0..1)", v);
+            given |= G_TINT;
+        } else if (!strcmp(name, "--weights")) {
+            nweights = parse_list01(v, gv.p.level_weight, BLOOM_MAX_LEVELS);
+            if (nweights < 1)
+                return fail(err, errlen, "--weights: '%s' is not c0,c1,... (1..16 values, each 0..1)", v);
+            given |= G_WEIGHTS;
+        } else if (!strcmp(name, "--radius")) {
+            if (parse_long(v, 1, 1L << 20, &radius))
+                return fail(err, errlen, "--radius: '%s' is not 1..1048576 pixels", v);
+            given |= G_RADIUS;
         } else if (!strcmp(name, "--mode")) {
             if (!strcmp(v, "bloom"))
                 o->mode = CAM_MODE_BLOOM;
@@ -230,6 +368,81 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         } else if (!strcmp(name, "--dump-fb")) {
             o->dump_fb = v;
         }
+    }
+    /* the preset's defaults, then what was given */
+    const char *pn = bloom_preset_name(o->preset);
+    for (size_t k = 0; k < sizeof param_use / sizeof param_use[0]; k++)
+        if ((given & param_use[k].bit) && !(param_use[k].presets & PB(o->preset))) {
+            char who[64] = "";
+            size_t n = 0;
+            for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
+                if (param_use[k].presets & PB(q))
+                    n += (size_t)snprintf(who + n, sizeof who - n, "%s%s", n ? " or " : "",
+                                          bloom_preset_name((bloom_preset_t)q));
+            return fail(err, errlen, "%s applies to the %s preset, not %s (give --preset)",
+                        param_use[k].opt, who, pn);
+        }
+    if ((given & G_RADIUS) && (given & G_LEVELS))
+        return fail(err, errlen, "--radius chooses the level count: give --radius or --levels");
+    bloom_config_preset(&d, o->preset);
+    o->levels = (given & G_LEVELS) ? gv.levels : d.levels;
+    o->threshold = (given & G_THRESHOLD) ? gv.threshold : d.threshold;
+    o->knee = (given & G_KNEE) ? gv.soft_knee : d.soft_knee;
+    o->intensity = (given & G_INTENSITY) ? gv.intensity : d.intensity;
+    o->params = d.p;
+    if (given & G_STRENGTH)
+        o->params.strength = gv.p.strength;
+    if (given & G_PASSES)
+        o->params.passes = gv.p.passes;
+    if (given & G_ATTENUATION)
+        o->params.attenuation = gv.p.attenuation;
+    if (given & G_MAX_REDUCTION)
+        o->params.max_reduction = gv.p.max_reduction;
+    if (given & G_TINT)
+        memcpy(o->params.tint, gv.p.tint, sizeof o->params.tint);
+    for (int k = 0; k < nweights; k++)
+        o->params.level_weight[k] = gv.p.level_weight[k];
+    o->preset_flags = d.flags & (uint32_t)(BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE);
+    o->preset_flags |= ((given & G_SATURATE) ? (uint32_t)BLOOM_FLAG_SATURATE : 0u) |
+                       ((given & G_BAKED) ? (uint32_t)BLOOM_FLAG_BAKED : 0u) |
+                       ((given & G_ADDITIVE) ? (uint32_t)BLOOM_FLAG_ADDITIVE : 0u);
+#if BLOOM_USE_COD
+    if (given & G_RADIUS) {
+        const int lv = bloom_levels_for_radius((int)radius);
+        if (lv < 1 || lv > BLOOM_MAX_LEVELS)
+            return fail(err, errlen, "--radius %ld: no level count reaches it", radius);
+        o->levels = lv;
+    }
+#else
+    (void)radius;
+#endif
+    /* the aux plane: the file's depth decides U8/U16 once it is read (after
+     * VIDIOC_S_FMT); a preset that cannot run without one needs --aux */
+    o->aux_fmt = d.aux_fmt;
+    if (!o->aux && o->aux_fmt != BLOOM_AUX_NONE) {
+        bloom_config_t t;
+        bloom_info_t info;
+        cam_opts_config(o, 64, 48, &t);
+        t.aux_fmt = BLOOM_AUX_NONE;
+        const bloom_status_t st = bloom_query(&t, &info);
+        if (st == BLOOM_E_AUX)
+            return fail(err, errlen,
+                        "--preset %s: %s: give its %s with --aux FILE (an 8- or 16-bit PGM of "
+                        "the capture size)",
+                        pn, bloom_status_str(st),
+                        o->preset == BLOOM_PRESET_ATTENUATION ? "depth plane"
+                        : (o->preset_flags & BLOOM_FLAG_BAKED) ? "baked bloom map" : "plane");
+        o->aux_fmt = BLOOM_AUX_NONE; /* optional: run without */
+    } else if (o->aux && o->aux_fmt == BLOOM_AUX_NONE) {
+        o->aux_fmt = BLOOM_AUX_U8; /* the preset reads an optional plane: this one */
+    }
+    {
+        bloom_config_t t;
+        bloom_info_t info;
+        cam_opts_config(o, 64, 48, &t);
+        const bloom_status_t st = bloom_query(&t, &info);
+        if (st != BLOOM_OK)
+            return fail(err, errlen, "--preset %s with these options: %s", pn, bloom_status_str(st));
     }
     if (o->format == CAM_FMT_YUYV && (o->width & 1))
         return fail(err, errlen, "--size: YUYV needs an even width, not %d", o->width);

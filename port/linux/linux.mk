@@ -15,6 +15,7 @@
 
 CAM_DIR := port/linux
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
+           $(CAM_DIR)/cam_aux.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c
 CAM_HDR := $(CAM_DIR)/cam.h
 CAM_CPPFLAGS := $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L
@@ -56,6 +57,7 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 # scripted fake, no device). The GPIO module is
 # built out here so the refusal of --gpio-* is what is tested.
 CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c \
+                $(CAM_DIR)/cam_aux.c \
                 $(CAM_DIR)/v4l2.c
 $(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) sim/sim_convert.c sim/sim.h \
                           $(SIM_SRC) $(SIM_HDR)

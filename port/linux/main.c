@@ -29,8 +29,11 @@ typedef struct {
     cam_v4l2_t cap;
     cam_fb_t fb;
     cam_gpio_t *gpio;
-    bloom_t *eng[CAM_MODE_COUNT];
+    bloom_t *eng[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show (skipped) */
     void *ws[CAM_MODE_COUNT];
+    int eng_aux[CAM_MODE_COUNT];  /* the engine reads the aux plane with each row */
+    uint8_t *aux;                 /* --aux plane, capture size, read once */
+    size_t aux_stride;
     uint8_t *line;    /* one converted source row (RGB888) */
     uint8_t *scratch; /* one output row the screen does not fully show */
     cam_place_t place;
@@ -61,30 +64,52 @@ static int write_all(int fd, const uint8_t *p, size_t n)
 
 static int make_engines(cam_t *c)
 {
+    if (c->o.aux) { /* the preset's plane, the capture's size (known after S_FMT) */
+        char err[512];
+        bloom_aux_format_t f;
+        if (cam_aux_load(c->o.aux, c->cap.width, c->cap.height, &f, &c->aux, err, sizeof err)) {
+            fprintf(stderr, "%s: %s\n", CAM_PROG, err);
+            return -1;
+        }
+        c->o.aux_fmt = f;
+        c->aux_stride = (size_t)c->cap.width * (f == BLOOM_AUX_U16 ? 2u : 1u);
+    }
     for (int m = 0; m < CAM_MODE_COUNT; m++) {
         bloom_config_t cfg;
-        bloom_config_default(&cfg, c->cap.width, c->cap.height);
+        cam_opts_config(&c->o, c->cap.width, c->cap.height, &cfg);
         cfg.in_fmt = BLOOM_FMT_RGB888;
         cfg.out_fmt = c->fb.format;
-        cfg.levels = c->o.levels;
-        cfg.threshold = c->o.threshold;
-        cfg.soft_knee = c->o.knee;
-        cfg.intensity = c->o.intensity;
         if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24)
             cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
         if (m == CAM_MODE_BLOOM_ONLY)
             cfg.flags |= BLOOM_FLAG_DEBUG_VIEW;
-        if (m == CAM_MODE_OFF) { /* B = 0 on every row: the source, re-encoded */
+        if (m == CAM_MODE_OFF) { /* the default pipeline with B = 0 on every row: the
+                                    source, re-encoded, whatever the preset */
+            bloom_config_default(&cfg, c->cap.width, c->cap.height);
+            cfg.in_fmt = BLOOM_FMT_RGB888;
+            cfg.out_fmt = c->fb.format;
+            if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24)
+                cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
+            cfg.levels = c->o.levels;
             cfg.threshold = BLOOM_MAX_THRESHOLD;
             cfg.soft_knee = 0;
             cfg.intensity = 0;
         }
         bloom_info_t info;
         bloom_status_t st = bloom_query(&cfg, &info);
+        if (st != BLOOM_OK && m == CAM_MODE_BLOOM_ONLY && c->o.mode != CAM_MODE_BLOOM_ONLY) {
+            if (!c->o.quiet)
+                fprintf(stderr, "%s: preset %s: no bloom-only view (%s); the button skips it\n",
+                        CAM_PROG, bloom_preset_name(cfg.preset), bloom_status_str(st));
+            continue;
+        }
         if (st != BLOOM_OK) {
-            fprintf(stderr, "%s: bloom_query: %s\n", CAM_PROG, bloom_status_str(st));
+            fprintf(stderr, "%s: bloom_query (preset %s%s): %s\n", CAM_PROG,
+                    bloom_preset_name(cfg.preset), m == CAM_MODE_BLOOM_ONLY ? ", bloom-only" : "",
+                    bloom_status_str(st));
             return -1;
         }
+        c->eng_aux[m] = cfg.aux_fmt != BLOOM_AUX_NONE;
         size_t n = (info.workspace_bytes + 63) / 64 * 64;
         c->ws[m] = aligned_alloc(64, n);
         if (!c->ws[m]) {
@@ -97,8 +122,9 @@ static int make_engines(cam_t *c)
             return -1;
         }
         if (m == CAM_MODE_BLOOM && !c->o.quiet)
-            fprintf(stderr, "%s: engine: %d levels, workspace %zu bytes, latency %d rows%s\n",
-                    CAM_PROG, info.levels, info.workspace_bytes, info.latency_rows,
+            fprintf(stderr, "%s: engine: preset %s%s%s, %d levels, workspace %zu bytes, latency %d rows%s\n",
+                    CAM_PROG, bloom_preset_name(cfg.preset), c->o.aux ? ", aux plane " : "",
+                    c->o.aux ? c->o.aux : "", info.levels, info.workspace_bytes, info.latency_rows,
                     (cfg.flags & BLOOM_FLAG_COPY_SOURCE) ? ", source rows copied" : "");
     }
     return 0;
@@ -139,8 +165,10 @@ static int pull_rows(cam_t *c, bloom_t *b, uint8_t *page)
     }
 }
 
-static int process(cam_t *c, bloom_t *b, const uint8_t *data, uint8_t *page)
+static int process(cam_t *c, enum cam_mode mode, const uint8_t *data, uint8_t *page)
 {
+    bloom_t *b = c->eng[mode];
+    const uint8_t *aux = c->eng_aux[mode] ? c->aux : NULL;
     bloom_status_t st = bloom_begin(b);
     for (int y = 0; y < c->cap.height && st == BLOOM_OK; y++) {
         const uint8_t *src = data + (size_t)y * c->cap.bytesperline;
@@ -151,11 +179,12 @@ static int process(cam_t *c, bloom_t *b, const uint8_t *data, uint8_t *page)
             cam_grey_row_to_rgb888(src, c->line, c->cap.width);
             src = c->line;
         }
-        st = bloom_push_row(b, src);
+        const uint8_t *arow = aux ? aux + (size_t)y * c->aux_stride : NULL;
+        st = arow ? bloom_push_row_aux(b, src, arow) : bloom_push_row(b, src);
         if (st == BLOOM_E_BUSY) { /* cannot happen when pulling after each push */
             if (pull_rows(c, b, page))
                 return -1;
-            st = bloom_push_row(b, src);
+            st = arow ? bloom_push_row_aux(b, src, arow) : bloom_push_row(b, src);
         }
         if (st == BLOOM_OK && pull_rows(c, b, page))
             return -1;
@@ -197,7 +226,10 @@ static int run(cam_t *c)
         if (button) {
             int n = cam_gpio_button_presses(c->gpio);
             if (n) {
-                mode = (enum cam_mode)(((int)mode + n) % CAM_MODE_COUNT);
+                for (int k = 0; k < n; k++) /* skipping a mode the preset cannot show */
+                    do
+                        mode = (enum cam_mode)(((int)mode + 1) % CAM_MODE_COUNT);
+                    while (!c->eng[mode]);
                 if (!c->o.quiet)
                     fprintf(stderr, "%s: mode %s\n", CAM_PROG, cam_mode_name(mode));
             }
@@ -226,7 +258,7 @@ static int run(cam_t *c)
         uint8_t *page = cam_fb_draw_page(&c->fb);
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
-        int pr = process(c, c->eng[mode], f.data, page);
+        int pr = process(c, mode, f.data, page);
         double dt = now_s() - p0;
         cam_gpio_frame(c->gpio, 0);
         c->last_page = page;
@@ -349,5 +381,6 @@ out:
         free(c.ws[m]);
     free(c.line);
     free(c.scratch);
+    free(c.aux);
     return status;
 }

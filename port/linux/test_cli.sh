@@ -20,6 +20,9 @@ expect 2 "bloom_cam: unknown option '--nope'" --nope
 expect 2 "bloom_cam: --format: 'mjpeg' is not yuyv, rgb24 or grey" --format mjpeg
 expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9
 expect 1 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --device /dev/null
+expect 2 "bloom_cam: --preset: unknown preset 'bogus' (this build has: unity" --preset bogus
+expect 2 "bloom_cam: --passes applies to the xna preset, not unity" --passes 2
+expect 1 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --preset unity --device /dev/null
 if "$cam" --gpio-frame gpiochip0:0 --device /nonexistent 2>&1 | grep -q "built without libgpiod"; then
     expect 2 "built without libgpiod" --gpio-frame gpiochip0:0
 else

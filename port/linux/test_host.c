@@ -431,15 +431,122 @@ static void test_dequeue_faults(void)
           "short-frame message");
 }
 
+/* --preset and its options: the preset's defaults, then the options given;
+ * unknown and compiled-out names refused with the list of what this build
+ * has; options of another preset refused; a preset that needs its plane
+ * refused without --aux; the --aux PGM reader (8/16-bit, rescaled maxval,
+ * wrong size, not a PGM). */
+static void test_presets(void)
+{
+    cam_opts_t o;
+    char err[256];
+    CHECKF(parse(&o, err, "--preset", "unity", NULL, NULL) == 0 && o.preset == BLOOM_PRESET_UNITY &&
+              o.levels == 5 && o.threshold == BLOOM_Q16(1.0) && o.aux_fmt == BLOOM_AUX_NONE,
+          "--preset unity: %s", err);
+    CHECKF(parse(&o, err, "--preset", "bogus", NULL, NULL) == -1 &&
+              strstr(err, "--preset: unknown preset 'bogus' (this build has: unity"),
+          "unknown preset: '%s'", err);
+    CHECKF(parse(&o, err, "--preset=", NULL, NULL, NULL) == -1 && strstr(err, "unknown preset ''"),
+          "empty preset: '%s'", err);
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        const char *name = bloom_preset_name((bloom_preset_t)p);
+        int r = parse(&o, err, "--preset", name, NULL, NULL);
+        if (!bloom_preset_available((bloom_preset_t)p)) {
+            CHECKF(r == -1 && strstr(err, "compiled out") && strstr(err, "this build has: unity"),
+                  "compiled-out %s: '%s'", name, err);
+            continue;
+        }
+        /* available: runs as it is, or says which plane it lacks */
+        bloom_config_t d;
+        bloom_config_default(&d, 64, 48);
+        bloom_config_preset(&d, (bloom_preset_t)p);
+        CHECKF(r == 0 || (strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "--aux FILE")),
+              "--preset %s: %d '%s'", name, r, err);
+        if (r == 0)
+            CHECKF(o.preset == (bloom_preset_t)p && o.levels == d.levels && o.threshold == d.threshold &&
+                      o.intensity == d.intensity && !memcmp(&o.params, &d.p, sizeof d.p),
+                  "--preset %s takes the preset's defaults", name);
+    }
+    CHECKF(parse(&o, err, "--passes", "3", NULL, NULL) == -1 &&
+              strstr(err, "--passes applies to the xna preset, not unity"),
+          "option of another preset: '%s'", err);
+    CHECKF(parse(&o, err, "--aux", "d.pgm", NULL, NULL) == -1 && strstr(err, "--aux applies to"),
+          "--aux with unity: '%s'", err);
+    CHECKF(parse(&o, err, "--tint", "1,2,3", "--preset", "cod") == -1, "bad tint");
+#if BLOOM_USE_ATTENUATION
+    CHECKF(parse(&o, err, "--preset", "attenuation", NULL, NULL) == -1 &&
+              strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "depth plane with --aux FILE"),
+          "attenuation without --aux: '%s'", err);
+    {
+        char *argv[] = {"bloom_cam", "--attenuation", "0.5", "--preset", "attenuation", "--aux",
+                        "depth.pgm", "--threshold", "0.7", "--max-reduction=0.125", NULL};
+        CHECKF(cam_parse_opts(&o, 10, argv, err, sizeof err) == 0 && o.preset == BLOOM_PRESET_ATTENUATION &&
+                  o.params.attenuation == BLOOM_Q16(0.5) && o.params.max_reduction == BLOOM_Q16(0.125) &&
+                  o.threshold == BLOOM_Q16(0.7) && !strcmp(o.aux, "depth.pgm") && o.aux_fmt == BLOOM_AUX_U8,
+              "attenuation options in any order: '%s'", err);
+        bloom_config_t c;
+        cam_opts_config(&o, 64, 48, &c);
+        CHECK(c.preset == BLOOM_PRESET_ATTENUATION && c.p.attenuation == BLOOM_Q16(0.5) &&
+              c.threshold == BLOOM_Q16(0.7) && c.aux_fmt == BLOOM_AUX_U8);
+    }
+#endif
+
+    /* the PGM reader */
+    char dir[] = "/tmp/bloom_cam_auxXXXXXX", path[64];
+    CHECK(mkdtemp(dir) != NULL);
+    static const struct {
+        const char *name, *data;
+        size_t len;
+        int w, h;
+        const char *err; /* NULL: loads */
+        bloom_aux_format_t fmt;
+        uint8_t s0, s1;
+    } files[] = {
+        {"a8.pgm", "P5\n2 1\n255\n\x00\xff", 13, 2, 1, NULL, BLOOM_AUX_U8, 0, 255},
+        {"a4.pgm", "P5 # comment\n2 1 15\n\x0f\x07", 22, 2, 1, NULL, BLOOM_AUX_U8, 255, 119},
+        {"a16.pgm", "P5\n1 1\n65535\n\x12\x34", 15, 1, 1, NULL, BLOOM_AUX_U16, 0x34, 0x12},
+        {"size.pgm", "P5\n2 1\n255\n\x00\xff", 13, 4, 3, "the plane is 2x1 but the capture is 4x3", BLOOM_AUX_U8, 0, 0},
+        {"ppm.ppm", "P6\n1 1\n255\nabc", 14, 1, 1, "not a binary PGM", BLOOM_AUX_U8, 0, 0},
+        {"short.pgm", "P5\n2 2\n255\nab", 13, 2, 2, "truncated", BLOOM_AUX_U8, 0, 0},
+        {"over.pgm", "P5\n1 1\n9\n\x0a", 10, 1, 1, "above maxval", BLOOM_AUX_U8, 0, 0},
+    };
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, files[i].name);
+        FILE *f = fopen(path, "wb");
+        size_t len = files[i].len;
+        CHECK(f && fwrite(files[i].data, 1, len, f) == len);
+        if (f)
+            fclose(f);
+        bloom_aux_format_t fmt = BLOOM_AUX_NONE;
+        uint8_t *data = NULL;
+        int r = cam_aux_load(path, files[i].w, files[i].h, &fmt, &data, err, sizeof err);
+        if (files[i].err)
+            CHECKF(r == -1 && !data && strstr(err, path) && strstr(err, files[i].err), "%s: %d '%s'",
+                  files[i].name, r, err);
+        else
+            CHECKF(r == 0 && data && fmt == files[i].fmt && data[0] == files[i].s0 &&
+                      data[1] == files[i].s1,
+                  "%s: %d '%s' %d %d", files[i].name, r, err, data ? data[0] : -1, data ? data[1] : -1);
+        free(data);
+        remove(path);
+    }
+    uint8_t *none = NULL;
+    bloom_aux_format_t nf;
+    CHECK(cam_aux_load("/nonexistent/d.pgm", 1, 1, &nf, &none, err, sizeof err) == -1 &&
+          strstr(err, "--aux /nonexistent/d.pgm: No such file") != NULL);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_opts();
+    test_presets();
     test_yuv();
     test_fb_format();
     test_place();
     test_line_feed();
     test_dequeue_faults();
-    printf("bloom_cam host tests: options, Y'CbCr rows, framebuffer layouts, placement, line feed,\n"
+    printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, line feed,\n"
            "  capture faults (EINTR, EAGAIN, short bytesused, V4L2_BUF_FLAG_ERROR, ENODEV, timeout)\n");
     return harness_finish();
 }

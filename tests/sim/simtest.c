@@ -258,6 +258,7 @@ int main(int argc, char **argv)
     test_compare();
     test_cli();
     test_errors();
+    test_presets();
     if (argc > 2) { /* the optimised build: the bit-exact runs */
         tool = argv[2];
         test_bitexact_ppm();
@@ -269,6 +270,9 @@ int main(int argc, char **argv)
     harness_pass += p;
     harness_fail += f;
     simtest_errors_counts(&p, &f);
+    harness_pass += p;
+    harness_fail += f;
+    simtest_presets_counts(&p, &f);
     harness_pass += p;
     harness_fail += f;
     st_remove_dir();

@@ -23,5 +23,7 @@ void simtest_formats_counts(int *pass, int *fail);
 void test_cli(void);      /* simtest_errors.c */
 void test_errors(void);
 void simtest_errors_counts(int *pass, int *fail);
+void test_presets(void);  /* simtest_presets.c */
+void simtest_presets_counts(int *pass, int *fail);
 
 #endif

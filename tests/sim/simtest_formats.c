@@ -390,7 +390,7 @@ void test_compare(void)
     CHECK(strstr(R.out, "bit-true: 0 differ") != NULL);
     CHECK(strstr(R.out, "summary vs float model: peak") != NULL);
     CHECK(strstr(R.out, "summary vs bit-true model: 0 of 2829 samples differ") != NULL);
-    CHECK(strstr(R.out, "summary: 1 frame, engine per frame: mean") != NULL);
+    CHECK(strstr(R.out, "summary: 1 frame, preset unity, engine per frame: mean") != NULL);
     /* side-by-side: input | fixed-point | float | |diff| * 100 */
     int sw, sh;
     uint8_t *s = st_read_rgb8(st_path("cmp_sbs.png"), &sw, &sh);
