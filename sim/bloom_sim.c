@@ -388,10 +388,10 @@ static int aux_check(sim_opts_t *o, sim_aux_t *aux, char *err, size_t errlen, in
     bloom_info_t info;
     t.width = t.height = 16;
     if (!o->aux_path) {
-        if (t.aux_fmt == BLOOM_AUX_NONE)
-            return 0;
         const char *what = sim_preset_aux_name(&t);
         t.aux_fmt = BLOOM_AUX_NONE;
+        if (!what) /* the presets that read no plane refuse nothing here */
+            what = "aux plane";
         bloom_status_t st = bloom_query(&t, &info);
         if (st == BLOOM_E_AUX) {
             *status = 2;

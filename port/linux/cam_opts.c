@@ -419,7 +419,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     /* the aux plane: the file's depth decides U8/U16 once it is read (after
      * VIDIOC_S_FMT); a preset that cannot run without one needs --aux */
     o->aux_fmt = d.aux_fmt;
-    if (!o->aux && o->aux_fmt != BLOOM_AUX_NONE) {
+    if (!o->aux) {
         bloom_config_t t;
         bloom_info_t info;
         cam_opts_config(o, 64, 48, &t);

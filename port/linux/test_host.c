@@ -473,6 +473,15 @@ static void test_presets(void)
     CHECKF(parse(&o, err, "--aux", "d.pgm", NULL, NULL) == -1 && strstr(err, "--aux applies to"),
           "--aux with unity: '%s'", err);
     CHECKF(parse(&o, err, "--tint", "1,2,3", "--preset", "cod") == -1, "bad tint");
+#if BLOOM_USE_ARM
+    CHECKF(parse(&o, err, "--preset", "arm", "--baked", NULL) == -1 &&
+              strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "baked bloom map with --aux FILE"),
+          "arm --baked without --aux: '%s'", err);
+    CHECKF(parse(&o, err, "--preset", "arm", "--aux", "mask.pgm") == 0 && o.aux_fmt == BLOOM_AUX_U8,
+          "arm with a mask: '%s'", err);
+    CHECKF(parse(&o, err, "--preset", "arm", NULL, NULL) == 0 && o.aux_fmt == BLOOM_AUX_NONE,
+          "arm without a mask: '%s'", err);
+#endif
 #if BLOOM_USE_ATTENUATION
     CHECKF(parse(&o, err, "--preset", "attenuation", NULL, NULL) == -1 &&
               strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "depth plane with --aux FILE"),

@@ -233,6 +233,12 @@ static void test_refusals(void)
     RUN(NULL, st_path("p_in.ppm"), "--passes", "9");
     CHECK(R.status == 2 && strstr(R.err, "--passes: bad value") != NULL);
 
+    if (bloom_preset_available(BLOOM_PRESET_ARM)) { /* the mask is optional, the baked map is not */
+        RUN(NULL, st_path("p_in.ppm"), "--preset", "arm", "--baked");
+        CHECKF(R.status == 2 && strstr(R.err, bloom_status_str(BLOOM_E_AUX)) && strstr(R.err, "baked bloom map") &&
+                   strstr(R.err, "--aux FILE"),
+               "arm --baked without --aux: status %d: %s", R.status, R.err);
+    }
     if (!bloom_preset_available(BLOOM_PRESET_ATTENUATION))
         return;
     CHECK(st_write_file(st_path("p_keep.ppm"), precious, sizeof precious - 1) == 0);
