@@ -27,7 +27,7 @@
 #define BLOOM_USE_GAMEDEV 0 /* in progress */
 #endif
 #ifndef BLOOM_USE_XNA
-#define BLOOM_USE_XNA 0 /* in progress */
+#define BLOOM_USE_XNA 1
 #endif
 #ifndef BLOOM_USE_ATTENUATION
 #define BLOOM_USE_ATTENUATION 1
