@@ -24,7 +24,7 @@
  * code out; bloom_query() then refuses it with BLOOM_E_PRESET. With all of
  * them 0 the row-graph engine (src/bloom_graph.c) is left out too. */
 #ifndef BLOOM_USE_GAMEDEV
-#define BLOOM_USE_GAMEDEV 0 /* in progress */
+#define BLOOM_USE_GAMEDEV 1
 #endif
 #ifndef BLOOM_USE_XNA
 #define BLOOM_USE_XNA 1
