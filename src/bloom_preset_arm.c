@@ -86,6 +86,57 @@ static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
     }
 }
 
+static inline uint32_t lum3(const uint32_t *o)
+{
+    /* Y <= M: 64-bit products (Q16 weights x 2^28) */
+    return (uint32_t)((ARM_WR * (uint64_t)o[0] + ARM_WG * (uint64_t)o[1] + ARM_WB * (uint64_t)o[2] + 32768u) >> 16);
+}
+
+/* Y of n source pixels, decoded inline (one loop per format and curve). */
+#define ARM_LUM_LOOP(step, dec)                  \
+    for (int x = 0; x < n; x++, p += (step)) { \
+        uint32_t o[3];                           \
+        dec;                                     \
+        y[x] = lum3(o);                          \
+    }
+static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y, int n)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        if (lin)
+            ARM_LUM_LOOP(3, BLOOM_DEC_RGB888(p, o, true))
+        else
+            ARM_LUM_LOOP(3, BLOOM_DEC_RGB888(p, o, false))
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        if (lin)
+            ARM_LUM_LOOP(4, BLOOM_DEC_XRGB8888(p, o, true))
+        else
+            ARM_LUM_LOOP(4, BLOOM_DEC_XRGB8888(p, o, false))
+        return;
+#endif
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        if (lin)
+            ARM_LUM_LOOP(2, BLOOM_DEC_RGB565(p, o, true))
+        else
+            ARM_LUM_LOOP(2, BLOOM_DEC_RGB565(p, o, false))
+        return;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        ARM_LUM_LOOP(12, BLOOM_DEC_RGBQ16(p, o))
+        return;
+#endif
+    default: /* refused by bloom_query */
+        return;
+    }
+}
+#undef ARM_LUM_LOOP
+
 /* D_1. Input 0: source rows 2r-1 .. 2r+2; input 1 (with a mask): aux rows
  * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee. */
 static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
@@ -93,31 +144,29 @@ static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
 {
     (void)r;
     const int w0 = g->w[0];
-    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *rgb = bg_scratch(g, 2);
-    const bool mask = g->aux_bpp != 0, u16 = g->aux_bpp == 2;
+    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *y = bg_scratch(g, 2);
+    const bool u16 = g->aux_bpp == 2;
     for (int i = 0; i < 4; i++) {
-        bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i], rgb, w0);
-        const uint8_t *m = mask ? (const uint8_t *)in[1][i] : NULL;
-        for (int x = 0; x < w0; x++) {
-            const uint32_t *p = rgb + 3 * x;
-            /* Y <= M: 64-bit products (weights x 2^28) */
-            uint32_t y = (uint32_t)(((uint64_t)ARM_WR * p[0] + (uint64_t)ARM_WG * p[1] + (uint64_t)ARM_WB * p[2] +
-                                     32768u) >> 16);
-            if (mask) {
+        lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i], y, w0);
+        if (g->aux_bpp) { /* P = (Y * mask + 2^15) >> 16, 64-bit: 2^28 * 2^16 */
+            const uint8_t *m = (const uint8_t *)in[1][i];
+            for (int x = 0; x < w0; x++) {
                 const uint32_t q = aux_q16(m, x, u16);
                 if (q != 65536u)
-                    y = (uint32_t)(((uint64_t)y * q + 32768u) >> 16);
-            }
-            if (i == 0) {
-                c4[x + 1] = y;
-            } else {
-                c4[x + 1] += y;
-                if (i == 1)
-                    c2[x + 1] = y;
-                else if (i == 2)
-                    c2[x + 1] += y;
+                    y[x] = (uint32_t)(((uint64_t)y[x] * q + 32768u) >> 16);
             }
         }
+        uint32_t *c = c4 + 1, *h = c2 + 1;
+        if (i == 0)
+            memcpy(c, y, (size_t)w0 * sizeof *y);
+        else
+            for (int x = 0; x < w0; x++)
+                c[x] += y[x];
+        if (i == 1)
+            memcpy(h, y, (size_t)w0 * sizeof *y);
+        else if (i == 2)
+            for (int x = 0; x < w0; x++)
+                h[x] += y[x];
     }
     pad(c4, w0);
     pad(c2, w0);
