@@ -36,7 +36,7 @@
 #define BLOOM_USE_ARM 1
 #endif
 #ifndef BLOOM_USE_COD
-#define BLOOM_USE_COD 0 /* in progress */
+#define BLOOM_USE_COD 1
 #endif
 #define BLOOM_USE_GRAPH \
     (BLOOM_USE_GAMEDEV || BLOOM_USE_XNA || BLOOM_USE_ATTENUATION || BLOOM_USE_ARM || BLOOM_USE_COD)
