@@ -160,10 +160,10 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 static BLOOM_ALWAYS_INLINE uint32_t enc_fast(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
                                              uint32_t n)
 {
-    const uint32_t top = t[n];
+    const uint32_t top = t[n], *next = t + 1;
     v = v < top ? v : top;
-    const uint32_t c = bkt[v >> shift];
-    return c + (v >= t[c + 1]);
+    const size_t c = bkt[v >> shift];
+    return (uint32_t)c + (v >= next[c]);
 }
 #define FENC8(v) enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
 #define FENC6(v) enc_fast(v, bloom_srgb_bkt6, BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63)

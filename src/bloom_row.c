@@ -45,6 +45,7 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     bloom_row_box_range_c(s, dst, 0, dw, sw);
 }
 
+#if BLOOM_SMALL
 /* One decoded pixel; fmt and lin are constants after inlining. */
 static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *o)
 {
@@ -105,6 +106,91 @@ static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_
         }
     }
 }
+#else
+/* Channel ch (0 R, 1 G, 2 B) of the pixel at p, decoded; fmt, lin and ch
+ * are constants after inlining, so the sums below stay in registers. */
+static BLOOM_ALWAYS_INLINE uint32_t dec_ch(bloom_format_t fmt, bool lin, const uint8_t *p, int ch)
+{
+    switch (fmt) {
+    case BLOOM_FMT_RGB565: {
+        const uint32_t w = (uint32_t)p[0] | ((uint32_t)p[1] << 8);
+        if (ch == 1)
+            return lin ? bloom_dec_linear((w >> 5) & 63u, 63) : bloom_srgb_dec6[(w >> 5) & 63u];
+        const uint32_t c = ch == 0 ? w >> 11 : w & 31u;
+        return lin ? bloom_dec_linear(c, 31) : bloom_srgb_dec5[c];
+    }
+    case BLOOM_FMT_RGBQ16: {
+        uint32_t w;
+        memcpy(&w, p + 4 * ch, 4);
+        return (w > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w) << BLOOM_Q16_SHIFT;
+    }
+    case BLOOM_FMT_XRGB8888:
+        return lin ? bloom_dec_linear(p[2 - ch], 255) : bloom_srgb_dec8[p[2 - ch]];
+    default:
+        return lin ? bloom_dec_linear(p[ch], 255) : bloom_srgb_dec8[p[ch]];
+    }
+}
+
+/* Channel ch summed over the four rows and two columns at byte offsets oa, ob. */
+static BLOOM_ALWAYS_INLINE uint32_t pair_ch(const uint8_t *s0, const uint8_t *s1, const uint8_t *s2,
+                                            const uint8_t *s3, bloom_format_t fmt, bool lin, size_t oa,
+                                            size_t ob, int ch)
+{
+    return ((dec_ch(fmt, lin, s0 + oa, ch) + dec_ch(fmt, lin, s1 + oa, ch)) +
+            (dec_ch(fmt, lin, s2 + oa, ch) + dec_ch(fmt, lin, s3 + oa, ch))) +
+           ((dec_ch(fmt, lin, s0 + ob, ch) + dec_ch(fmt, lin, s1 + ob, ch)) +
+            (dec_ch(fmt, lin, s2 + ob, ch) + dec_ch(fmt, lin, s3 + ob, ch)));
+}
+
+static BLOOM_ALWAYS_INLINE void pair_src(const uint8_t *s0, const uint8_t *s1, const uint8_t *s2,
+                                         const uint8_t *s3, bloom_format_t fmt, bool lin, size_t oa,
+                                         size_t ob, uint32_t out[3])
+{
+    out[0] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 0);
+    out[1] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 1);
+    out[2] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 2);
+}
+
+/* The same sums (the box is exact in 32 bits), grouped by column pairs:
+ * P(j) = columns 2j-1 and 2j, clamped; D(x) = (P(x) + P(x+1) + 8) >> 4.
+ * The pairs with no clamp run without bound tests. */
+static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
+                                        size_t bpp, uint32_t *dst, int dw, int sw)
+{
+    const uint8_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
+    uint32_t p[3], q[3];
+    pair_src(s0, s1, s2, s3, fmt, lin, 0, 0, p); /* column -1 clamps to 0 */
+    /* pair j = x + 1 needs no clamp while 2 (x + 1) <= sw - 1 */
+    const int xe = imin(dw, (sw - 1) / 2);
+    int x = 0;
+    {
+        uint32_t p0 = p[0], p1 = p[1], p2 = p[2];
+        const uint8_t *a0 = s0 + bpp, *a1 = s1 + bpp, *a2 = s2 + bpp, *a3 = s3 + bpp; /* column 2x + 1 */
+        for (; x < xe; x++, dst += 3, a0 += 2 * bpp, a1 += 2 * bpp, a2 += 2 * bpp, a3 += 2 * bpp) {
+            const uint32_t q0 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 0);
+            const uint32_t q1 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 1);
+            const uint32_t q2 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 2);
+            dst[0] = (p0 + q0 + 8u) >> 4;
+            dst[1] = (p1 + q1 + 8u) >> 4;
+            dst[2] = (p2 + q2 + 8u) >> 4;
+            p0 = q0;
+            p1 = q1;
+            p2 = q2;
+        }
+        p[0] = p0;
+        p[1] = p1;
+        p[2] = p2;
+    }
+    for (; x < dw; x++, dst += 3) {
+        pair_src(s0, s1, s2, s3, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp,
+                 (size_t)imin(2 * x + 2, sw - 1) * bpp, q);
+        for (int ch = 0; ch < 3; ch++) {
+            dst[ch] = (p[ch] + q[ch] + 8u) >> 4;
+            p[ch] = q[ch];
+        }
+    }
+}
+#endif
 
 void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
                          uint32_t *dst, int dw, int sw)
@@ -266,6 +352,17 @@ void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t
             memcpy(dst, src, (size_t)w * ibpp); /* in place is src == dst: rows never half-overlap */
         return;
     }
+#if BLOOM_USE_XRGB8888 && !BLOOM_SMALL
+    if (!o->debug && o->in_fmt == BLOOM_FMT_XRGB8888 && o->out_fmt == BLOOM_FMT_XRGB8888) {
+        for (int x = 0; x < w; x++) { /* the same, with X written as 0xFF */
+            dst[4 * x] = src[4 * x];
+            dst[4 * x + 1] = src[4 * x + 1];
+            dst[4 * x + 2] = src[4 * x + 2];
+            dst[4 * x + 3] = 0xFF;
+        }
+        return;
+    }
+#endif
     uint32_t v[3 * BLOOM_OUT_CHUNK];
     memset(v, 0, sizeof v);
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
@@ -312,13 +409,16 @@ void bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
         dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
 }
 
-void bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
+    uint32_t any = 0;
     for (int i = 0; i < n; i++) {
         const uint32_t p = v[i - 3], c = v[i], q = v[i + 3];
         e[i] = (3u * p + 4u * c + q + 4u) >> 3;
         o[i] = (p + 4u * c + 3u * q + 4u) >> 3;
+        any |= e[i] | o[i];
     }
+    return any;
 }
 
 void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity)
@@ -354,12 +454,15 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
             memcpy(vb, vb + 3, 3u * sizeof *vb);
         if (m0 + n == sw)
             memcpy(vb + 3 * (n + 1), vb + 3 * n, 3u * sizeof *vb);
-        k->htent_eo(vb + 3, e, od, 3 * n);
+        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
+        if (!k->htent_eo(vb + 3, e, od, 3 * n)) { /* B = 0 on this chunk */
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
+            continue;
+        }
         if (o->intensity != 65536u) { /* (65536 x + 32768) >> 16 = x */
             k->scale(e, 3 * n, o->intensity);
             k->scale(od, 3 * n, o->intensity);
         }
-        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
         bloom_encode_eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od,
                         dst + (size_t)x0 * obpp, nx);
     }

@@ -13,6 +13,13 @@ typedef uint32x4_t VT;
 #define ST2(p, v) vst1_u32((p), vget_low_u32(v))
 #define ADD(a, b) vaddq_u32((a), (b))
 #define AND(a, b) vandq_u32((a), (b))
+#define OR(a, b) vorrq_u32((a), (b))
+static inline uint32_t or_lanes(uint32x4_t v)
+{
+    const uint32x2_t t = vorr_u32(vget_low_u32(v), vget_high_u32(v));
+    return vget_lane_u32(t, 0) | vget_lane_u32(t, 1);
+}
+#define OR_LANES(v) or_lanes(v)
 #define SHL(a, n) vshlq_n_u32((a), (n))
 #define SHR(a, n) vshrq_n_u32((a), (n))
 #define DUP(c) vdupq_n_u32(c)
@@ -55,9 +62,9 @@ void bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *
     vtent_flat(a, b, c, dst, n);
 }
 
-void bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
-    htent_eo_flat(v, e, o, n);
+    return htent_eo_flat(v, e, o, n);
 }
 
 /* x = low 32 bits of (I x + 32768) >> 16: a widening multiply, then a

@@ -9,7 +9,8 @@
  * Operations the includer defines, on VT (4 x uint32_t lanes, wrapping):
  *   LD4(p), ST4(p, v)  four samples, unaligned
  *   LD2(p), ST2(p, v)  two samples in lanes 0, 1
- *   ADD(a, b), AND(a, b), SHL(a, n), SHR(a, n) (logical), DUP(c)
+ *   ADD(a, b), AND(a, b), OR(a, b), SHL(a, n), SHR(a, n) (logical), DUP(c)
+ *   OR_LANES(v)        the OR of the four lanes, as a uint32_t
  *   ADD_SHR3(acc, v)   acc + (v >> 3)
  *   PACK_LO(e, o)      [e0 e1 e2 o0]     PACK_HI(o)  [o1 o2 . .]
  *
@@ -167,17 +168,22 @@ static void vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */
-static void htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
     const VT k4 = DUP(4u);
+    VT any = DUP(0u);
     int i = 0;
     for (; i + 4 <= n; i += 4) {
         const VT p = LD4(v + i - 3), q = LD4(v + i + 3);
         const VT m = ADD(ADD(SHL(LD4(v + i), 2), k4), ADD(p, q));
-        ST4(e + i, SHR(ADD(m, SHL(p, 1)), 3));
-        ST4(o + i, SHR(ADD(m, SHL(q, 1)), 3));
+        const VT ev = SHR(ADD(m, SHL(p, 1)), 3), ov = SHR(ADD(m, SHL(q, 1)), 3);
+        ST4(e + i, ev);
+        ST4(o + i, ov);
+        any = OR(any, OR(ev, ov));
     }
+    uint32_t r = OR_LANES(any);
     if (i < n)
-        bloom_row_htent_eo_c(v + i, e + i, o + i, n - i);
+        r |= bloom_row_htent_eo_c(v + i, e + i, o + i, n - i);
+    return r;
 }
 #endif

@@ -13,6 +13,7 @@ typedef __m128i VT;
 #define ST2(p, v) _mm_storel_epi64((__m128i *)(void *)(p), (v))
 #define ADD(a, b) _mm_add_epi32((a), (b))
 #define AND(a, b) _mm_and_si128((a), (b))
+#define OR(a, b) _mm_or_si128((a), (b))
 #define SHL(a, n) _mm_slli_epi32((a), (n))
 #define SHR(a, n) _mm_srli_epi32((a), (n))
 #define DUP(c) _mm_set1_epi32((int)(c))
@@ -27,6 +28,13 @@ static inline __m128i pack_lo(__m128i e, __m128i o)
 }
 #define PACK_LO(e, o) pack_lo((e), (o))
 #define PACK_HI(o) _mm_srli_si128((o), 4)
+static inline uint32_t or_lanes(__m128i v)
+{
+    v = _mm_or_si128(v, _mm_srli_si128(v, 8));
+    v = _mm_or_si128(v, _mm_srli_si128(v, 4));
+    return (uint32_t)_mm_cvtsi128_si32(v);
+}
+#define OR_LANES(v) or_lanes(v)
 
 #include "bloom_row_simd.h"
 
@@ -73,9 +81,9 @@ void bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *
     vtent_flat(a, b, c, dst, n);
 }
 
-void bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
-    htent_eo_flat(v, e, o, n);
+    return htent_eo_flat(v, e, o, n);
 }
 
 /* x = low 32 bits of (I x + 32768) >> 16: even and odd lanes through
