@@ -61,6 +61,11 @@ run yuyv-32 yuyv "$fb32"
 run rgb24-32 rgb24 "$fb32"
 run grey-32 grey "$fb32"
 run off-32 rgb24 "$fb32" --mode off
+# a preset with its depth plane; the plane of the wrong size is refused
+if [ "$ATT" = 1 ]; then
+    run att-16 yuyv "$fb16" --preset attenuation --aux /depth.pgm
+    run att-size yuyv "$fb16" --preset attenuation --aux /depth240.pgm
+fi
 # speed under emulation, 640x480 YUYV to the 32 bpp screen
 /bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q > /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt
