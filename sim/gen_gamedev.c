@@ -7,7 +7,12 @@
  * (Reinhard, then gamma 1/2.2 or none). Both are monotone in c, so the code
  * is the number of thresholds T[1..n] with c >= T[k], T[k] the smallest
  * integer c whose code is at least k. This program prints T for n = 255,
- * 63, 31 in Q12.20 (T[0] = 0 heads each table). For F < 20 fraction bits the
+ * 63, 31 in Q12.20 (T[0] = 0 heads each table, T[n+1] = 2^32 - 1 ends it).
+ * For speed (not in BLOOM_SMALL builds) a bucket table per T: v's bucket
+ * key is v itself below 64, else 64 + 32 (e - 6) + the 5 bits after the
+ * leading one (e = its position), 896 buckets; the bucket holds the code
+ * of its smallest v, and the generator checks that no bucket holds more
+ * than two thresholds above that, so two compares finish the search. For F < 20 fraction bits the
  * core compares c << (20 - F) with the same table, exact because
  * ceil(ceil(x) / m) = ceil(x / m).
  *
@@ -33,10 +38,30 @@ static double code_of(double c, double one, int n, int linear)
 
 static int failures;
 
+#define NKEYS 896
+
+/* The core's bucket key (src/bloom_preset_gamedev.c) and its inverse. */
+static uint32_t key_of(uint32_t v)
+{
+    if (v < 64)
+        return v;
+    int e = 31;
+    while (!(v >> e))
+        e--;
+    return 64u + 32u * (uint32_t)(e - 6) + ((v >> (e - 5)) & 31u);
+}
+static uint64_t key_lo(uint32_t key)
+{
+    if (key < 64)
+        return key;
+    const uint32_t e = 6 + (key - 64) / 32, m = (key - 64) % 32;
+    return (uint64_t)(32 + m) << (e - 5);
+}
+
 static void table(const char *name, int n, int linear)
 {
     const double one = 1048576.0;
-    uint32_t t[256];
+    uint32_t t[257];
     t[0] = 0;
     for (int k = 1; k <= n; k++) {
         double c;
@@ -70,10 +95,31 @@ static void table(const char *name, int n, int linear)
             failures++;
         }
     }
-    printf("const uint32_t %s[%d] = {", name, n + 1);
-    for (int k = 0; k <= n; k++)
-        printf("%s%u%s", k % 8 ? " " : "\n    ", t[k], k < n ? "," : "");
+    t[n + 1] = 0xFFFFFFFFu;
+    printf("const uint32_t %s[%d] = {", name, n + 2);
+    for (int k = 0; k <= n + 1; k++)
+        printf("%s%u%s", k % 8 ? " " : "\n    ", t[k], k < n + 1 ? "," : "");
     printf("\n};\n");
+    /* buckets */
+    printf("#if !BLOOM_SMALL\nconst uint8_t %s_bk[%d] = {", name, NKEYS);
+    for (uint32_t key = 0; key < NKEYS; key++) {
+        const uint64_t lo = key_lo(key), hi = key + 1 < NKEYS ? key_lo(key + 1) - 1 : 0xFFFFFFFFu;
+        if (key_of((uint32_t)lo) != key || key_of((uint32_t)hi) != key) {
+            fprintf(stderr, "gen_gamedev: bucket %u bounds wrong\n", key);
+            failures++;
+        }
+        int k = 0, inside = 0;
+        while (k < n && t[k + 1] <= lo)
+            k++;
+        for (int j = k + 1; j <= n; j++)
+            inside += t[j] > lo && t[j] <= hi;
+        if (inside > 2) {
+            fprintf(stderr, "gen_gamedev: %s bucket %u holds %d thresholds\n", name, key, inside);
+            failures++;
+        }
+        printf("%s%d%s", key % 16 ? " " : "\n    ", k, key + 1 < NKEYS ? "," : "");
+    }
+    printf("\n};\n#endif\n");
 }
 
 int main(void)

@@ -156,27 +156,64 @@ static void gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     if (n->nin == 2) {
         const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                       (const uint32_t *)in[0][2]};
-        bloom_row_tent_c(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
+        bloom_kernels_t k; /* the C tent or its SIMD twin (same bits; BLOOM_FLAG_NO_SIMD: C) */
+        bloom_kernels_select(&k, g->cfg.flags);
+        k.tent(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
     }
 }
 
 /* ---- output: composite, Reinhard, gamma, encode ------------------------------ */
 
-/* The code of v (Q12.20, saturated to 32 bits) among thresholds t[1 .. 2h-1]. */
-static inline uint32_t code_of(const uint32_t *t, uint32_t half, uint32_t v)
+/* The output code of v (Q12.20, saturated below 2^32 - 1): the number of
+ * thresholds t[1 .. n] at or below it (t[n+1] = 2^32 - 1 is a sentinel).
+ * Fast builds look the code of v's bucket up and finish with two compares
+ * (the generator checks that no bucket holds more than two thresholds);
+ * BLOOM_SMALL builds search t (branch-free binary search, h = (n+1)/2).
+ * Same result. */
+#if !BLOOM_SMALL
+static inline uint32_t gd_key(uint32_t v)
 {
-    uint32_t k = 0;
-    for (uint32_t s = half; s; s >>= 1)
-        if (t[k + s] <= v)
-            k += s;
-    return k;
+    if (v < 64)
+        return v;
+#if defined(__GNUC__)
+    const int e = 31 - __builtin_clz(v);
+#else
+    int e = 31;
+    while (!(v >> e))
+        e--;
+#endif
+    return 64u + 32u * (uint32_t)(e - 6) + ((v >> (e - 5)) & 31u);
 }
 
-/* c at F bits as the tables' Q12.20, saturated (every threshold < 2^30). */
+typedef const uint8_t *gd_bk_t;
+#define GD_TABLE(name) bloom_gd_##name##_bk
+static inline uint32_t code_of(const uint32_t *t, gd_bk_t bk, uint32_t half, uint32_t v)
+{
+    (void)half;
+    uint32_t k = bk[gd_key(v)];
+    k += t[k + 1] <= v;
+    k += t[k + 1] <= v;
+    return k;
+}
+#else
+typedef const void *gd_bk_t;
+#define GD_TABLE(name) NULL
+static inline uint32_t code_of(const uint32_t *t, gd_bk_t bk, uint32_t half, uint32_t v)
+{
+    (void)bk;
+    uint32_t k = 0;
+    for (uint32_t s = half; s; s >>= 1)
+        k += s & (0u - (uint32_t)(t[k + s] <= v));
+    return k;
+}
+#endif
+
+/* c at F bits as the tables' Q12.20, saturated at 2^32 - 2 (every
+ * threshold is below 2^30, so that changes no code). */
 static inline uint32_t to_q20(uint64_t c)
 {
     c <<= 20 - BLOOM_LIN_BITS;
-    return c > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)c;
+    return c > 0xFFFFFFFEu ? 0xFFFFFFFEu : (uint32_t)c;
 }
 
 /* round(c / (c + 1) * 65536) = floor((2^17 c + d) / 2d), d = c + 2^F: the
@@ -210,7 +247,9 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const int w = n->w;
     uint32_t *bl = bg_scratch(g, 0), *sv = bg_scratch(g, 1);
     const uint64_t s = g->cfg.p.strength;
-    bloom_row_tent_c(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w);
+    bloom_kernels_t k; /* the C tent or its SIMD twin (same bits; BLOOM_FLAG_NO_SIMD: C) */
+    bloom_kernels_select(&k, g->cfg.flags);
+    k.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w);
     if (g->out.debug)
         memset(sv, 0, (size_t)w * 3u * sizeof *sv);
     else
@@ -229,14 +268,17 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const uint32_t *t8 = lin ? bloom_gd_lin8 : bloom_gd_gamma8;
     const uint32_t *t6 = lin ? bloom_gd_lin6 : bloom_gd_gamma6;
     const uint32_t *t5 = lin ? bloom_gd_lin5 : bloom_gd_gamma5;
+    const gd_bk_t b8 = lin ? GD_TABLE(lin8) : GD_TABLE(gamma8);
+    const gd_bk_t b6 = lin ? GD_TABLE(lin6) : GD_TABLE(gamma6);
+    const gd_bk_t b5 = lin ? GD_TABLE(lin5) : GD_TABLE(gamma5);
     /* codes in place of the composite, in bl */
     if (g->out.out_fmt == BLOOM_FMT_RGB565) {
         for (int x = 0; x < w; x++) {
             uint32_t *c = bl + 3 * x;
             const uint32_t *sx = sv + 3 * x;
-            c[0] = code_of(t5, 16, to_q20(((s * c[0] + 32768u) >> 16) + sx[0]));
-            c[1] = code_of(t6, 32, to_q20(((s * c[1] + 32768u) >> 16) + sx[1]));
-            c[2] = code_of(t5, 16, to_q20(((s * c[2] + 32768u) >> 16) + sx[2]));
+            c[0] = code_of(t5, b5, 16, to_q20(((s * c[0] + 32768u) >> 16) + sx[0]));
+            c[1] = code_of(t6, b6, 32, to_q20(((s * c[1] + 32768u) >> 16) + sx[1]));
+            c[2] = code_of(t5, b5, 16, to_q20(((s * c[2] + 32768u) >> 16) + sx[2]));
             const uint32_t wd = (c[0] << 11) | (c[1] << 5) | c[2];
             p[2 * x] = (uint8_t)wd;
             p[2 * x + 1] = (uint8_t)(wd >> 8);
@@ -244,7 +286,7 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         return;
     }
     for (int i = 0; i < 3 * w; i++)
-        bl[i] = code_of(t8, 128, to_q20(((s * bl[i] + 32768u) >> 16) + sv[i]));
+        bl[i] = code_of(t8, b8, 128, to_q20(((s * bl[i] + 32768u) >> 16) + sv[i]));
     if (g->out.out_fmt == BLOOM_FMT_XRGB8888) {
         for (int x = 0; x < w; x++, p += 4) {
             p[0] = (uint8_t)bl[3 * x + 2];
