@@ -45,11 +45,6 @@ int bloom_levels_for_radius(int radius_px)
 
 #if BLOOM_USE_COD
 
-static inline int clampi(int v, int lo, int hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
-
 /* Rec.709 luma coefficients in Q16 (sum 65536). */
 #define COD_KR 13933u
 #define COD_KG 46871u
@@ -78,10 +73,26 @@ static const uint32_t cod_natural[BLOOM_MAX_LEVELS][BLOOM_MAX_LEVELS] = {
     {9830, 39013, 46596, 48375, 48745, 48813, 48823, 48824, 48824, 48824, 48824, 48824, 48824, 48824, 48824, 48824}, /* L = 16 */
 };
 
+/* Rows of column sums are kept with 2 columns of padding on the left and 3
+ * on the right, copies of the edge columns (the edge rule), so that the
+ * horizontal passes need no clamping: column j of a padded row p is
+ * p[3 * (j + 2) + ch], j = -2 .. n + 2, 3 (n + 5) words <= the scratch
+ * row's 3 w0 + 16. */
+#define PAD 6
+static void pad_edges(uint32_t *p, int n)
+{
+    for (int ch = 0; ch < 3; ch++) {
+        const uint32_t l = p[PAD + ch], r = p[PAD + 3 * (n - 1) + ch];
+        p[ch] = p[3 + ch] = l;
+        for (int j = 0; j < 3; j++)
+            p[PAD + 3 * (n + j) + ch] = r;
+    }
+}
+
 /* Vertical box sums of six rows (2y-2 .. 2y+3): top = rows 0..3, centre =
  * rows 1..4, bottom = rows 2..5, accumulated row by row. */
-static inline void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict b, const uint32_t *restrict v,
-                        int j, int n)
+static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict b, const uint32_t *restrict v, int j,
+                 int n)
 {
     switch (j) {
     case 0:
@@ -126,7 +137,8 @@ static inline void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *re
  *   d_i = 2^F + floor(Y_i / 2^20), Y_i = 13933 R_i + 46871 G_i + 4732 B_i
  *   w_i = floor(2^(F+28) / d_i) (<= 2^28), g_i w_i with g = 1, 1, 1, 1, 4
  *   D = floor(floor((sum_i g_i w_i Box_i + 8 W) / 16) / W), W = sum g_i w_i
- * then the knee. */
+ * then the knee. Equal d_i give equal weights, and then D is exactly
+ * (sum_i g_i Box_i + 64) >> 7 (nested floors): no division. */
 static void d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                      void *dst)
 {
@@ -136,25 +148,25 @@ static void d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r, const vo
     for (int j = 0; j < 6; j++) {
         if (j == 0 || in[0][j] != in[0][j - 1])
             bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
-        vacc(vt, vc, vb, dec, j, nw);
+        vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
     }
+    pad_edges(vt, w0);
+    pad_edges(vc, w0);
+    pad_edges(vb, w0);
     uint32_t *o = (uint32_t *)dst;
     const uint64_t wnum = 1ull << (BLOOM_LIN_BITS + 28);
     for (int x = 0; x < n->w; x++) {
-        int cx[6];
-        for (int i = 0; i < 6; i++)
-            cx[i] = 3 * clampi(2 * x - 2 + i, 0, w0 - 1);
+        /* padded column 2x - 2 + i is at 3 (2x + i) */
+        const uint32_t *t = vt + 6 * x, *c = vc + 6 * x, *b = vb + 6 * x;
         uint32_t box[5][3]; /* TL, TR, BL, BR, C */
         for (int ch = 0; ch < 3; ch++) {
-            const uint32_t t01 = vt[cx[0] + ch] + vt[cx[1] + ch], t23 = vt[cx[2] + ch] + vt[cx[3] + ch],
-                           t45 = vt[cx[4] + ch] + vt[cx[5] + ch];
-            const uint32_t b01 = vb[cx[0] + ch] + vb[cx[1] + ch], b23 = vb[cx[2] + ch] + vb[cx[3] + ch],
-                           b45 = vb[cx[4] + ch] + vb[cx[5] + ch];
+            const uint32_t t01 = t[ch] + t[3 + ch], t23 = t[6 + ch] + t[9 + ch], t45 = t[12 + ch] + t[15 + ch];
+            const uint32_t b01 = b[ch] + b[3 + ch], b23 = b[6 + ch] + b[9 + ch], b45 = b[12 + ch] + b[15 + ch];
             box[0][ch] = t01 + t23;
             box[1][ch] = t23 + t45;
             box[2][ch] = b01 + b23;
             box[3][ch] = b23 + b45;
-            box[4][ch] = vc[cx[1] + ch] + vc[cx[2] + ch] + vc[cx[3] + ch] + vc[cx[4] + ch];
+            box[4][ch] = c[3 + ch] + c[6 + ch] + c[9 + ch] + c[12 + ch];
         }
         uint32_t d[5];
         bool same = true;
@@ -165,7 +177,7 @@ static void d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r, const vo
             same = same && d[i] == d[0];
         }
         uint32_t *p = o + 3 * x;
-        if (same) { /* equal weights: the plain 13-tap, the same bits */
+        if (same) {
             for (int ch = 0; ch < 3; ch++)
                 p[ch] = (uint32_t)(((uint64_t)box[0][ch] + box[1][ch] + box[2][ch] + box[3][ch] +
                                     4u * (uint64_t)box[4][ch] + 64u) >> 7);
@@ -202,88 +214,91 @@ static void d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
                    *r4 = (const uint32_t *)in[0][4], *r5 = (const uint32_t *)in[0][5];
     for (int i = 0; i < nw; i++) {
         const uint32_t mid = r2[i] + r3[i];
-        vi[i] = r1[i] + mid + r4[i];
-        vo[i] = r0[i] + r1[i] + 2u * mid + r4[i] + r5[i];
+        vi[PAD + i] = r1[i] + mid + r4[i];
+        vo[PAD + i] = r0[i] + r1[i] + 2u * mid + r4[i] + r5[i];
     }
+    pad_edges(vo, sw);
+    pad_edges(vi, sw);
     uint32_t *o = (uint32_t *)dst;
     for (int x = 0; x < n->w; x++) {
-        int cx[6];
-        for (int i = 0; i < 6; i++)
-            cx[i] = 3 * clampi(2 * x - 2 + i, 0, sw - 1);
+        const uint32_t *a = vo + 6 * x, *b = vi + 6 * x;
         for (int ch = 0; ch < 3; ch++) {
-            const uint64_t so = (uint64_t)vo[cx[0] + ch] + vo[cx[1] + ch] +
-                                2u * ((uint64_t)vo[cx[2] + ch] + vo[cx[3] + ch]) + vo[cx[4] + ch] + vo[cx[5] + ch];
-            const uint32_t si = vi[cx[1] + ch] + vi[cx[2] + ch] + vi[cx[3] + ch] + vi[cx[4] + ch];
+            const uint64_t so = (uint64_t)a[ch] + a[3 + ch] + 2u * ((uint64_t)a[6 + ch] + a[9 + ch]) + a[12 + ch] +
+                                a[15 + ch];
+            const uint32_t si = b[3 + ch] + b[6 + ch] + b[9 + ch] + b[12 + ch];
             o[3 * x + ch] = (uint32_t)((so + 4u * (uint64_t)si + 64u) >> 7);
         }
     }
 }
 
-/* The vertical half of the tent: V[j] = sum of the four rows' weighted
- * samples at low-resolution column j (u rows m-2 .. m+2, parity odd), each
- * <= 16 * 2^32, 64-bit, into scratch row 0. */
-static uint64_t *vtent(const bloom_graph_t *g, const void *const *rows, int odd, int sw)
+/* The vertical half of the tent: V[j] = the four rows' weighted samples at
+ * low-resolution column j (u rows m-2 .. m+2, parity odd), each
+ * <= 16 * 2^32, 64-bit, in scratch rows 0 and 1 (contiguous, 8-aligned),
+ * padded like the rows above (2 columns left, 2 right). Returns column 0. */
+static const uint64_t *vtent(const bloom_graph_t *g, const void *const *rows, int odd, int sw)
 {
-    uint64_t *v = (uint64_t *)(void *)bg_scratch(g, 0);
+    uint64_t *v = (uint64_t *)(void *)bg_scratch(g, 0) + 6;
     const uint32_t *a = (const uint32_t *)rows[odd], *b = (const uint32_t *)rows[odd + 1],
                    *c = (const uint32_t *)rows[odd + 2], *d = (const uint32_t *)rows[odd + 3];
     const uint32_t wa = odd ? 3u : 1u, wb = odd ? 7u : 5u, wc = odd ? 5u : 7u, wd = odd ? 1u : 3u;
     for (int i = 0; i < 3 * sw; i++)
         v[i] = (uint64_t)wa * a[i] + (uint64_t)wb * b[i] + (uint64_t)wc * c[i] + (uint64_t)wd * d[i];
+    for (int ch = 0; ch < 3; ch++) {
+        v[ch - 6] = v[ch - 3] = v[ch];
+        v[3 * sw + ch] = v[3 * sw + 3 + ch] = v[3 * (sw - 1) + ch];
+    }
     return v;
 }
 
-/* The horizontal half: the exact 2-D tent sum (256 x the mean) of output
- * column x, channel ch. */
-static inline uint64_t htent(const uint64_t *v, int x, int ch, int sw)
-{
-    const int m = x >> 1;
-    if (x & 1)
-        return 3u * v[3 * clampi(m - 1, 0, sw - 1) + ch] + 7u * v[3 * m + ch] +
-               5u * v[3 * clampi(m + 1, 0, sw - 1) + ch] + v[3 * clampi(m + 2, 0, sw - 1) + ch];
-    return v[3 * clampi(m - 2, 0, sw - 1) + ch] + 5u * v[3 * clampi(m - 1, 0, sw - 1) + ch] +
-           7u * v[3 * m + ch] + 3u * v[3 * clampi(m + 1, 0, sw - 1) + ch];
-}
+/* The horizontal half for output columns x = 2m (weights 1, 5, 7, 3 over
+ * m-2 .. m+1) and 2m + 1 (3, 7, 5, 1 over m-1 .. m+2): the exact 2-D tent
+ * sums (256 x the mean), <= 2^40, into e[3 m + ch] and o[3 m + ch]. */
+#define TENT_EVEN(p, ch) ((p)[(ch) - 6] + 5u * (p)[(ch) - 3] + 7u * (p)[(ch)] + 3u * (p)[(ch) + 3])
+#define TENT_ODD(p, ch) (3u * (p)[(ch) - 3] + 7u * (p)[(ch)] + 5u * (p)[(ch) + 3] + (p)[(ch) + 6])
 
-/* U_k. Input 0: D_k row r; input 1: U_(k+1) rows m-2 .. m+2. k[0] = c_k. */
+/* U_k. Input 0: D_k row r; input 1: U_(k+1) rows m-2 .. m+2. k[0] = c_k.
+ * Energy-conserving: U = ((65536 - c) 256 D + c T4 + 2^23) >> 24 (<= 2^52
+ * + 2^52); additive: U = D + ((c T4 + 2^23) >> 24) (c T4 <= 2^56). */
 static void u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = g->node[n->in[1].node].w;
+    const int sw = g->node[n->in[1].node].w, w = n->w;
     const uint64_t *v = vtent(g, in[1], r & 1, sw);
     const uint32_t *dk = (const uint32_t *)in[0][0];
     uint32_t *o = (uint32_t *)dst;
     const uint64_t c = n->k[0];
-    if (g->cfg.flags & BLOOM_FLAG_ADDITIVE) {
-        for (int x = 0; x < n->w; x++)
-            for (int ch = 0; ch < 3; ch++)
-                o[3 * x + ch] = dk[3 * x + ch] + (uint32_t)((c * htent(v, x, ch, sw) + (1u << 23)) >> 24);
-    } else {
-        const uint64_t a = (65536u - c) << 8;
-        for (int x = 0; x < n->w; x++)
-            for (int ch = 0; ch < 3; ch++)
-                o[3 * x + ch] =
-                    (uint32_t)((a * dk[3 * x + ch] + c * htent(v, x, ch, sw) + (1u << 23)) >> 24);
+    const uint64_t a = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
+    for (int x = 0; x < w; x++) {
+        const uint64_t *p = v + 3 * (x >> 1);
+        for (int ch = 0; ch < 3; ch++) {
+            const uint64_t t = (x & 1) ? TENT_ODD(p, ch) : TENT_EVEN(p, ch);
+            o[3 * x + ch] = (uint32_t)((a * dk[3 * x + ch] + c * t + (1u << 23)) >> 24);
+        }
     }
 }
 
 /* The output. Input 0: source row r; input 1: U_1 rows m-2 .. m+2.
- * k[0] = c_0, k[1 + ch] = f_ch = round(c_0 tint_ch / 65536). */
+ * k[0] = c_0, k[1 + ch] = f_ch = round(c_0 tint_ch / 65536);
+ * v = (a S 256 + f T4 + 2^23) >> 24 with a = 65536 - c_0 (energy-conserving),
+ * 65536 (additive) or 0 (debug view), clamped to 2^32 - 1, encoded. */
 static void out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     const int sw = g->node[n->in[1].node].w, w = n->w;
     const uint64_t *v = vtent(g, in[1], r & 1, sw);
-    uint32_t *s = bg_scratch(g, 1), *o = bg_scratch(g, 2);
+    uint32_t *s = bg_scratch(g, 2), *o = bg_scratch(g, 3);
     const bool add = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = g->out.debug;
     const uint64_t a = dbg ? 0u : (add ? 65536u : 65536u - n->k[0]) << 8;
+    const uint64_t f[3] = {n->k[1], n->k[2], n->k[3]};
     bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][0], s, w);
-    for (int x = 0; x < w; x++)
+    for (int x = 0; x < w; x++) {
+        const uint64_t *p = v + 3 * (x >> 1);
         for (int ch = 0; ch < 3; ch++) {
-            const uint64_t t = a * s[3 * x + ch] + (uint64_t)n->k[1 + ch] * htent(v, x, ch, sw) + (1u << 23);
-            const uint64_t q = t >> 24;
+            const uint64_t t = (x & 1) ? TENT_ODD(p, ch) : TENT_EVEN(p, ch);
+            const uint64_t q = (a * s[3 * x + ch] + f[ch] * t + (1u << 23)) >> 24;
             o[3 * x + ch] = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
         }
+    }
     bloom_encode_row(g->out.out_fmt, g->out.linear, o, (uint8_t *)dst, w);
 }
 
@@ -337,13 +352,23 @@ static bloom_status_t build(bloom_graph_t *g)
         D[k] = bg_node(g, d_13, g->w[k], g->h[k], 3, k);
         bg_input(g, D[k], D[k - 1], BG_DOWN, -2, 3);
     }
+    /* The up pass reads D_1 .. D_R again, recomputed when it needs them --
+     * D_1 from the source rows, which stay in memory for the composite
+     * anyway, D_k from that second D_(k-1) -- instead of through delay lines
+     * at the widest levels. R = 1 for L <= 3, 2 for L = 4 .. 6, 3 beyond:
+     * the smallest workspace at 320x240, 640x480 and 1920x1080 (cod.md). */
+    const int R = L <= 3 ? 1 : L <= 6 ? 2 : 3;
+    int E[BLOOM_MAX_LEVELS + 1];
+    for (int k = 1; k < L; k++) {
+        E[k] = -1;
+        if (k > R)
+            continue;
+        E[k] = bg_node(g, k == 1 ? d1_karis : d_13, g->w[k], g->h[k], 3, k);
+        bg_input(g, E[k], k == 1 ? BG_SRC : E[k - 1], BG_DOWN, -2, 3);
+    }
     int U = D[L];
     for (int k = L - 1; k >= 1; k--) {
-        int dk = D[k];
-        if (k == 1) { /* D_1 again for the up pass: no delay line at level 1 */
-            dk = bg_node(g, d1_karis, g->w[1], g->h[1], 3, 1);
-            bg_input(g, dk, BG_SRC, BG_DOWN, -2, 3);
-        }
+        const int dk = E[k] >= 0 ? E[k] : D[k];
         const int u = bg_node(g, u_blend, g->w[k], g->h[k], 3, k);
         bg_input(g, u, dk, BG_SAME, 0, 0);
         bg_input(g, u, U, BG_UP, -2, 2);
