@@ -46,6 +46,7 @@
 #define GW4 272059u
 #define GQ 24
 #define GHALF (1u << (GQ - 1))
+
 /* ---- level 1: box down, then the luminance threshold -------------------- */
 
 /* In place on w level-1 pixels. Lx <= tx = 10000 t: the pixel is 0.

@@ -444,7 +444,7 @@ static void rows(void)
         ;
     CHECK(st == BLOOM_DONE);
     CHECKF(frame_equal(&out, &ref), "gamedev rows: push-before-pull gives the frame's output");
-    CHECKF(busy > 0 && pushed_before_pull >= info.source_rows, "gamedev rows: BUSY after %d rows (source_rows %d)",
+    CHECKF(busy > 0 && pushed_before_pull == info.source_rows, "gamedev rows: BUSY after %d rows (source_rows %d)",
            pushed_before_pull, info.source_rows);
     /* in place */
     frame_t inpl = frame_alloc(c.width, c.height, c.in_fmt, 0);
