@@ -56,7 +56,7 @@ static void fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r, const 
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
     uint32_t *row = (uint32_t *)dst;
-    bloom_row_box_c(s, row, n->w, g->node[n->in[0].node].w);
+    g->kern.box(s, row, n->w, g->node[n->in[0].node].w); /* C or SIMD, same bits */
     const uint32_t t = g->knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
     const int cnt = 3 * n->w;
     for (int i = 0; i < cnt; i++) {
@@ -132,7 +132,7 @@ static void fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    bloom_row_tent_c(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, g->node[n->in[0].node].w);
+    g->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, g->node[n->in[0].node].w);
 }
 
 /* Output: input 0 the source row (BG_SAME 0..0), input 1 the half-resolution
@@ -150,7 +150,7 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
         const int cnt = imin_(BLOOM_OUT_CHUNK, w - x0);
-        bloom_row_tent_c(u, r & 1, NULL, bl, x0, cnt, sw);
+        g->kern.tent(u, r & 1, NULL, bl, x0, cnt, sw);
         if (!o->debug) {
             /* the source row is read before the encoded row is written: dst may alias src */
             bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, cnt);
