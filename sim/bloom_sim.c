@@ -98,9 +98,9 @@ static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf,
 static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
                         const sim_frame_t *f, char *err, size_t errlen)
 {
-    bloom_config_t c = o->cfg;
-    c.width = f->w;
-    c.height = f->h;
+    bloom_config_t c;
+    if (sim_opts_config(o, f->w, f->h, &c, err, errlen))
+        return -1;
     if (o->in_fmt_set)
         c.in_fmt = o->in_fmt;
     else if (f->max[0] == 0)

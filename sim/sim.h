@@ -124,6 +124,17 @@ int sim_aux_load(sim_aux_t *a, const char *path, char *err, size_t errlen);
 void sim_aux_free(sim_aux_t *a);
 
 /* ---- options (sim_opts.c) ---------------------------------------------- */
+/* The engine and preset options given on the command line (set: SIM_SET_*
+ * bits), applied over the preset's defaults for each frame size. */
+typedef struct {
+    unsigned set;
+    int preset;              /* -1: not given (unity) */
+    bloom_config_t v;        /* the values given */
+    int nweights;            /* --weights: level_weight[0 .. nweights-1] */
+    long radius;             /* --radius */
+    uint32_t flags;          /* --linear, --copy-source, --view bloom */
+} sim_given_t;
+
 typedef struct {
     const char **inputs;
     int ninputs;
@@ -137,6 +148,7 @@ typedef struct {
                                               flags, preset parameters (aux_fmt: the
                                               preset's until --aux is loaded) */
     const char *aux_path;                  /* --aux FILE, or NULL */
+    sim_given_t given;                     /* what cfg was built from */
     int in_fmt_set, out_fmt_set;
     bloom_format_t in_fmt, out_fmt;
     int compare, bittrue;
@@ -149,6 +161,11 @@ typedef struct {
 /* Parses argv into o. Returns 0 to run, 1 when --help was printed (exit
  * 0), -1 after printing a usage error to stderr (exit 2). */
 int sim_opts_parse(int argc, char **argv, sim_opts_t *o);
+/* The engine configuration for a w x h frame: the preset's defaults for
+ * that size (bloom_config_preset: some depend on it, e.g. cod's level
+ * weights), then the options given; aux_fmt and formats as in o->cfg.
+ * Returns 0, or -1 with a message in err. */
+int sim_opts_config(const sim_opts_t *o, int w, int h, bloom_config_t *c, char *err, size_t errlen);
 /* "unity, attenuation": the presets this build carries. */
 const char *sim_presets_available(void);
 /* What the preset's aux plane is ("depth plane", "mask", ...); NULL when it reads none. */

@@ -184,14 +184,7 @@ enum {
     SET_SATURATE = 1u << 11, SET_ADDITIVE = 1u << 12, SET_BAKED = 1u << 13, SET_AUX = 1u << 14
 };
 
-typedef struct {
-    unsigned set;
-    int preset;              /* -1: not given (unity) */
-    const char *preset_arg;
-    bloom_config_t v;        /* the values given */
-    int nweights;
-    long radius;
-} given_t;
+typedef sim_given_t given_t;
 
 #define PB(p) (1u << (p))
 /* Which presets read a parameter (bloom.h, bloom_preset_params_t and the
@@ -294,7 +287,6 @@ static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
         g->set |= SET_INTENSITY;
     } else if (!strcmp(a, "--preset")) {
         g->preset = bloom_preset_from_name(v);
-        g->preset_arg = v;
         if (g->preset < 0) {
             fprintf(stderr, "bloom_sim: --preset: unknown preset '%s' (this build has: %s)\n", v,
                     sim_presets_available());
@@ -390,36 +382,16 @@ static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
 
 /* The configuration: the preset's defaults (bloom_config_preset), then
  * every option given. */
-static int build_config(sim_opts_t *o, const given_t *g, uint32_t flags)
+/* The preset's defaults for a w x h frame, then every option given. */
+static int config_for(const given_t *g, int w, int h, bloom_config_t *c, char *err, size_t errlen)
 {
     const bloom_preset_t p = g->preset < 0 ? BLOOM_PRESET_UNITY : (bloom_preset_t)g->preset;
-    const char *pn = bloom_preset_name(p);
-    for (size_t i = 0; i < sizeof param_use / sizeof param_use[0]; i++)
-        if ((g->set & param_use[i].bit) && !(param_use[i].presets & PB(p))) {
-            char who[64] = "";
-            size_t len = 0;
-            for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
-                if (param_use[i].presets & PB(q))
-                    len += (size_t)snprintf(who + len, sizeof who - len, "%s%s", len ? " or " : "",
-                                            bloom_preset_name((bloom_preset_t)q));
-            fprintf(stderr, "bloom_sim: %s applies to the %s preset, not %s (give --preset)\n",
-                    param_use[i].opt, who, pn);
-            return -1;
-        }
-    if ((g->set & SET_RADIUS) && (g->set & SET_LEVELS)) {
-        fputs("bloom_sim: --radius chooses the level count: give --radius or --levels, not both\n",
-              stderr);
-        return -1;
-    }
-    bloom_config_default(&o->cfg, 1, 1);
-    o->cfg.flags = flags;
-    bloom_status_t st = bloom_config_preset(&o->cfg, p);
-    if (st != BLOOM_OK) {
-        fprintf(stderr, "bloom_sim: --preset %s: %s (this build has: %s)\n", pn,
-                bloom_status_str(st), sim_presets_available());
-        return -1;
-    }
-    bloom_config_t *c = &o->cfg;
+    bloom_config_default(c, w, h);
+    c->flags = g->flags;
+    bloom_status_t st = bloom_config_preset(c, p);
+    if (st != BLOOM_OK)
+        return sim_errf(err, errlen, "--preset %s: %s (this build has: %s)", bloom_preset_name(p),
+                        bloom_status_str(st), sim_presets_available());
     if (g->set & SET_LEVELS)
         c->levels = g->v.levels;
     if (g->set & SET_THRESHOLD)
@@ -449,13 +421,52 @@ static int build_config(sim_opts_t *o, const given_t *g, uint32_t flags)
 #if BLOOM_USE_COD
     if (g->set & SET_RADIUS) {
         const int l = bloom_levels_for_radius((int)g->radius);
-        if (l < 1 || l > BLOOM_MAX_LEVELS) {
-            fprintf(stderr, "bloom_sim: --radius %ld: no level count reaches it\n", g->radius);
-            return -1;
-        }
+        if (l < 1 || l > BLOOM_MAX_LEVELS)
+            return sim_errf(err, errlen, "--radius %ld: no level count reaches it", g->radius);
         c->levels = l;
     }
 #endif
+    return 0;
+}
+
+int sim_opts_config(const sim_opts_t *o, int w, int h, bloom_config_t *c, char *err, size_t errlen)
+{
+    if (config_for(&o->given, w, h, c, err, errlen))
+        return -1;
+    c->aux_fmt = o->cfg.aux_fmt; /* the preset's, or the --aux file's (main decides) */
+    return 0;
+}
+
+/* Checks what can be checked without a frame, and builds o->cfg for a
+ * 1x1 frame (the preset, its flags and aux plane; per-frame sizes come
+ * from sim_opts_config). */
+static int build_config(sim_opts_t *o)
+{
+    const given_t *g = &o->given;
+    const bloom_preset_t p = g->preset < 0 ? BLOOM_PRESET_UNITY : (bloom_preset_t)g->preset;
+    const char *pn = bloom_preset_name(p);
+    for (size_t i = 0; i < sizeof param_use / sizeof param_use[0]; i++)
+        if ((g->set & param_use[i].bit) && !(param_use[i].presets & PB(p))) {
+            char who[64] = "";
+            size_t len = 0;
+            for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
+                if (param_use[i].presets & PB(q))
+                    len += (size_t)snprintf(who + len, sizeof who - len, "%s%s", len ? " or " : "",
+                                            bloom_preset_name((bloom_preset_t)q));
+            fprintf(stderr, "bloom_sim: %s applies to the %s preset, not %s (give --preset)\n",
+                    param_use[i].opt, who, pn);
+            return -1;
+        }
+    if ((g->set & SET_RADIUS) && (g->set & SET_LEVELS)) {
+        fputs("bloom_sim: --radius chooses the level count: give --radius or --levels, not both\n",
+              stderr);
+        return -1;
+    }
+    char err[SIM_ERRLEN];
+    if (config_for(g, 1, 1, &o->cfg, err, sizeof err)) {
+        fprintf(stderr, "bloom_sim: %s\n", err);
+        return -1;
+    }
     return 0;
 }
 
@@ -473,10 +484,8 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
         fprintf(stderr, "bloom_sim: out of memory\n");
         return -1;
     }
-    given_t g;
-    memset(&g, 0, sizeof g);
-    g.preset = -1;
-    uint32_t flags = 0;
+    given_t *g = &o->given;
+    g->preset = -1;
     int only_inputs = 0;
     for (int i = 1; i < argc; i++) {
         char *a = argv[i];
@@ -493,15 +502,15 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
             fputs(usage_rest, stdout);
             return 1;
         } else if (!strcmp(a, "--linear")) {
-            flags |= BLOOM_FLAG_LINEAR;
+            g->flags |= BLOOM_FLAG_LINEAR;
         } else if (!strcmp(a, "--copy-source")) {
-            flags |= BLOOM_FLAG_COPY_SOURCE;
+            g->flags |= BLOOM_FLAG_COPY_SOURCE;
         } else if (!strcmp(a, "--saturate")) {
-            g.set |= SET_SATURATE;
+            g->set |= SET_SATURATE;
         } else if (!strcmp(a, "--additive")) {
-            g.set |= SET_ADDITIVE;
+            g->set |= SET_ADDITIVE;
         } else if (!strcmp(a, "--baked")) {
-            g.set |= SET_BAKED;
+            g->set |= SET_BAKED;
         } else if (!strcmp(a, "--compare")) {
             o->compare = 1;
         } else if (!strcmp(a, "--bittrue")) {
@@ -525,7 +534,7 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
                 fprintf(stderr, "bloom_sim: %s needs a value (see bloom_sim --help)\n", a);
                 return -1;
             }
-            if (apply(o, &g, name, v))
+            if (apply(o, g, name, v))
                 return -1;
         }
     }
@@ -544,6 +553,6 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
     if (o->sbs_pattern)
         o->compare = 1;
     if (o->view_bloom)
-        flags |= BLOOM_FLAG_DEBUG_VIEW;
-    return build_config(o, &g, flags);
+        g->flags |= BLOOM_FLAG_DEBUG_VIEW;
+    return build_config(o);
 }

@@ -38,7 +38,10 @@ typedef struct {
     bloom_preset_t preset;    /* --preset NAME, default unity */
     int levels;               /* bloom parameters: the preset's defaults (bloom_config_preset) */
     uint32_t threshold, knee, intensity; /* Q16.16 */ /* unless given on the command line */
-    bloom_preset_params_t params; /* the preset's parameters, defaults then the options */
+    bloom_preset_params_t params; /* the preset's parameters, defaults (at --size) then the options */
+    bloom_preset_params_t given_params; /* the preset options given (given_mask: CAM_P_*) */
+    unsigned given_mask;
+    int given_weights;        /* --weights: level_weight[0 .. given_weights-1] */
     uint32_t preset_flags;    /* BLOOM_FLAG_SATURATE / _BAKED / _ADDITIVE */
     bloom_aux_format_t aux_fmt; /* what the preset reads by default (U8 until --aux is read) */
     const char *aux;          /* --aux FILE: the preset's plane, read once after S_FMT */
@@ -59,8 +62,11 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
 void cam_usage(void *stream);
 const char *cam_format_name(enum cam_pixfmt f);
 const char *cam_mode_name(enum cam_mode m);
-/* The engine configuration of the options for a w x h RGB888 frame (the
- * preset, its defaults, the options given). */
+/* The engine configuration of the options for a w x h RGB888 frame: the
+ * preset's defaults for that size (some depend on it: cod's level weights),
+ * then the options given. */
+enum { CAM_P_STRENGTH = 1u, CAM_P_PASSES = 2u, CAM_P_ATTENUATION = 4u, CAM_P_MAX_REDUCTION = 8u,
+       CAM_P_TINT = 16u };
 void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg);
 
 /* ---- the aux plane (cam_aux.c) ------------------------------------------- */

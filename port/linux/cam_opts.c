@@ -190,6 +190,24 @@ static void available(char *buf, size_t len)
                                   bloom_preset_name((bloom_preset_t)p));
 }
 
+/* The preset parameters given over p (the preset's defaults). */
+static void given_params(const cam_opts_t *o, bloom_preset_params_t *p)
+{
+    const bloom_preset_params_t *g = &o->given_params;
+    if (o->given_mask & CAM_P_STRENGTH)
+        p->strength = g->strength;
+    if (o->given_mask & CAM_P_PASSES)
+        p->passes = g->passes;
+    if (o->given_mask & CAM_P_ATTENUATION)
+        p->attenuation = g->attenuation;
+    if (o->given_mask & CAM_P_MAX_REDUCTION)
+        p->max_reduction = g->max_reduction;
+    if (o->given_mask & CAM_P_TINT)
+        memcpy(p->tint, g->tint, sizeof p->tint);
+    for (int k = 0; k < o->given_weights; k++)
+        p->level_weight[k] = g->level_weight[k];
+}
+
 void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg)
 {
     bloom_config_default(cfg, w, h);
@@ -198,7 +216,7 @@ void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg)
     cfg->threshold = o->threshold;
     cfg->soft_knee = o->knee;
     cfg->intensity = o->intensity;
-    cfg->p = o->params;
+    given_params(o, &cfg->p);
     cfg->flags |= o->preset_flags;
     cfg->aux_fmt = o->aux_fmt;
 }
@@ -384,24 +402,20 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         }
     if ((given & G_RADIUS) && (given & G_LEVELS))
         return fail(err, errlen, "--radius chooses the level count: give --radius or --levels");
+    bloom_config_default(&d, o->width, o->height); /* the size asked for; the
+                                                       driver's is used at run time */
     bloom_config_preset(&d, o->preset);
     o->levels = (given & G_LEVELS) ? gv.levels : d.levels;
     o->threshold = (given & G_THRESHOLD) ? gv.threshold : d.threshold;
     o->knee = (given & G_KNEE) ? gv.soft_knee : d.soft_knee;
     o->intensity = (given & G_INTENSITY) ? gv.intensity : d.intensity;
+    o->given_params = gv.p;
+    o->given_mask = ((given & G_STRENGTH) ? CAM_P_STRENGTH : 0u) | ((given & G_PASSES) ? CAM_P_PASSES : 0u) |
+                    ((given & G_ATTENUATION) ? CAM_P_ATTENUATION : 0u) |
+                    ((given & G_MAX_REDUCTION) ? CAM_P_MAX_REDUCTION : 0u) | ((given & G_TINT) ? CAM_P_TINT : 0u);
+    o->given_weights = nweights;
     o->params = d.p;
-    if (given & G_STRENGTH)
-        o->params.strength = gv.p.strength;
-    if (given & G_PASSES)
-        o->params.passes = gv.p.passes;
-    if (given & G_ATTENUATION)
-        o->params.attenuation = gv.p.attenuation;
-    if (given & G_MAX_REDUCTION)
-        o->params.max_reduction = gv.p.max_reduction;
-    if (given & G_TINT)
-        memcpy(o->params.tint, gv.p.tint, sizeof o->params.tint);
-    for (int k = 0; k < nweights; k++)
-        o->params.level_weight[k] = gv.p.level_weight[k];
+    given_params(o, &o->params);
     o->preset_flags = d.flags & (uint32_t)(BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE);
     o->preset_flags |= ((given & G_SATURATE) ? (uint32_t)BLOOM_FLAG_SATURATE : 0u) |
                        ((given & G_BAKED) ? (uint32_t)BLOOM_FLAG_BAKED : 0u) |
@@ -422,7 +436,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     if (!o->aux) {
         bloom_config_t t;
         bloom_info_t info;
-        cam_opts_config(o, 64, 48, &t);
+        cam_opts_config(o, o->width, o->height, &t);
         t.aux_fmt = BLOOM_AUX_NONE;
         const bloom_status_t st = bloom_query(&t, &info);
         if (st == BLOOM_E_AUX)
@@ -439,7 +453,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     {
         bloom_config_t t;
         bloom_info_t info;
-        cam_opts_config(o, 64, 48, &t);
+        cam_opts_config(o, o->width, o->height, &t);
         const bloom_status_t st = bloom_query(&t, &info);
         if (st != BLOOM_OK)
             return fail(err, errlen, "--preset %s with these options: %s", pn, bloom_status_str(st));

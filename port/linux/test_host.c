@@ -457,15 +457,23 @@ static void test_presets(void)
             continue;
         }
         /* available: runs as it is, or says which plane it lacks */
-        bloom_config_t d;
-        bloom_config_default(&d, 64, 48);
+        bloom_config_t d; /* at the default --size: some defaults depend on the size */
+        bloom_config_default(&d, 640, 480);
         bloom_config_preset(&d, (bloom_preset_t)p);
         CHECKF(r == 0 || (strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "--aux FILE")),
               "--preset %s: %d '%s'", name, r, err);
-        if (r == 0)
+        if (r == 0) {
             CHECKF(o.preset == (bloom_preset_t)p && o.levels == d.levels && o.threshold == d.threshold &&
                       o.intensity == d.intensity && !memcmp(&o.params, &d.p, sizeof d.p),
                   "--preset %s takes the preset's defaults", name);
+            /* at run time, the defaults of the capture's own size */
+            bloom_config_t c, e;
+            bloom_config_default(&e, 40, 6);
+            bloom_config_preset(&e, (bloom_preset_t)p);
+            cam_opts_config(&o, 40, 6, &c);
+            CHECKF(c.preset == e.preset && !memcmp(&c.p, &e.p, sizeof e.p) && c.flags == e.flags,
+                  "--preset %s: the configuration for a 40x6 capture", name);
+        }
     }
     CHECKF(parse(&o, err, "--passes", "3", NULL, NULL) == -1 &&
               strstr(err, "--passes applies to the xna preset, not unity"),
@@ -496,7 +504,8 @@ static void test_presets(void)
         bloom_config_t c;
         cam_opts_config(&o, 64, 48, &c);
         CHECK(c.preset == BLOOM_PRESET_ATTENUATION && c.p.attenuation == BLOOM_Q16(0.5) &&
-              c.threshold == BLOOM_Q16(0.7) && c.aux_fmt == BLOOM_AUX_U8);
+              c.p.max_reduction == BLOOM_Q16(0.125) && c.threshold == BLOOM_Q16(0.7) &&
+              c.aux_fmt == BLOOM_AUX_U8);
     }
 #endif
 
