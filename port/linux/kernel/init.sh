@@ -66,6 +66,7 @@ if [ "$ATT" = 1 ]; then
     run att-16 yuyv "$fb16" --preset attenuation --aux /depth.pgm
     run att-size yuyv "$fb16" --preset attenuation --aux /depth240.pgm
 fi
+for p in $PRESETS; do run "preset-$p" yuyv "$fb16" --preset "$p"; done
 # speed under emulation, 640x480 YUYV to the 32 bpp screen
 /bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q > /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt

@@ -153,14 +153,18 @@ cc -std=c11 -O2 -D_POSIX_C_SOURCE=200809L "$here/fbcmp.c" -o "$work/fbcmp" || ex
 # the attenuation preset with a depth plane (--aux): vivid captures 320x180
 # when asked for 320x240, so the plane of the capture's size is 320x180 (16-bit)
 # and a 320x240 one must be refused naming both sizes
+# and every other preset the build carries (those that need no plane), each
+# checked against bloom_sim like the default
 att=0
+presets=$("$B/bloom_sim" --help | sed -n 's/^  This build has: \(.*\)\.$/\1/p' | tr -d ',' | tr ' ' '\n' |
+    grep -v '^unity$' | grep -v '^attenuation$' | tr '\n' ' ')
 if "$B/bloom_sim" --help | grep -q '^  This build has:.*attenuation'; then
     att=1
     cc -std=c11 -O2 "$here/mkdepth.c" -o "$work/mkdepth" || exit 1
     "$work/mkdepth" 320 180 65535 "$work/root/depth.pgm" && "$work/mkdepth" 320 240 255 "$work/root/depth240.pgm" || exit 1
 fi
 gpio_on=1; [ -z "$gpio_off" ] || gpio_on=0
-{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB'";
+{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB'";
   sed 1d "$here/init.sh"; } > "$work/root/init"
 chmod +x "$work/root/init" "$work/root/bin/busybox"
 (cd "$work/root" && find . | "$bb" cpio -o -H newc 2>/dev/null) > "$work/initrd.cpio" || exit 1
@@ -220,6 +224,9 @@ if [ "$att" = 1 ]; then
 else
     echo "  (attenuation preset cases left out: compiled out of this build)"
 fi
+for p in $presets; do
+    frame_check "preset-$p" rgb565 $P --preset "$p"
+done
 # bochs' fbdev has two pages (drm_fbdev_overalloc=200): the 32 bpp cases must
 # have flipped with FBIOPAN_DISPLAY (the second page's offset seen in /sys
 # while running) and put the pan back to 0,0; their pictures are checked above
