@@ -14,7 +14,7 @@ dual-vs-gauss: $(B)/dual_vs_gauss
 	$(B)/dual_vs_gauss $(DVG_ARGS)
 	@if command -v valgrind >/dev/null 2>&1; then \
 	  for p in arm gauss default; do \
-	    n=$$(valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect=run_$$p \
+	    n=$$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "--toggle-collect=run_$$p*" \
 	      $(B)/dual_vs_gauss --once $$p $(DVG_ARGS) 2>&1 | sed -n 's/.*Collected : *\([0-9]*\).*/\1/p'); \
 	    echo "$$p $$n"; done | awk '{n[$$1] = $$2; printf "callgrind %-8s %14.0f instructions\n", $$1, $$2} \
 	    END { if (n["arm"] > 0) printf "instruction ratio Gaussian / arm: %.1f x (arm / default preset: %.2f)\n", \

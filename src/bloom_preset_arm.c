@@ -248,7 +248,10 @@ static inline uint32_t sat32(uint64_t v)
 }
 
 /* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
- * v_c = S_c + ((g_c * B + 32768) >> 16), encoded. */
+ * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels;
+ * a chunk whose B is all zero is the source decoded and encoded again
+ * (bloom_row_copy_c: the bytes themselves where that is the identity). */
+#define ARM_CHUNK 64
 static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
@@ -256,28 +259,34 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     uint32_t *b = bg_scratch(g, 2), *v = bg_scratch(g, 3);
     up_row(g, (const uint32_t *)in[1][0], (const uint32_t *)in[1][1], (const uint32_t *)in[1][2], r & 1, b, w,
            g->node[n->in[1].node].w);
-    uint32_t any = 0;
-    for (int x = 0; x < w; x++)
-        any |= b[x];
     const uint8_t *src = (const uint8_t *)in[0][0];
-    if (!any) { /* decode + encode of the source (or zeros in the debug view) */
-        bloom_row_copy_c(src, (uint8_t *)dst, w, &g->out);
-        return;
-    }
+    uint8_t *out = (uint8_t *)dst;
+    const size_t ibpp = (size_t)g->src_bpp, obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
     uint32_t f[3];
     tint_factors(g, f);
-    if (g->out.debug)
-        memset(v, 0, (size_t)w * 3u * sizeof *v);
-    else
-        bloom_decode_row(g->out.in_fmt, g->out.linear, src, v, w);
-    for (int x = 0; x < w; x++) {
-        const uint64_t bx = b[x];
-        uint32_t *p = v + 3 * x;
-        p[0] = sat32(((f[0] * bx + 32768u) >> 16) + p[0]);
-        p[1] = sat32(((f[1] * bx + 32768u) >> 16) + p[1]);
-        p[2] = sat32(((f[2] * bx + 32768u) >> 16) + p[2]);
+    for (int x0 = 0; x0 < w; x0 += ARM_CHUNK) {
+        const int cn = imin(ARM_CHUNK, w - x0);
+        const uint32_t *bc = b + x0;
+        uint32_t any = 0;
+        for (int x = 0; x < cn; x++)
+            any |= bc[x];
+        if (!any) {
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+            continue;
+        }
+        if (g->out.debug)
+            memset(v, 0, (size_t)cn * 3u * sizeof *v);
+        else
+            bloom_decode_row(g->out.in_fmt, g->out.linear, src + (size_t)x0 * ibpp, v, cn);
+        for (int x = 0; x < cn; x++) {
+            const uint64_t bx = bc[x];
+            uint32_t *p = v + 3 * x;
+            p[0] = sat32(((f[0] * bx + 32768u) >> 16) + p[0]);
+            p[1] = sat32(((f[1] * bx + 32768u) >> 16) + p[1]);
+            p[2] = sat32(((f[2] * bx + 32768u) >> 16) + p[2]);
+        }
+        bloom_encode_row(g->out.out_fmt, g->out.linear, v, out + (size_t)x0 * obpp, cn);
     }
-    bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst, w);
 }
 
 /* Baked output. Input 0: the source row; input 1: the map row.
