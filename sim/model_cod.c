@@ -18,9 +18,9 @@ const bloom_cod_bevy_t bloom_cod_natural = {0.15, 0.7, 0.95, 1.0, 0};
 const bloom_cod_bevy_t bloom_cod_old_school = {0.05, 0.7, 0.95, 1.0, 1};
 const bloom_cod_bevy_t bloom_cod_screen_blur = {1.0, 0.0, 0.0, 1.0 / 3.0, 0};
 
-double bloom_cod_blend_factor(const bloom_cod_bevy_t *s, int mip, int max_mip)
+/* Bevy's curve at x = mip / max_mip in [0, 1]. */
+static double blend_at(const bloom_cod_bevy_t *s, double x)
 {
-    const double x = max_mip > 0 ? (double)mip / (double)max_mip : 0.0;
     double lf = (1.0 - pow(1.0 - x, 1.0 / (1.0 - s->low_frequency_boost_curvature))) * s->low_frequency_boost;
     double hp = (x - s->high_pass_frequency) / s->high_pass_frequency;
     hp = 1.0 - (hp < 0.0 ? 0.0 : hp > 1.0 ? 1.0 : hp);
@@ -28,10 +28,15 @@ double bloom_cod_blend_factor(const bloom_cod_bevy_t *s, int mip, int max_mip)
     return (s->intensity + lf) * hp;
 }
 
+double bloom_cod_blend_factor(const bloom_cod_bevy_t *s, int mip, int max_mip)
+{
+    return blend_at(s, max_mip > 0 ? (double)mip / (double)max_mip : 0.0);
+}
+
 void bloom_cod_weights(const bloom_cod_bevy_t *s, int L, uint32_t w[BLOOM_MAX_LEVELS])
 {
     for (int k = 0; k < BLOOM_MAX_LEVELS; k++) {
-        double c = k < L ? bloom_cod_blend_factor(s, k, L - 1) : 0.0;
+        double c = k < L ? bloom_cod_blend_factor(s, k, L - 1) : blend_at(s, 1.0);
         c = c < 0.0 || c != c ? 0.0 : c > 1.0 ? 1.0 : c;
         w[k] = (uint32_t)floor(c * 65536.0 + 0.5);
     }

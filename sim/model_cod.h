@@ -25,8 +25,11 @@ extern const bloom_cod_bevy_t bloom_cod_screen_blur;  /* 1.0, 0, 0, 1/3 */
  * mip / max_mip as 0 (a one-level pyramid). */
 double bloom_cod_blend_factor(const bloom_cod_bevy_t *s, int mip, int max_mip);
 /* The level weights c_k = compute_blend_factor(k, L - 1), k = 0 .. L-1, as
- * Q16 rounded to nearest and clamped to [0, 1.0] (the preset's range);
- * w[k] = 0 for k >= L. */
+ * Q16 rounded to nearest and clamped to [0, 1.0] (the preset's range).
+ * w[k] for k >= L (unused by an engine of L levels) is the curve's value at
+ * the lowest frequency (mip = max_mip), so that a caller who deepens the
+ * pyramid without recomputing the weights keeps blending the deeper levels
+ * in instead of cutting the glow off at level L. */
 void bloom_cod_weights(const bloom_cod_bevy_t *s, int L, uint32_t w[BLOOM_MAX_LEVELS]);
 
 /* bloom_model_cod with the Karis average on (1, the preset) or off (0: the
