@@ -349,8 +349,8 @@ static void weights_zero(void)
  * in RGBQ16, near it with variation so that the Karis weights differ), the
  * deepest pyramid 1024 x 1024 allows (9 levels), every weight 1.0, additive
  * (U up to 9 M), the bloom term seen through a tiny tint so that the output
- * does not saturate; and energy-conserving. Bit-exact with the bit-true
- * model, which computes the sums exactly. */
+ * does not saturate; and energy-conserving at 512 x 512 (8 levels).
+ * Bit-exact with the bit-true model, which computes the sums exactly. */
 static void worst_case(void)
 {
     for (int mode = 0; mode < 2; mode++) {
