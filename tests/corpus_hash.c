@@ -1,7 +1,8 @@
 /* corpus_hash: the engine over the whole test corpus (the random grid of
  * test_conformance.c, widened to all 16 format pairs; test_extreme.c's
  * frames; the real images of tests/data), one line per run: "<config> <FNV-1a 64 of the output>",
- * then a total. Integers only, so the listing must be byte-identical on
+ * then a total; after them every other preset over a grid and two images.
+ * Integers only, so the listing must be byte-identical on
  * every architecture: tests/cross.sh diffs the x86-64 listing against
  * aarch64 and armhf builds run under qemu-user.
  *
@@ -82,8 +83,10 @@ static int frame_clean(const frame_t *f)
     return frame_intact(f);
 }
 
-static uint64_t total = FNV_OFFSET;
+static uint64_t total = FNV_OFFSET, total_default = FNV_OFFSET;
 static int runs, errors;
+static const void *aux_plane; /* the aux plane of the next runs, or NULL */
+static ptrdiff_t aux_stride;
 
 /* One run: c over src; prints the line and folds it into the total. */
 static void run(const char *what, const bloom_config_t *c, const frame_t *src)
@@ -103,7 +106,9 @@ static void run(const char *what, const bloom_config_t *c, const frame_t *src)
                       info.threshold_q, info.knee_q, info.intensity_q);
         engine_t e = engine_new(c);
         frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
-        st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride);
+        st = c->aux_fmt != BLOOM_AUX_NONE ? bloom_set_aux(e.b, aux_plane, aux_stride) : BLOOM_OK;
+        if (st == BLOOM_OK)
+            st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride);
         if (st != BLOOM_OK) {
             snprintf(line + n, sizeof line - (size_t)n, " process: %s", bloom_status_str(st));
             errors++;
@@ -119,6 +124,10 @@ static void run(const char *what, const bloom_config_t *c, const frame_t *src)
     puts(line);
     total = fnv(total, line, strlen(line));
     total = fnv(total, "\n", 1);
+    if (c->preset == BLOOM_PRESET_UNITY) {
+        total_default = fnv(total_default, line, strlen(line));
+        total_default = fnv(total_default, "\n", 1);
+    }
     runs++;
 }
 
@@ -291,12 +300,92 @@ static void image_corpus(const char *dir)
     }
 }
 
+/* Every other preset: defaults and each preset flag over a grid of sizes,
+ * depths and format pairs, then the real images; a deterministic aux plane
+ * (8- and 16-bit) where the preset reads one. */
+static void preset_corpus(const char *dir)
+{
+    static const int sizes[][2] = {{1, 1}, {3, 5}, {17, 9}, {64, 48}, {101, 67}};
+    static const bloom_format_t pairs[][2] = {{BLOOM_FMT_RGB888, BLOOM_FMT_RGB888},
+                                              {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888},
+                                              {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16},
+                                              {BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565}};
+    static const uint32_t variants[] = {0, BLOOM_FLAG_SATURATE, BLOOM_FLAG_BAKED, BLOOM_FLAG_ADDITIVE,
+                                        BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW};
+    char what[160];
+    for (int p = 1; p < BLOOM_PRESET_COUNT; p++) {
+        if (!bloom_preset_available((bloom_preset_t)p))
+            continue;
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+            const int w = sizes[s][0], h = sizes[s][1];
+            uint16_t *aux = (uint16_t *)xmalloc((size_t)w * (size_t)h * 2u);
+            for (int i = 0; i < w * h; i++)
+                aux[i] = (uint16_t)((uint32_t)i * 40503u + (uint32_t)(i / w) * 977u);
+            for (size_t v = 0; v < sizeof variants / sizeof variants[0]; v++)
+                for (size_t f = 0; f < sizeof pairs / sizeof pairs[0]; f++)
+                    for (int levels = 1; levels <= 5; levels += 2) {
+                        bloom_config_t c;
+                        bloom_config_default(&c, w, h);
+                        bloom_config_preset(&c, (bloom_preset_t)p);
+                        c.levels = levels;
+                        c.in_fmt = pairs[f][0];
+                        c.out_fmt = pairs[f][1];
+                        c.flags |= variants[v];
+                        if (c.aux_fmt != BLOOM_AUX_NONE || (variants[v] & BLOOM_FLAG_BAKED))
+                            c.aux_fmt = (f & 1) ? BLOOM_AUX_U16 : BLOOM_AUX_U8;
+                        bloom_info_t info;
+                        if (bloom_query(&c, &info) != BLOOM_OK)
+                            continue; /* a flag of another preset */
+                        aux_plane = aux;
+                        aux_stride = (ptrdiff_t)w * (c.aux_fmt == BLOOM_AUX_U16 ? 2 : 1);
+                        frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(p * 1000 + (int)s * 50 + (int)f * 7 + levels));
+                        snprintf(what, sizeof what, "preset %s flags+%" PRIx32, bloom_preset_name((bloom_preset_t)p),
+                                 variants[v]);
+                        run(what, &c, &src);
+                        frame_free(&src);
+                    }
+            free(aux);
+        }
+        static const char *const names[] = {"rocket_floodlights.ppm", "hall_lamps.pfm"};
+        for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+            char path[1024], err[512];
+            snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+            img_t im;
+            if (img_read(path, &im, err, sizeof err) != 0) {
+                printf("image %s: %s\n", names[i], err);
+                errors++;
+                continue;
+            }
+            frame_t src = frame_from_img(&im);
+            bloom_config_t c;
+            bloom_config_default(&c, im.width, im.height);
+            bloom_config_preset(&c, (bloom_preset_t)p);
+            c.in_fmt = src.fmt;
+            uint8_t *aux = (uint8_t *)xmalloc((size_t)im.width * (size_t)im.height);
+            for (int y = 0; y < im.height; y++)
+                memset(aux + (size_t)y * (size_t)im.width, 255 - y * 255 / im.height, (size_t)im.width);
+            aux_plane = aux;
+            aux_stride = im.width;
+            if (c.aux_fmt != BLOOM_AUX_NONE)
+                c.aux_fmt = BLOOM_AUX_U8;
+            snprintf(what, sizeof what, "preset %s image %s", bloom_preset_name((bloom_preset_t)p), names[i]);
+            run(what, &c, &src);
+            free(aux);
+            frame_free(&src);
+            img_free(&im);
+        }
+    }
+    aux_plane = NULL;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : getenv("BLOOM_DATA_DIR");
     random_corpus();
     extreme_corpus();
     image_corpus(dir && *dir ? dir : "tests/data");
-    printf("total %d runs, %d errors, hash %016" PRIx64 "\n", runs, errors, total);
+    preset_corpus(dir && *dir ? dir : "tests/data");
+    printf("total %d runs, %d errors, hash %016" PRIx64 " (default preset alone: %016" PRIx64 ")\n", runs,
+           errors, total, total_default);
     return errors ? 1 : 0;
 }
