@@ -308,6 +308,61 @@ static uint8_t max_bytes(const uint8_t *p, size_t n)
     return m;
 }
 
+#if !BLOOM_SMALL && BLOOM_USE_XRGB8888
+/* The same over XRGB8888 pixels, X bytes left out (masked to 0). */
+static uint8_t max_bytes_xrgb(const uint8_t *p, size_t n)
+{
+    static const uint8_t msk[32] = {255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0,
+                                    255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0};
+    uint8_t lane[32] = {0}, m = 0;
+    size_t i = 0;
+    for (; i + 32 <= n; i += 32)
+        for (int j = 0; j < 32; j++) {
+            const uint8_t v = (uint8_t)(p[i + (size_t)j] & msk[j]);
+            lane[j] = v > lane[j] ? v : lane[j];
+        }
+    for (int j = 0; j < 32; j++)
+        m = lane[j] > m ? lane[j] : m;
+    for (; i < n; i++)
+        if ((i & 3u) != 3u)
+            m = p[i] > m ? p[i] : m;
+    return m;
+}
+#endif
+
+#if !BLOOM_SMALL && BLOOM_USE_RGB565
+/* Largest 5/6/5 fields of n RGB565 pixels, in 16 lanes per field. */
+static void max_565(const uint8_t *p, int n, uint32_t *r, uint32_t *g, uint32_t *b)
+{
+    uint16_t lr[16] = {0}, lg[16] = {0}, lb[16] = {0};
+    int i = 0;
+    for (; i + 16 <= n; i += 16)
+        for (int j = 0; j < 16; j++) {
+            const uint16_t w = (uint16_t)(p[2 * (i + j)] | (p[2 * (i + j) + 1] << 8));
+            const uint16_t wr = (uint16_t)(w >> 11), wg = (uint16_t)(w & 0x07E0u), wb = (uint16_t)(w & 31u);
+            lr[j] = wr > lr[j] ? wr : lr[j];
+            lg[j] = wg > lg[j] ? wg : lg[j];
+            lb[j] = wb > lb[j] ? wb : lb[j];
+        }
+    uint32_t mr = 0, mg = 0, mb = 0;
+    for (int j = 0; j < 16; j++) {
+        mr = lr[j] > mr ? lr[j] : mr;
+        mg = lg[j] > mg ? lg[j] : mg;
+        mb = lb[j] > mb ? lb[j] : mb;
+    }
+    for (; i < n; i++) {
+        const uint32_t w = (uint32_t)p[2 * i] | ((uint32_t)p[2 * i + 1] << 8);
+        const uint32_t wr = w >> 11, wg = w & 0x07E0u, wb = w & 31u;
+        mr = wr > mr ? wr : mr;
+        mg = wg > mg ? wg : mg;
+        mb = wb > mb ? wb : mb;
+    }
+    *r = mr;
+    *g = mg >> 5;
+    *b = mb;
+}
+#endif
+
 /* Largest channel codes of a row against the dark codes. */
 bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
 {
@@ -315,6 +370,9 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
 #if BLOOM_USE_RGB565
     case BLOOM_FMT_RGB565: {
         uint32_t r = 0, g = 0, b = 0;
+#if !BLOOM_SMALL
+        max_565(p, n, &r, &g, &b);
+#else
         for (int i = 0; i < n; i++) {
             const uint32_t w = (uint32_t)p[2 * i] | ((uint32_t)p[2 * i + 1] << 8);
             const uint32_t wr = w >> 11, wg = (w >> 5) & 63u, wb = w & 31u;
@@ -322,6 +380,7 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
             g = wg > g ? wg : g;
             b = wb > b ? wb : b;
         }
+#endif
         return r <= d->c5 && g <= d->c6 && b <= d->c5;
     }
 #endif
@@ -338,6 +397,9 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
 #endif
 #if BLOOM_USE_XRGB8888
     case BLOOM_FMT_XRGB8888: {
+#if !BLOOM_SMALL
+        return max_bytes_xrgb(p, 4u * (size_t)n) <= d->c8;
+#else
         if (max_bytes(p, 4u * (size_t)n) <= d->c8)
             return true; /* X bytes included: a bright X only costs the exact test */
         uint8_t m = 0;
@@ -347,6 +409,7 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
             m = e > m ? e : m;
         }
         return m <= d->c8;
+#endif
     }
 #endif
     default:

@@ -238,6 +238,21 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
     const uint32_t cut = kn->t > kn->k ? kn->t - kn->k : 0u;
     for (int x = 0; x < w; x++) {
         uint32_t *p = row + 3 * x;
+#if !BLOOM_SMALL
+        if ((x & 3) == 0 && x + 4 <= w) {
+            /* Four pixels at once: the OR of their samples bounds every
+             * sample from above, so OR <= cut means all four are zeroed. */
+            uint32_t o = 0;
+            for (int i = 0; i < 12; i++)
+                o |= p[i];
+            if (o <= cut) {
+                for (int i = 0; i < 12; i++)
+                    p[i] = 0;
+                x += 3;
+                continue;
+            }
+        }
+#endif
         uint32_t bmax = p[0] > p[1] ? p[0] : p[1];
         bmax = bmax > p[2] ? bmax : p[2];
         if (bmax <= cut || bmax == 0) {
