@@ -250,7 +250,8 @@ static inline uint32_t sat32(uint64_t v)
 /* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
  * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels;
  * a chunk whose B is all zero is the source decoded and encoded again
- * (bloom_row_copy_c: the bytes themselves where that is the identity). */
+ * (bloom_row_copy_c: the bytes themselves where that is the identity),
+ * unless BLOOM_FLAG_NO_SKIP (same bits either way). */
 #define ARM_CHUNK 64
 static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
@@ -262,12 +263,13 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
     const size_t ibpp = (size_t)g->src_bpp, obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
+    const bool skip = !(g->cfg.flags & BLOOM_FLAG_NO_SKIP);
     uint32_t f[3];
     tint_factors(g, f);
     for (int x0 = 0; x0 < w; x0 += ARM_CHUNK) {
         const int cn = imin(ARM_CHUNK, w - x0);
         const uint32_t *bc = b + x0;
-        uint32_t any = 0;
+        uint32_t any = !skip;
         for (int x = 0; x < cn; x++)
             any |= bc[x];
         if (!any) {

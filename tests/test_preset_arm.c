@@ -99,6 +99,8 @@ static void grid_bloom(void)
                     c.flags |= BLOOM_FLAG_DEBUG_VIEW;
                 if (d & 1)
                     c.flags |= BLOOM_FLAG_COPY_SOURCE;
+                if ((s + f) % 4 == 3)
+                    c.flags |= BLOOM_FLAG_NO_SKIP;
                 frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(s * 101 + d * 13 + f * 3 + 1));
                 ptrdiff_t as = 0;
                 void *aux = c.aux_fmt ? aux_plane(c.width, c.height, c.aux_fmt, (uint32_t)(s + f), &as) : NULL;
@@ -278,6 +280,12 @@ static void masks_and_maps(void)
         o = run_engine_aux(&c, &src, m16, 90);
         CHECKF(frame_equal(&o, &ref), "full mask (U16) = no mask");
         frame_free(&o);
+        /* the zero-chunk shortcut changes no bit */
+        bloom_config_t ns = n;
+        ns.flags |= BLOOM_FLAG_NO_SKIP;
+        frame_t o2 = run_engine(&ns, &src);
+        CHECKF(frame_equal(&o2, &ref), "BLOOM_FLAG_NO_SKIP gives the same bytes");
+        frame_free(&o2);
         /* baked, map of zeros, any strength */
         c.flags |= BLOOM_FLAG_BAKED;
         c.p.strength = 16u * BLOOM_ONE;
