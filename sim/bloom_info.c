@@ -36,5 +36,26 @@ int main(void)
                info.workspace_bytes, 100.0 * (double)info.workspace_bytes / (3.0 * c.width * c.height),
                3.0 * c.width * c.height / (double)info.workspace_bytes, info.latency_rows);
     }
+    /* Every preset at its own defaults (levels, aux plane), RGB888 in and
+     * out, source rows kept by pointer; the row memory by level. */
+    printf("\n| preset | levels | 1920x1080 workspace | of one frame | latency | 320x240 workspace | latency |\n"
+           "|---|---|---|---|---|---|---|\n");
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        if (!bloom_preset_available((bloom_preset_t)p))
+            continue;
+        bloom_info_t big, small;
+        bloom_config_t c;
+        bloom_config_default(&c, 1920, 1080);
+        bloom_config_preset(&c, (bloom_preset_t)p);
+        if (bloom_query(&c, &big) != BLOOM_OK)
+            return 1;
+        bloom_config_default(&c, 320, 240);
+        bloom_config_preset(&c, (bloom_preset_t)p);
+        if (bloom_query(&c, &small) != BLOOM_OK)
+            return 1;
+        printf("| %s | %d | %zu | 1/%.0f | %d | %zu | %d |\n", bloom_preset_name((bloom_preset_t)p), big.levels,
+               big.workspace_bytes, 3.0 * 1920 * 1080 / (double)big.workspace_bytes, big.latency_rows,
+               small.workspace_bytes, small.latency_rows);
+    }
     return 0;
 }
