@@ -344,14 +344,22 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
+/* Scratch: one-channel rows of at most w0 + 2 samples (luminance, column
+ * sums, the up filter's padded rows), or the output's 3-channel chunks of
+ * ARM_CHUNK (bloom) and 256 (baked) pixels. */
+#define ARM_SCRATCH_MIN (3u * 256u + 16u)
+
 static bloom_status_t build(bloom_graph_t *g)
 {
     const int L = g->L;
+    const size_t one = (size_t)g->w[0] + 16u;
+    g->scratch_len = one > ARM_SCRATCH_MIN ? one : ARM_SCRATCH_MIN;
     if (g->cfg.flags & BLOOM_FLAG_BAKED) {
         const int o = bg_node(g, fn_out_baked, g->w[0], g->h[0], 3, 0);
         bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
         bg_input(g, o, BG_AUX, BG_SAME, 0, 0);
         g->out_node = o;
+        g->scratch_rows = 1;
         return BLOOM_OK;
     }
     int d = bg_node(g, fn_d1, g->w[1], g->h[1], 1, 1);
@@ -373,6 +381,7 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, u, BG_UP, -1, 1);
     g->out_node = o;
+    g->scratch_rows = 4;
     return BLOOM_OK;
 }
 

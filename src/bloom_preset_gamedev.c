@@ -352,6 +352,7 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, U, BG_UP, -1, 1);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     g->out_node = o;
+    g->scratch_rows = 2; /* the Gaussian's vertical pass, the output's bloom row */
     return BLOOM_OK;
 }
 

@@ -223,6 +223,7 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, up, BG_UP, -1, 1);
     g->out_node = o;
+    g->scratch_rows = 1; /* fn_kawase's column sums */
     return BLOOM_OK;
 }
 
