@@ -369,11 +369,15 @@ void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t
     }
 #if BLOOM_USE_XRGB8888 && !BLOOM_SMALL
     if (!o->debug && o->in_fmt == BLOOM_FMT_XRGB8888 && o->out_fmt == BLOOM_FMT_XRGB8888) {
-        for (int x = 0; x < w; x++) { /* the same, with X written as 0xFF */
-            dst[4 * x] = src[4 * x];
-            dst[4 * x + 1] = src[4 * x + 1];
-            dst[4 * x + 2] = src[4 * x + 2];
-            dst[4 * x + 3] = 0xFF;
+        /* the same, with X written as 0xFF: a word OR, whatever the byte order */
+        static const uint8_t xb[4] = {0, 0, 0, 0xFF};
+        uint32_t xm;
+        memcpy(&xm, xb, 4);
+        for (int x = 0; x < w; x++) {
+            uint32_t v;
+            memcpy(&v, src + 4 * x, 4);
+            v |= xm;
+            memcpy(dst + 4 * x, &v, 4);
         }
         return;
     }

@@ -127,6 +127,53 @@ static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add,
     }
 }
 
+/* The same pairs when every u value read is below 2^29: then
+ * 3a + 4b + c + 4 < 2^32 and the sums need no split (same bits). */
+static void tent_pairs_small(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                             int ma, int np)
+{
+    const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
+    const VT k4 = DUP(4u);
+    size_t i = (size_t)(ma - 1) * 3u;
+#define TENT3S(a_, b_, c_) SHR(ADD(ADD(ADD((a_), SHL((a_), 1)), SHL((b_), 2)), ADD((c_), k4)), 3)
+    VT vp = TENT3S(LD4(a + i), LD4(b + i), LD4(c + i));
+    i += 3u;
+    VT vc = TENT3S(LD4(a + i), LD4(b + i), LD4(c + i));
+    for (int j = 0; j < np; j++, dst += 6) {
+        i += 3u;
+        const VT vn = TENT3S(LD4(a + i), LD4(b + i), LD4(c + i));
+        const VT q = ADD(ADD(SHL(vc, 2), k4), ADD(vp, vn));
+        const VT e = SHR(ADD(q, SHL(vp, 1)), 3), o = SHR(ADD(q, SHL(vn, 1)), 3);
+        VT lo4 = PACK_LO(e, o), hi2 = PACK_HI(o);
+        if (add) {
+            lo4 = ADD(lo4, LD4(add));
+            hi2 = ADD(hi2, LD2(add + 4));
+            add += 6;
+        }
+        ST4(dst, lo4);
+        ST2(dst + 4, hi2);
+        vp = vc;
+        vc = vn;
+    }
+#undef TENT3S
+}
+
+/* Whether samples i0 .. i1-1 (i1 - i0 >= 4) of the three rows are all
+ * below 2^29 (the OR of them all, shifted). */
+static int tent_small_ok(const uint32_t *const u[3], size_t i0, size_t i1)
+{
+    VT any = DUP(0u);
+    for (int r = 0; r < 3; r++) {
+        const uint32_t *p = u[r];
+        size_t i = i0;
+        for (; i + 4 <= i1; i += 4)
+            any = OR(any, LD4(p + i));
+        if (i < i1)
+            any = OR(any, LD4(p + i1 - 4)); /* the last four again */
+    }
+    return (OR_LANES(any) >> 29) == 0;
+}
+
 static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
                      int x0, int n, int sw)
 {
@@ -143,8 +190,13 @@ static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, u
     const int xa = 2 * ma, xb = 2 * (ma + np);
     if (xa > x0)
         bloom_row_tent_c(u, odd, add, dst, x0, xa - x0, sw);
-    tent_pairs(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma,
-               np);
+    /* the pairs read columns ma - 1 .. ma + np and one sample past them */
+    if (tent_small_ok(u, (size_t)(ma - 1) * 3u, (size_t)(ma + np) * 3u + 4u))
+        tent_pairs_small(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u,
+                         ma, np);
+    else
+        tent_pairs(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma,
+                   np);
     if (end > xb)
         bloom_row_tent_c(u, odd, add ? add + (size_t)(xb - x0) * 3u : NULL,
                          dst + (size_t)(xb - x0) * 3u, xb, end - xb, sw);
@@ -163,8 +215,14 @@ static void vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
         const VT s = ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4));
         ST4(dst + i, SHR(s, 3));
     }
-    if (i < n)
+    if (i < n && n >= 4) { /* the last four again (dst is not an input) */
+        i = n - 4;
+        const VT va = LD4(a + i);
+        const VT s = ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4));
+        ST4(dst + i, SHR(s, 3));
+    } else if (i < n) {
         bloom_row_vtent_c(a + i, b + i, c + i, dst + i, n - i);
+    }
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */

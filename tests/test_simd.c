@@ -131,21 +131,22 @@ static void test_tent(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
     int bad = 0, cases = 0;
     for (int wi = 0; wi < NWIDTHS; wi++) {
         const int sw = widths[wi];
-        for (int mode = 0; mode < 4; mode++)
+        for (int mode = 0; mode < 6; mode++)
             for (int off = 0; off < 4; off++) {
                 row_t u[3];
                 const uint32_t *up[3];
                 for (int i = 0; i < 3; i++) {
                     u[i] = row_new((size_t)sw * 3u, (off + i + 1) & 3, 0);
-                    /* U sums: anything below 2^32 */
-                    fill(u[i].p, (size_t)sw * 3u, mode == 3 ? 0 : mode, 0xFFFFFFFFu);
+                    /* U sums: anything below 2^32; modes 3..5 below 2^29
+                     * (the SIMD kernels' path without the split) */
+                    fill(u[i].p, (size_t)sw * 3u, mode % 3, mode < 3 ? 0xFFFFFFFFu : (1u << 29) - 1u);
                     up[i] = u[i].p;
                 }
                 for (int w = 2 * sw - 1; w <= 2 * sw; w++) {
                     if (w < 1)
                         continue;
                     uint32_t *addsrc = (uint32_t *)xmalloc((size_t)w * 3u * sizeof(uint32_t));
-                    fill(addsrc, (size_t)w * 3u, mode, mode == 3 ? 0xFFFFFFFFu : SMAX);
+                    fill(addsrc, (size_t)w * 3u, mode % 4, mode == 3 ? 0xFFFFFFFFu : SMAX);
                     for (int odd = 0; odd < 2; odd++)
                         for (int addmode = 0; addmode < 3; addmode++) {
                             /* the whole row, the output kernel's chunks, random ranges */
