@@ -86,12 +86,12 @@ void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t int
 /* Flat kernels of the fast output path (bloom_row_out_k), on n samples in
  * 32-bit arithmetic that wraps: exact while the values stay below 2^29,
  * which holds for the default pipeline on 8/6/5-bit input (U <= 16 * 2^F).
- * vtent: dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3.
+ * vtent: dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3; returns the OR of every dst[i].
  * htent_eo: e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3 and
  *           o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3 (reads v[-3 .. n+2]);
  *           returns the OR of every e[i] and o[i] (0: the bloom is zero there).
  * scale: x[i] = low 32 bits of (I x[i] + 32768) >> 16. */
-void bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
 
@@ -101,7 +101,7 @@ typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, 
 typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add,
                               uint32_t *dst, int x0, int n, int sw);
 typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-typedef void (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
 typedef struct {
@@ -131,7 +131,7 @@ void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
 void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-void bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
@@ -140,7 +140,7 @@ void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
 void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-void bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);
 #endif

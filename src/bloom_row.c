@@ -422,10 +422,14 @@ void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, ui
     }
 }
 
-void bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
-    for (int i = 0; i < n; i++)
+    uint32_t any = 0;
+    for (int i = 0; i < n; i++) {
         dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+        any |= dst[i];
+    }
+    return any;
 }
 
 uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
@@ -468,12 +472,15 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
         const size_t c0 = (size_t)lo * 3u;
         uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
-        k->vtent(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1));
+        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
+        if (!k->vtent(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1))) { /* V = 0: B = 0 here */
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
+            continue;
+        }
         if (m0 == 0)
             memcpy(vb, vb + 3, 3u * sizeof *vb);
         if (m0 + n == sw)
             memcpy(vb + 3 * (n + 1), vb + 3 * n, 3u * sizeof *vb);
-        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
         if (!k->htent_eo(vb + 3, e, od, 3 * n)) { /* B = 0 on this chunk */
             bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
             continue;

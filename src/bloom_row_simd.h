@@ -206,23 +206,28 @@ static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, u
 /* ---- flat kernels of the fast output path --------------------------------- */
 
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3, 32-bit lanes (as the C twin). */
-static void vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+static uint32_t vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
     const VT k4 = DUP(4u);
+    VT any = DUP(0u);
     int i = 0;
     for (; i + 4 <= n; i += 4) {
         const VT va = LD4(a + i);
-        const VT s = ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4));
-        ST4(dst + i, SHR(s, 3));
+        const VT s = SHR(ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4)), 3);
+        ST4(dst + i, s);
+        any = OR(any, s);
     }
+    uint32_t r = OR_LANES(any);
     if (i < n && n >= 4) { /* the last four again (dst is not an input) */
         i = n - 4;
         const VT va = LD4(a + i);
-        const VT s = ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4));
-        ST4(dst + i, SHR(s, 3));
+        const VT s = SHR(ADD(ADD(ADD(va, SHL(va, 1)), SHL(LD4(b + i), 2)), ADD(LD4(c + i), k4)), 3);
+        ST4(dst + i, s);
+        r |= OR_LANES(s);
     } else if (i < n) {
-        bloom_row_vtent_c(a + i, b + i, c + i, dst + i, n - i);
+        r |= bloom_row_vtent_c(a + i, b + i, c + i, dst + i, n - i);
     }
+    return r;
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */

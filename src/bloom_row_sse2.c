@@ -76,9 +76,9 @@ void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 }
 
 #if !BLOOM_SMALL
-void bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
+uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
-    vtent_flat(a, b, c, dst, n);
+    return vtent_flat(a, b, c, dst, n);
 }
 
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
