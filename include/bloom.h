@@ -144,7 +144,8 @@ typedef struct bloom bloom_t;
 void bloom_config_default(bloom_config_t *cfg, int width, int height);
 
 /* Switch cfg to preset p with that preset's default parameters (size,
- * formats and flags other than the preset's own are kept).
+ * formats, the level count and the flags other than the preset's own are
+ * kept; set the level count first: cod's default level weights follow it).
  * Returns BLOOM_E_PRESET for an unknown or compiled-out preset. */
 bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p);
 

@@ -388,12 +388,20 @@ static int config_for(const given_t *g, int w, int h, bloom_config_t *c, char *e
     const bloom_preset_t p = g->preset < 0 ? BLOOM_PRESET_UNITY : (bloom_preset_t)g->preset;
     bloom_config_default(c, w, h);
     c->flags = g->flags;
+    if (g->set & SET_LEVELS) /* before the preset: cod's default weights follow the depth */
+        c->levels = g->v.levels;
+#if BLOOM_USE_COD
+    if (g->set & SET_RADIUS) {
+        const int l = bloom_levels_for_radius((int)g->radius);
+        if (l < 1 || l > BLOOM_MAX_LEVELS)
+            return sim_errf(err, errlen, "--radius %ld: no level count reaches it", g->radius);
+        c->levels = l;
+    }
+#endif
     bloom_status_t st = bloom_config_preset(c, p);
     if (st != BLOOM_OK)
         return sim_errf(err, errlen, "--preset %s: %s (this build has: %s)", bloom_preset_name(p),
                         bloom_status_str(st), sim_presets_available());
-    if (g->set & SET_LEVELS)
-        c->levels = g->v.levels;
     if (g->set & SET_THRESHOLD)
         c->threshold = g->v.threshold;
     if (g->set & SET_KNEE)
@@ -418,14 +426,6 @@ static int config_for(const given_t *g, int w, int h, bloom_config_t *c, char *e
         c->flags |= BLOOM_FLAG_ADDITIVE;
     if (g->set & SET_BAKED)
         c->flags |= BLOOM_FLAG_BAKED;
-#if BLOOM_USE_COD
-    if (g->set & SET_RADIUS) {
-        const int l = bloom_levels_for_radius((int)g->radius);
-        if (l < 1 || l > BLOOM_MAX_LEVELS)
-            return sim_errf(err, errlen, "--radius %ld: no level count reaches it", g->radius);
-        c->levels = l;
-    }
-#endif
     return 0;
 }
 

@@ -212,8 +212,8 @@ static void given_params(const cam_opts_t *o, bloom_preset_params_t *p)
 void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg)
 {
     bloom_config_default(cfg, w, h);
+    cfg->levels = o->levels; /* before the preset: cod's default weights follow the depth */
     bloom_config_preset(cfg, o->preset);
-    cfg->levels = o->levels;
     cfg->threshold = o->threshold;
     cfg->soft_knee = o->knee;
     cfg->intensity = o->intensity;
