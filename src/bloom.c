@@ -74,12 +74,16 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
     case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
     case BLOOM_E_PRESET: return "preset unknown or compiled out";
+    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
+#if BLOOM_USE_GRAPH /* only presets other than the default return these */
     case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
     case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";
     case BLOOM_E_ATTENUATION: return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
     case BLOOM_E_WEIGHT: return "level weight above 1.0 (Q16.16 65536)";
     case BLOOM_E_TINT: return "tint above 1.0 (Q16.16 65536)";
-    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
+#else
+    default: break;
+#endif
     }
     return "unknown status";
 }
@@ -95,66 +99,6 @@ void bloom_config_default(bloom_config_t *cfg, int width, int height)
     cfg->soft_knee = BLOOM_ONE / 2u;
     cfg->intensity = BLOOM_ONE;
     cfg->flags = 0;
-}
-
-static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity", "gamedev", "xna",
-                                                               "attenuation", "arm", "cod"};
-
-const char *bloom_preset_name(bloom_preset_t p)
-{
-    return (unsigned)p < BLOOM_PRESET_COUNT ? preset_names[p] : NULL;
-}
-
-/* No strcmp: a freestanding build links nothing but memcpy/memset. */
-static bool same_name(const char *a, const char *b)
-{
-    while (*a && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
-}
-
-int bloom_preset_from_name(const char *name)
-{
-    for (int i = 0; name && i < BLOOM_PRESET_COUNT; i++)
-        if (same_name(name, preset_names[i]))
-            return i;
-    return -1;
-}
-
-int bloom_preset_available(bloom_preset_t p)
-{
-    if (p == BLOOM_PRESET_UNITY)
-        return 1;
-#if BLOOM_USE_GRAPH
-    return bloom_preset_ops(p) != NULL;
-#else
-    return 0;
-#endif
-}
-
-bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
-{
-    if (!cfg)
-        return BLOOM_E_NULL;
-    if (!bloom_preset_available(p))
-        return BLOOM_E_PRESET;
-    bloom_config_t d;
-    bloom_config_default(&d, cfg->width, cfg->height);
-    d.in_fmt = cfg->in_fmt;
-    d.out_fmt = cfg->out_fmt;
-    if (cfg->levels >= 1 && cfg->levels <= BLOOM_MAX_LEVELS)
-        d.levels = cfg->levels; /* cod's default weights follow the depth */
-    d.flags = cfg->flags & (uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                                      BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD);
-    d.preset = p;
-#if BLOOM_USE_GRAPH
-    if (p != BLOOM_PRESET_UNITY)
-        bloom_preset_ops(p)->defaults(&d);
-#endif
-    *cfg = d;
-    return BLOOM_OK;
 }
 
 #define PRESET_FLAGS (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE)

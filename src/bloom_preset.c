@@ -1,0 +1,65 @@
+/* Presets by name, and their defaults (sim/docs/presets.md). A file of its
+ * own so that a firmware that never names a preset links none of this (its
+ * strings included). */
+
+#include "bloom_graph.h"
+
+static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity", "gamedev", "xna",
+                                                               "attenuation", "arm", "cod"};
+
+const char *bloom_preset_name(bloom_preset_t p)
+{
+    return (unsigned)p < BLOOM_PRESET_COUNT ? preset_names[p] : NULL;
+}
+
+/* No strcmp: a freestanding build links nothing but memcpy/memset. */
+static bool same_name(const char *a, const char *b)
+{
+    while (*a && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+int bloom_preset_from_name(const char *name)
+{
+    for (int i = 0; name && i < BLOOM_PRESET_COUNT; i++)
+        if (same_name(name, preset_names[i]))
+            return i;
+    return -1;
+}
+
+int bloom_preset_available(bloom_preset_t p)
+{
+    if (p == BLOOM_PRESET_UNITY)
+        return 1;
+#if BLOOM_USE_GRAPH
+    return bloom_preset_ops(p) != NULL;
+#else
+    return 0;
+#endif
+}
+
+bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
+{
+    if (!cfg)
+        return BLOOM_E_NULL;
+    if (!bloom_preset_available(p))
+        return BLOOM_E_PRESET;
+    bloom_config_t d;
+    bloom_config_default(&d, cfg->width, cfg->height);
+    d.in_fmt = cfg->in_fmt;
+    d.out_fmt = cfg->out_fmt;
+    if (cfg->levels >= 1 && cfg->levels <= BLOOM_MAX_LEVELS)
+        d.levels = cfg->levels; /* cod's default weights follow the depth */
+    d.flags = cfg->flags & (uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
+                                      BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD);
+    d.preset = p;
+#if BLOOM_USE_GRAPH
+    if (p != BLOOM_PRESET_UNITY)
+        bloom_preset_ops(p)->defaults(&d);
+#endif
+    *cfg = d;
+    return BLOOM_OK;
+}
