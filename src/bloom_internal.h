@@ -95,12 +95,25 @@ uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t 
 uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
 
+/* Level-1 row: bloom_row_box_src_c then bloom_row_knee_c (returns its
+ * result). The SIMD twins write the zeros of 4-pixel blocks whose 4 x 10
+ * source codes are all at most the dark codes dk (the knee zeroes them)
+ * without computing the box: same bits. */
+bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                    int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+/* bloom_row_box_src_c for destination pixels xa .. xb-1 only (dst is the
+ * row); not in BLOOM_SMALL builds. */
+void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
+                               int xa, int xb, int sw);
+
 /* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
  * the C ones, or SIMD twins that give the same bits. */
 typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add,
                               uint32_t *dst, int x0, int n, int sw);
 typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
+                            int dw, int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
 typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
@@ -108,6 +121,7 @@ typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
     bloom_composite_fn composite;
+    bloom_d1_fn d1;             /* box from the source and knee (compute_d1) */
     bloom_vtent_fn vtent;       /* NULL in BLOOM_SMALL builds */
     bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
@@ -131,6 +145,8 @@ void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
 void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
 uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
@@ -140,6 +156,8 @@ void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
 void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
                              uint32_t *dst, int x0, int n, int sw);
 void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
+bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
 uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);

@@ -154,18 +154,22 @@ static BLOOM_ALWAYS_INLINE void pair_src(const uint8_t *s0, const uint8_t *s1, c
 /* The same sums (the box is exact in 32 bits), grouped by column pairs:
  * P(j) = columns 2j-1 and 2j, clamped; D(x) = (P(x) + P(x+1) + 8) >> 4.
  * The pairs with no clamp run without bound tests. */
-static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
-                                        size_t bpp, uint32_t *dst, int dw, int sw)
+static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
+                                              size_t bpp, uint32_t *dst, int xa, int dw, int sw)
 {
     const uint8_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
     uint32_t p[3], q[3];
-    pair_src(s0, s1, s2, s3, fmt, lin, 0, 0, p); /* column -1 clamps to 0 */
+    /* columns 2 xa - 1 (-1 clamps to 0) and 2 xa */
+    pair_src(s0, s1, s2, s3, fmt, lin, (size_t)imin(imax(2 * xa - 1, 0), sw - 1) * bpp,
+             (size_t)imin(2 * xa, sw - 1) * bpp, p);
     /* pair j = x + 1 needs no clamp while 2 (x + 1) <= sw - 1 */
     const int xe = imin(dw, (sw - 1) / 2);
-    int x = 0;
+    int x = xa;
+    dst += (size_t)xa * 3u;
     {
         uint32_t p0 = p[0], p1 = p[1], p2 = p[2];
-        const uint8_t *a0 = s0 + bpp, *a1 = s1 + bpp, *a2 = s2 + bpp, *a3 = s3 + bpp; /* column 2x + 1 */
+        const size_t c0 = (size_t)(2 * xa + 1) * bpp; /* column 2x + 1 */
+        const uint8_t *a0 = s0 + c0, *a1 = s1 + c0, *a2 = s2 + c0, *a3 = s3 + c0;
         for (; x < xe; x++, dst += 3, a0 += 2 * bpp, a1 += 2 * bpp, a2 += 2 * bpp, a3 += 2 * bpp) {
             const uint32_t q0 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 0);
             const uint32_t q1 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 1);
@@ -188,6 +192,56 @@ static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_
             dst[ch] = (p[ch] + q[ch] + 8u) >> 4;
             p[ch] = q[ch];
         }
+    }
+}
+
+static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
+                                        size_t bpp, uint32_t *dst, int dw, int sw)
+{
+    box_src_range(s, fmt, lin, bpp, dst, 0, dw, sw);
+}
+
+void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
+                               int xa, int xb, int sw)
+{
+    if (xa >= xb)
+        return;
+    switch (fmt) {
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        if (linear)
+            box_src_range(s, BLOOM_FMT_RGB565, true, 2, dst, xa, xb, sw);
+        else
+            box_src_range(s, BLOOM_FMT_RGB565, false, 2, dst, xa, xb, sw);
+        return;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        box_src_range(s, BLOOM_FMT_RGBQ16, false, 12, dst, xa, xb, sw);
+        return;
+#endif
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        if (linear)
+            box_src_range(s, BLOOM_FMT_RGB888, true, 3, dst, xa, xb, sw);
+        else
+            box_src_range(s, BLOOM_FMT_RGB888, false, 3, dst, xa, xb, sw);
+        return;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        if (linear)
+            box_src_range(s, BLOOM_FMT_XRGB8888, true, 4, dst, xa, xb, sw);
+        else
+            box_src_range(s, BLOOM_FMT_XRGB8888, false, 4, dst, xa, xb, sw);
+        return;
+#endif
+    default: /* refused by bloom_query */
+        (void)s;
+        (void)linear;
+        (void)dst;
+        (void)sw;
+        return;
     }
 }
 #endif
@@ -278,6 +332,14 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
         }
     }
     return any != 0;
+}
+
+bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                    int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+{
+    (void)dk;
+    bloom_row_box_src_c(s, fmt, linear, dst, dw, sw);
+    return bloom_row_knee_c(dst, dw, kn);
 }
 
 /* Vertical tent of one column: weights (3,4,1) even, (1,4,3) odd. U is
@@ -523,6 +585,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->box = bloom_row_box_c;
     k->tent = bloom_row_tent_c;
     k->composite = bloom_row_composite_c;
+    k->d1 = bloom_row_d1_c;
 #if !BLOOM_SMALL
     k->vtent = bloom_row_vtent_c;
     k->htent_eo = bloom_row_htent_eo_c;
@@ -541,6 +604,9 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->tent = bloom_row_tent_sse2_any;
     k->composite = bloom_row_composite_sse2_any;
 #if !BLOOM_SMALL
+    k->d1 = bloom_row_d1_sse2;
+#endif
+#if !BLOOM_SMALL
     k->vtent = bloom_row_vtent_sse2;
     k->htent_eo = bloom_row_htent_eo_sse2;
     k->scale = bloom_row_scale_sse2;
@@ -551,6 +617,9 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->box = bloom_row_box_neon_any;
     k->tent = bloom_row_tent_neon_any;
     k->composite = bloom_row_composite_neon_any;
+#if !BLOOM_SMALL
+    k->d1 = bloom_row_d1_neon;
+#endif
 #if !BLOOM_SMALL
     k->vtent = bloom_row_vtent_neon;
     k->htent_eo = bloom_row_htent_eo_neon;

@@ -5,6 +5,7 @@
 
 #if defined(BLOOM_SIMD_NEON)
 #include <arm_neon.h>
+#include <string.h>
 
 typedef uint32x4_t VT;
 #define LD4(p) vld1q_u32(p)
@@ -26,6 +27,36 @@ static inline uint32_t or_lanes(uint32x4_t v)
 #define ADD_SHR3(acc, v) vsraq_n_u32((acc), (v), 3)
 #define PACK_LO(e, o) vsetq_lane_u32(vgetq_lane_u32((o), 0), (e), 3)
 #define PACK_HI(o) vextq_u32((o), (o), 1)
+
+/* Whether a byte of the 30 at s[r] + off (r = 0..3) exceeds c (reads 32). */
+static inline int bright30(const uint8_t *const s[4], size_t off, uint32_t c)
+{
+    uint8x16_t a = vld1q_u8(s[0] + off), b = vld1q_u8(s[0] + off + 16);
+    for (int r = 1; r < 4; r++) {
+        a = vmaxq_u8(a, vld1q_u8(s[r] + off));
+        b = vmaxq_u8(b, vld1q_u8(s[r] + off + 16));
+    }
+    static const uint8_t keep[16] = {255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0};
+    b = vandq_u8(b, vld1q_u8(keep)); /* bytes 30, 31 out */
+    return vmaxvq_u8(vmaxq_u8(a, b)) > c;
+}
+#define BRIGHT30(s, off, c) bright30((s), (off), (c))
+
+/* The same over the 40 bytes of ten XRGB8888 pixels, X bytes out (reads 48). */
+static inline int bright40x(const uint8_t *const s[4], size_t off, uint32_t c)
+{
+    uint8x16_t a = vld1q_u8(s[0] + off), b = vld1q_u8(s[0] + off + 16), d = vld1q_u8(s[0] + off + 32);
+    for (int r = 1; r < 4; r++) {
+        a = vmaxq_u8(a, vld1q_u8(s[r] + off));
+        b = vmaxq_u8(b, vld1q_u8(s[r] + off + 16));
+        d = vmaxq_u8(d, vld1q_u8(s[r] + off + 32));
+    }
+    static const uint8_t rgb[16] = {255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0};
+    static const uint8_t lo8[16] = {255, 255, 255, 0, 255, 255, 255, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    d = vandq_u8(d, vld1q_u8(lo8)); /* bytes 40..47 out */
+    return vmaxvq_u8(vandq_u8(vmaxq_u8(a, b), vld1q_u8(rgb))) > c || vmaxvq_u8(d) > c;
+}
+#define BRIGHT40X(s, off, c) bright40x((s), (off), (c))
 
 #include "bloom_row_simd.h"
 
@@ -57,6 +88,16 @@ void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 }
 
 #if !BLOOM_SMALL
+bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+{
+#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
+    return d1_any(s, fmt, linear, dst, dw, sw, kn, dk);
+#else
+    return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);
+#endif
+}
+
 uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
     return vtent_flat(a, b, c, dst, n);

@@ -5,6 +5,7 @@
 
 #if defined(BLOOM_SIMD_SSE2)
 #include <emmintrin.h>
+#include <string.h>
 
 typedef __m128i VT;
 #define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
@@ -35,6 +36,37 @@ static inline uint32_t or_lanes(__m128i v)
     return (uint32_t)_mm_cvtsi128_si32(v);
 }
 #define OR_LANES(v) or_lanes(v)
+
+/* Whether a byte of the 30 at s[r] + off (r = 0..3) exceeds c (reads 32). */
+static inline int bright30(const uint8_t *const s[4], size_t off, uint32_t c)
+{
+    __m128i a = LD4(s[0] + off), b = LD4(s[0] + off + 16);
+    for (int r = 1; r < 4; r++) {
+        a = _mm_max_epu8(a, LD4(s[r] + off));
+        b = _mm_max_epu8(b, LD4(s[r] + off + 16));
+    }
+    b = _mm_and_si128(b, _mm_set_epi32(0x0000FFFF, -1, -1, -1)); /* bytes 30, 31 out */
+    const __m128i over = _mm_subs_epu8(_mm_max_epu8(a, b), _mm_set1_epi8((char)c)); /* 0 where <= c */
+    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) != 0xFFFF;
+}
+#define BRIGHT30(s, off, c) bright30((s), (off), (c))
+
+/* The same over the 40 bytes of ten XRGB8888 pixels, X bytes out (reads 48). */
+static inline int bright40x(const uint8_t *const s[4], size_t off, uint32_t c)
+{
+    __m128i a = LD4(s[0] + off), b = LD4(s[0] + off + 16), d = LD4(s[0] + off + 32);
+    for (int r = 1; r < 4; r++) {
+        a = _mm_max_epu8(a, LD4(s[r] + off));
+        b = _mm_max_epu8(b, LD4(s[r] + off + 16));
+        d = _mm_max_epu8(d, LD4(s[r] + off + 32));
+    }
+    const __m128i rgb = _mm_set1_epi32(0x00FFFFFF); /* little-endian: X is the high byte */
+    d = _mm_and_si128(d, _mm_set_epi32(0, 0, -1, -1)); /* bytes 40..47 out */
+    const __m128i m = _mm_and_si128(_mm_max_epu8(_mm_max_epu8(a, b), d), rgb);
+    const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)c));
+    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) != 0xFFFF;
+}
+#define BRIGHT40X(s, off, c) bright40x((s), (off), (c))
 
 #include "bloom_row_simd.h"
 
@@ -76,6 +108,16 @@ void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 }
 
 #if !BLOOM_SMALL
+bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+{
+#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
+    return d1_any(s, fmt, linear, dst, dw, sw, kn, dk);
+#else
+    return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);
+#endif
+}
+
 uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
     return vtent_flat(a, b, c, dst, n);

@@ -310,6 +310,89 @@ static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
     CHECKF(bad == 0, "%d flat kernel cases differ", bad);
 }
 
+/* The level-1 kernel (box from the source, knee) against box + knee in C:
+ * rows mostly darker than the dark code with bright spots, every format,
+ * the exact dark codes of the engine and a smaller one. */
+static uint32_t dark_code8(uint32_t cut, bool lin)
+{
+    uint32_t c = 0;
+    while (c < 255u) {
+        const uint32_t next = lin ? ((c + 1u) * BLOOM_LIN_ONE + 127u) / 255u : bloom_srgb_dec8[c + 1];
+        if (next > cut)
+            break;
+        c++;
+    }
+    return c;
+}
+
+static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
+{
+    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                          BLOOM_FMT_RGBQ16};
+    static const double ths[] = {0.6, 1.0, 0.05, 0.0};
+    int bad = 0, cases = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int sw = widths[wi], dw = (sw + 1) / 2;
+        for (int fi = 0; fi < 4; fi++) {
+            const int bpp = bloom_format_bpp(fmts[fi]);
+            if (bpp == 0)
+                continue;
+            for (int var = 0; var < 8; var++) {
+                const bool lin = var & 1;
+                bloom_knee_t kn;
+                kn.t = (uint32_t)(ths[var >> 1] * BLOOM_LIN_ONE);
+                kn.k = var >= 6 ? 0u : kn.t / 2u;
+                const uint32_t cut = kn.t > kn.k ? kn.t - kn.k : 0u;
+                bloom_dark_t dk;
+                dk.c8 = dark_code8(cut, lin);
+                dk.c6 = dk.c5 = 0;
+                dk.q16 = 0;
+                for (int dv = 0; dv < 2; dv++) {
+                    if (dv)
+                        dk.c8 /= 2u; /* a smaller dark code only skips less */
+                    row_t rows[4];
+                    const uint8_t *sp[4];
+                    for (int r = 0; r < 4; r++) {
+                        const size_t nb = (size_t)sw * (size_t)bpp;
+                        rows[r] = row_new((nb + 3u) / 4u, (var + r) & 3, 0);
+                        uint8_t *b = (uint8_t *)rows[r].p;
+                        for (size_t i = 0; i < nb; i++) {
+                            const uint32_t x = rng_next(&seed);
+                            /* below or at the dark code, or a bright spot now and then */
+                            b[i] = (uint8_t)((x >> 8) % 97u == 0u ? x & 255u : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
+                        }
+                        sp[r] = b;
+                    }
+                    row_t a = row_new((size_t)dw * 3u, var & 3, 1), c = row_new((size_t)dw * 3u, (var + 1) & 3, 1);
+                    /* the box over a range against the whole row's */
+                    const int xa = (int)(rng_next(&seed) % (uint32_t)dw);
+                    const int xb = xa + (int)(rng_next(&seed) % (uint32_t)(dw - xa + 1));
+                    bloom_row_box_src_c(sp, fmts[fi], lin, c.p, dw, sw);
+                    memset(a.p, 0, (size_t)dw * 12u);
+                    bloom_row_box_src_range_c(sp, fmts[fi], lin, a.p, xa, xb, sw);
+                    if (memcmp(a.p + 3 * xa, c.p + 3 * xa, (size_t)(xb - xa) * 12u) != 0 || !row_guard_ok(&a)) {
+                        bad++;
+                        fprintf(stderr, "box_src_range: sw %d fmt %d %d..%d differs\n", sw, (int)fmts[fi], xa, xb);
+                    }
+                    const bool ra = ks->d1(sp, fmts[fi], lin, a.p, dw, sw, &kn, &dk);
+                    const bool rc = kc->d1(sp, fmts[fi], lin, c.p, dw, sw, &kn, &dk);
+                    cases++;
+                    if (ra != rc || memcmp(a.p, c.p, (size_t)dw * 12u) != 0 || !row_guard_ok(&a) || !row_guard_ok(&c)) {
+                        bad++;
+                        fprintf(stderr, "d1: sw %d fmt %d var %d dark %u differs\n", sw, (int)fmts[fi], var,
+                                (unsigned)dk.c8);
+                    }
+                    free(a.base);
+                    free(c.base);
+                    for (int r = 0; r < 4; r++)
+                        free(rows[r].base);
+                }
+            }
+        }
+    }
+    CHECKF(bad == 0, "%d of %d level-1 rows differ", bad, cases);
+}
+
 /* The encoder without the bound test against the reference, every value. */
 static void test_enc_fast(void)
 {
@@ -485,7 +568,7 @@ int main(void)
     bloom_kernels_select(&kc, BLOOM_FLAG_NO_SIMD);
     CHECK(!kc.simd && kc.box == bloom_row_box_c && kc.tent == bloom_row_tent_c);
     if (ks.simd)
-        printf("SIMD kernels: %s (box, tent, composite, vtent, htent_eo, scale) against C\n", ks.name);
+        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale) against C\n", ks.name);
     else
         printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");
 
@@ -504,6 +587,7 @@ int main(void)
     test_composite_formula(&kc);
 #if !BLOOM_SMALL
     test_flat(&ks, &kc);
+    test_d1(&ks, &kc);
     test_enc_fast();
     test_out(&ks, &kc);
 #endif
