@@ -329,8 +329,13 @@ static bool compute_d1(bloom_t *b, int r, uint32_t *dst)
     }
     if (dark)
         return false;
+#if BLOOM_SMALL
     bloom_row_box_src_c(s, b->cfg.in_fmt, b->out.linear, dst, b->w[1], b->w[0]);
     return bloom_row_knee_c(dst, b->w[1], &b->knee) || !SKIP(b);
+#else
+    /* the same (the SIMD kernels skip the box where the knee zeroes anyway) */
+    return b->kern.d1(s, b->cfg.in_fmt, b->out.linear, dst, b->w[1], b->w[0], &b->knee, &b->dark) || !SKIP(b);
+#endif
 }
 
 /* The ring tent row r of level k reads from: U_{k+1}, or D_L at the bottom. */
@@ -392,6 +397,7 @@ static BLOOM_NOINLINE void compute_U(bloom_t *b, int k, int r, uint32_t *dst)
         ring_mark_zero(rg, r);
         return;
     }
+    const uint32_t *add = NULL; /* the D_k row the tent adds to, if any */
     if (dzero) {
         /* the tent alone */
     } else if (d2) {
@@ -399,13 +405,16 @@ static BLOOM_NOINLINE void compute_U(bloom_t *b, int k, int r, uint32_t *dst)
         for (int i = 0; i < 4; i++)
             s[i] = ring_get(b, dring, clampi(2 * r - 1 + i, 0, b->h[1] - 1));
         b->kern.box(s, dst, b->w[2], b->w[1]);
-    } else {
+        add = dst;
+    } else if (uzero) {
         memcpy(dst, ring_get(b, dring, r), (size_t)b->w[k] * 3u * sizeof *dst);
+    } else {
+        add = ring_get(b, dring, r); /* read where it is: no copy */
     }
     if (!uzero) {
         const uint32_t *u[3];
         tent_rows(b, k, r, u);
-        b->kern.tent(u, r & 1, dzero ? NULL : dst, dst, 0, b->w[k], b->w[k + 1]);
+        b->kern.tent(u, r & 1, add, dst, 0, b->w[k], b->w[k + 1]);
     }
 }
 

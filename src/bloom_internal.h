@@ -121,7 +121,7 @@ typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
     bloom_composite_fn composite;
-    bloom_d1_fn d1;             /* box from the source and knee (compute_d1) */
+    bloom_d1_fn d1;             /* box from the source and knee (compute_d1); NULL if BLOOM_SMALL */
     bloom_vtent_fn vtent;       /* NULL in BLOOM_SMALL builds */
     bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */

@@ -585,12 +585,13 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->box = bloom_row_box_c;
     k->tent = bloom_row_tent_c;
     k->composite = bloom_row_composite_c;
-    k->d1 = bloom_row_d1_c;
 #if !BLOOM_SMALL
+    k->d1 = bloom_row_d1_c;
     k->vtent = bloom_row_vtent_c;
     k->htent_eo = bloom_row_htent_eo_c;
     k->scale = bloom_row_scale_c;
 #else
+    k->d1 = NULL; /* compute_d1 calls the box and the knee itself */
     k->vtent = NULL;
     k->htent_eo = NULL;
     k->scale = NULL;
