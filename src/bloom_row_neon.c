@@ -58,6 +58,27 @@ static inline int bright40x(const uint8_t *const s[4], size_t off, uint32_t c)
 }
 #define BRIGHT40X(s, off, c) bright40x((s), (off), (c))
 
+/* Whether a 5/6/5 field of the ten RGB565 pixels at s[r] + off (r = 0..3)
+ * exceeds its dark code (reads 32 bytes; the words are little-endian, as
+ * the format). */
+static inline int bright20_565(const uint8_t *const s[4], size_t off, uint32_t c5, uint32_t c6)
+{
+    const uint16x8_t lr = vdupq_n_u16((uint16_t)((c5 << 11) | 0x7FFu)), lg = vdupq_n_u16((uint16_t)(c6 << 5));
+    const uint16x8_t lb = vdupq_n_u16((uint16_t)c5), mg = vdupq_n_u16(0x07E0), mb = vdupq_n_u16(31);
+    static const uint16_t k2[8] = {0xFFFF, 0xFFFF, 0, 0, 0, 0, 0, 0}; /* words 8, 9 of the ten */
+    const uint16x8_t keep2 = vld1q_u16(k2);
+    uint16x8_t o = vdupq_n_u16(0);
+    for (int r = 0; r < 4; r++) {
+        const uint16x8_t a = vreinterpretq_u16_u8(vld1q_u8(s[r] + off));
+        const uint16x8_t b = vandq_u16(vreinterpretq_u16_u8(vld1q_u8(s[r] + off + 16)), keep2);
+        o = vorrq_u16(o, vorrq_u16(vqsubq_u16(a, lr), vqsubq_u16(b, lr)));
+        o = vorrq_u16(o, vorrq_u16(vqsubq_u16(vandq_u16(a, mg), lg), vqsubq_u16(vandq_u16(b, mg), lg)));
+        o = vorrq_u16(o, vorrq_u16(vqsubq_u16(vandq_u16(a, mb), lb), vqsubq_u16(vandq_u16(b, mb), lb)));
+    }
+    return vmaxvq_u16(o) != 0;
+}
+#define BRIGHT20_565(s, off, c5, c6) bright20_565((s), (off), (c5), (c6))
+
 #include "bloom_row_simd.h"
 
 void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
@@ -91,7 +112,7 @@ void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
                        int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
 {
-#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
+#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888 || BLOOM_USE_RGB565
     return d1_any(s, fmt, linear, dst, dw, sw, kn, dk);
 #else
     return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);

@@ -251,7 +251,7 @@ static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n
 }
 #endif
 
-#if !BLOOM_SMALL && (BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888)
+#if !BLOOM_SMALL && (BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888 || BLOOM_USE_RGB565)
 /* ---- level-1 row: box from the source and knee, dark blocks skipped ------ */
 
 /* Blocks of four level-1 pixels x .. x+3 (x >= 1) read source columns
@@ -260,21 +260,23 @@ static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n
  * dec(c8) <= t - k and the knee makes the four pixels 0. Other blocks run
  * the C box and knee, in runs. The includer defines BRIGHT30(s, off, c8)
  * (RGB888: whether a byte of the 30 at s[r] + off, r = 0..3, exceeds c8;
- * reads 32) and BRIGHT40X(s, off, c8) (XRGB8888: the same over 40 bytes,
- * X bytes left out; reads 48). */
+ * reads 32), BRIGHT40X(s, off, c8) (XRGB8888: the same over 40 bytes,
+ * X bytes left out; reads 48) and BRIGHT20_565(s, off, c5, c6) (RGB565:
+ * whether a field of the ten pixels exceeds its dark code; reads 32). */
 static bool d1_any(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
                    const bloom_knee_t *kn, const bloom_dark_t *dk)
 {
     const bool x8 = BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888;
-    if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8)
+    const bool h5 = BLOOM_USE_RGB565 && fmt == BLOOM_FMT_RGB565;
+    if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8 && !h5)
         return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);
-    const size_t bpp = x8 ? 4u : 3u, rd = x8 ? 48u : 32u, row = (size_t)sw * bpp;
+    const size_t bpp = x8 ? 4u : h5 ? 2u : 3u, rd = x8 ? 48u : 32u, row = (size_t)sw * bpp;
     bool any = false;
     int run = 0; /* first pixel not written yet */
     int x = 1;
     for (; x + 4 <= dw && (size_t)(2 * x - 1) * bpp + rd <= row; x += 4) {
         const size_t off = (size_t)(2 * x - 1) * bpp;
-        if (x8 ? BRIGHT40X(s, off, dk->c8) : BRIGHT30(s, off, dk->c8))
+        if (h5 ? BRIGHT20_565(s, off, dk->c5, dk->c6) : x8 ? BRIGHT40X(s, off, dk->c8) : BRIGHT30(s, off, dk->c8))
             continue; /* computed with its run */
         if (run < x) {
             bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);

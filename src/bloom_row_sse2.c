@@ -68,6 +68,27 @@ static inline int bright40x(const uint8_t *const s[4], size_t off, uint32_t c)
 }
 #define BRIGHT40X(s, off, c) bright40x((s), (off), (c))
 
+/* Whether a 5/6/5 field of the ten RGB565 pixels at s[r] + off (r = 0..3)
+ * exceeds its dark code (reads 32 bytes): a saturating subtract of the
+ * field's largest dark value leaves non-zero only above it. */
+static inline int bright20_565(const uint8_t *const s[4], size_t off, uint32_t c5, uint32_t c6)
+{
+    const __m128i lr = _mm_set1_epi16((short)((c5 << 11) | 0x7FFu)), lg = _mm_set1_epi16((short)(c6 << 5));
+    const __m128i lb = _mm_set1_epi16((short)c5), mg = _mm_set1_epi16(0x07E0), mb = _mm_set1_epi16(31);
+    const __m128i keep2 = _mm_set_epi32(0, 0, 0, -1); /* words 8, 9 of the ten */
+    __m128i o = _mm_setzero_si128();
+    for (int r = 0; r < 4; r++) {
+        const __m128i a = LD4(s[r] + off), b = _mm_and_si128(LD4(s[r] + off + 16), keep2);
+        o = _mm_or_si128(o, _mm_or_si128(_mm_subs_epu16(a, lr), _mm_subs_epu16(b, lr)));
+        o = _mm_or_si128(o, _mm_or_si128(_mm_subs_epu16(_mm_and_si128(a, mg), lg),
+                                         _mm_subs_epu16(_mm_and_si128(b, mg), lg)));
+        o = _mm_or_si128(o, _mm_or_si128(_mm_subs_epu16(_mm_and_si128(a, mb), lb),
+                                         _mm_subs_epu16(_mm_and_si128(b, mb), lb)));
+    }
+    return _mm_movemask_epi8(_mm_cmpeq_epi8(o, _mm_setzero_si128())) != 0xFFFF;
+}
+#define BRIGHT20_565(s, off, c5, c6) bright20_565((s), (off), (c5), (c6))
+
 #include "bloom_row_simd.h"
 
 void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
@@ -111,7 +132,7 @@ void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
                        int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
 {
-#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
+#if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888 || BLOOM_USE_RGB565
     return d1_any(s, fmt, linear, dst, dw, sw, kn, dk);
 #else
     return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);

@@ -313,11 +313,11 @@ static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 /* The level-1 kernel (box from the source, knee) against box + knee in C:
  * rows mostly darker than the dark code with bright spots, every format,
  * the exact dark codes of the engine and a smaller one. */
-static uint32_t dark_code8(uint32_t cut, bool lin)
+static uint32_t dark_code(uint32_t cut, bool lin, const uint32_t *table, uint32_t n)
 {
     uint32_t c = 0;
-    while (c < 255u) {
-        const uint32_t next = lin ? ((c + 1u) * BLOOM_LIN_ONE + 127u) / 255u : bloom_srgb_dec8[c + 1];
+    while (c < n) {
+        const uint32_t next = lin ? ((c + 1u) * BLOOM_LIN_ONE + (n - 1u) / 2u) / n : table[c + 1];
         if (next > cut)
             break;
         c++;
@@ -344,12 +344,16 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                 kn.k = var >= 6 ? 0u : kn.t / 2u;
                 const uint32_t cut = kn.t > kn.k ? kn.t - kn.k : 0u;
                 bloom_dark_t dk;
-                dk.c8 = dark_code8(cut, lin);
-                dk.c6 = dk.c5 = 0;
+                dk.c8 = dark_code(cut, lin, bloom_srgb_dec8, 255);
+                dk.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
+                dk.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
                 dk.q16 = 0;
                 for (int dv = 0; dv < 2; dv++) {
-                    if (dv)
-                        dk.c8 /= 2u; /* a smaller dark code only skips less */
+                    if (dv) { /* a smaller dark code only skips less */
+                        dk.c8 /= 2u;
+                        dk.c6 /= 2u;
+                        dk.c5 /= 2u;
+                    }
                     row_t rows[4];
                     const uint8_t *sp[4];
                     for (int r = 0; r < 4; r++) {
@@ -361,6 +365,16 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                             /* below or at the dark code, or a bright spot now and then */
                             b[i] = (uint8_t)((x >> 8) % 97u == 0u ? x & 255u : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
                         }
+                        if (fmts[fi] == BLOOM_FMT_RGB565) /* fields at most their dark codes, bright now and then */
+                            for (int i = 0; i < sw; i++) {
+                                const uint32_t x = rng_next(&seed);
+                                uint32_t w = ((x % (dk.c5 + 1u)) << 11) | (((x >> 8) % (dk.c6 + 1u)) << 5) |
+                                             ((x >> 16) % (dk.c5 + 1u));
+                                if ((x >> 24) % 53u == 0u)
+                                    w ^= 1u << ((x >> 20) & 15u);
+                                b[2 * i] = (uint8_t)w;
+                                b[2 * i + 1] = (uint8_t)(w >> 8);
+                            }
                         sp[r] = b;
                     }
                     row_t a = row_new((size_t)dw * 3u, var & 3, 1), c = row_new((size_t)dw * 3u, (var + 1) & 3, 1);
