@@ -167,6 +167,12 @@ tmp=$out.tmp
                 printf "\n"
             }' $files
     done
+    # Hand-written notes (the history of the figures), if any.
+    notes=$(dirname "$0")/icount-notes.md
+    if [ -f "$notes" ]; then
+        echo
+        cat "$notes"
+    fi
 } > "$tmp"
 mv "$tmp" "$out"
 echo "icount: wrote $out ($t_all s in all)"
