@@ -156,6 +156,29 @@ int bloom_preset_from_name(const char *name);
 /* Whether this build carries preset p (BLOOM_USE_<PRESET>). */
 int bloom_preset_available(bloom_preset_t p);
 
+/* What a preset reads beyond the common parameters (threshold, knee,
+ * intensity, levels, formats, the common flags): bits of
+ * bloom_preset_params(). A preset ignores the bloom_preset_params_t fields
+ * it does not read; it refuses the preset flags and the aux plane it does
+ * not read (bloom_query). */
+typedef enum {
+    BLOOM_PARAM_STRENGTH = 1u << 0,      /* p.strength */
+    BLOOM_PARAM_PASSES = 1u << 1,        /* p.passes */
+    BLOOM_PARAM_ATTENUATION = 1u << 2,   /* p.attenuation */
+    BLOOM_PARAM_MAX_REDUCTION = 1u << 3, /* p.max_reduction */
+    BLOOM_PARAM_AUX = 1u << 4,           /* an aux plane (aux_fmt, bloom_set_aux, bloom_push_row_aux) */
+    BLOOM_PARAM_TINT = 1u << 5,          /* p.tint */
+    BLOOM_PARAM_WEIGHTS = 1u << 6,       /* p.level_weight */
+    BLOOM_PARAM_SATURATE = 1u << 7,      /* BLOOM_FLAG_SATURATE */
+    BLOOM_PARAM_ADDITIVE = 1u << 8,      /* BLOOM_FLAG_ADDITIVE */
+    BLOOM_PARAM_BAKED = 1u << 9,         /* BLOOM_FLAG_BAKED */
+    BLOOM_PARAM_RADIUS = 1u << 10        /* the level count from bloom_levels_for_radius */
+} bloom_param_t;
+
+/* The BLOOM_PARAM_* bits preset p reads; 0 for the default and for an
+ * unknown preset. Pure; compiled-out presets are still described. */
+uint32_t bloom_preset_params(bloom_preset_t p);
+
 /* cod: the level count whose glow reaches about radius_px output pixels,
  * whatever the frame size (sim/docs/presets.md: reach of L levels). */
 int bloom_levels_for_radius(int radius_px);

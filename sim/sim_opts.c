@@ -176,35 +176,30 @@ static int takes_value(const char *name)
     return 0;
 }
 
-/* The options given, applied over the preset's defaults at the end. */
+/* The options given, applied over the preset's defaults at the end; a
+ * preset parameter's bit is its BLOOM_PARAM_* bit. */
 enum {
-    SET_LEVELS = 1u << 0, SET_THRESHOLD = 1u << 1, SET_KNEE = 1u << 2, SET_INTENSITY = 1u << 3,
-    SET_STRENGTH = 1u << 4, SET_PASSES = 1u << 5, SET_ATTENUATION = 1u << 6,
-    SET_MAX_REDUCTION = 1u << 7, SET_TINT = 1u << 8, SET_WEIGHTS = 1u << 9, SET_RADIUS = 1u << 10,
-    SET_SATURATE = 1u << 11, SET_ADDITIVE = 1u << 12, SET_BAKED = 1u << 13, SET_AUX = 1u << 14
+    SET_STRENGTH = BLOOM_PARAM_STRENGTH, SET_PASSES = BLOOM_PARAM_PASSES,
+    SET_ATTENUATION = BLOOM_PARAM_ATTENUATION, SET_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION,
+    SET_TINT = BLOOM_PARAM_TINT, SET_WEIGHTS = BLOOM_PARAM_WEIGHTS, SET_RADIUS = BLOOM_PARAM_RADIUS,
+    SET_SATURATE = BLOOM_PARAM_SATURATE, SET_ADDITIVE = BLOOM_PARAM_ADDITIVE, SET_BAKED = BLOOM_PARAM_BAKED,
+    SET_AUX = BLOOM_PARAM_AUX,
+    SET_LEVELS = 1u << 16, SET_THRESHOLD = 1u << 17, SET_KNEE = 1u << 18, SET_INTENSITY = 1u << 19
 };
 
 typedef sim_given_t given_t;
 
-#define PB(p) (1u << (p))
-/* Which presets read a parameter (bloom.h, bloom_preset_params_t and the
- * preset flags); the options of the others are refused by name. */
+/* The option of each preset parameter; the presets that do not read it
+ * (bloom_preset_params: the fields of bloom_preset_params_t, the preset
+ * flags, the aux plane) refuse it by name. */
 static const struct {
     unsigned bit;
     const char *opt;
-    unsigned presets;
-} param_use[] = {
-    {SET_STRENGTH, "--strength", PB(BLOOM_PRESET_GAMEDEV) | PB(BLOOM_PRESET_ARM)},
-    {SET_PASSES, "--passes", PB(BLOOM_PRESET_XNA)},
-    {SET_SATURATE, "--saturate", PB(BLOOM_PRESET_XNA)},
-    {SET_ATTENUATION, "--attenuation", PB(BLOOM_PRESET_ATTENUATION)},
-    {SET_MAX_REDUCTION, "--max-reduction", PB(BLOOM_PRESET_ATTENUATION)},
-    {SET_AUX, "--aux", PB(BLOOM_PRESET_ATTENUATION) | PB(BLOOM_PRESET_ARM)},
-    {SET_TINT, "--tint", PB(BLOOM_PRESET_COD) | PB(BLOOM_PRESET_ARM)},
-    {SET_WEIGHTS, "--weights", PB(BLOOM_PRESET_COD)},
-    {SET_ADDITIVE, "--additive", PB(BLOOM_PRESET_COD)},
-    {SET_BAKED, "--baked", PB(BLOOM_PRESET_ARM)},
-    {SET_RADIUS, "--radius", PB(BLOOM_PRESET_COD)},
+} param_opt[] = {
+    {SET_STRENGTH, "--strength"}, {SET_PASSES, "--passes"}, {SET_SATURATE, "--saturate"},
+    {SET_ATTENUATION, "--attenuation"}, {SET_MAX_REDUCTION, "--max-reduction"}, {SET_AUX, "--aux"},
+    {SET_TINT, "--tint"}, {SET_WEIGHTS, "--weights"}, {SET_ADDITIVE, "--additive"},
+    {SET_BAKED, "--baked"}, {SET_RADIUS, "--radius"},
 };
 
 const char *sim_presets_available(void)
@@ -445,16 +440,16 @@ static int build_config(sim_opts_t *o)
     const given_t *g = &o->given;
     const bloom_preset_t p = g->preset < 0 ? BLOOM_PRESET_UNITY : (bloom_preset_t)g->preset;
     const char *pn = bloom_preset_name(p);
-    for (size_t i = 0; i < sizeof param_use / sizeof param_use[0]; i++)
-        if ((g->set & param_use[i].bit) && !(param_use[i].presets & PB(p))) {
+    for (size_t i = 0; i < sizeof param_opt / sizeof param_opt[0]; i++)
+        if ((g->set & param_opt[i].bit) && !(bloom_preset_params(p) & param_opt[i].bit)) {
             char who[64] = "";
             size_t len = 0;
             for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
-                if (param_use[i].presets & PB(q))
+                if (bloom_preset_params((bloom_preset_t)q) & param_opt[i].bit)
                     len += (size_t)snprintf(who + len, sizeof who - len, "%s%s", len ? " or " : "",
                                             bloom_preset_name((bloom_preset_t)q));
             fprintf(stderr, "bloom_sim: %s applies to the %s preset, not %s (give --preset)\n",
-                    param_use[i].opt, who, pn);
+                    param_opt[i].opt, who, pn);
             return -1;
         }
     if ((g->set & SET_RADIUS) && (g->set & SET_LEVELS)) {

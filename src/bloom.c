@@ -579,21 +579,11 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
     setup(b, cfg);
     dry_frame(b);
     if (info) {
-        memset(info, 0, sizeof *info);
+        bloom_info_fill(info, b->L, b->w, b->h, b->latency, b->need_src, &b->knee, &b->out);
         const uint64_t bytes = carve(b, NULL, info->ring_bytes);
         if (bytes > SIZE_MAX)
             return BLOOM_E_TOO_BIG;
         info->workspace_bytes = (size_t)bytes;
-        info->levels = b->L;
-        for (int k = 0; k <= b->L; k++) {
-            info->level_w[k] = b->w[k];
-            info->level_h[k] = b->h[k];
-        }
-        info->latency_rows = b->latency;
-        info->source_rows = imax(b->need_src, 1);
-        info->threshold_q = b->knee.t;
-        info->knee_q = b->knee.k;
-        info->intensity_q = b->out.intensity;
     }
     return BLOOM_OK;
 }

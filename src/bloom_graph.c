@@ -289,21 +289,11 @@ bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, blo
         return BLOOM_E_INTERNAL;
     dry_frame(g);
     if (info) {
-        memset(info, 0, sizeof *info);
-        const uint64_t bytes = bloom_graph_carve(g, NULL, info->ring_bytes);
+        bloom_info_fill(info, g->L, g->w, g->h, g->latency, g->need_src, &g->knee, &g->out);
+        const uint64_t bytes = bloom_graph_carve(g, NULL, info->ring_bytes); /* adds to the zeroed ring_bytes */
         if (bytes > SIZE_MAX)
             return BLOOM_E_TOO_BIG;
         info->workspace_bytes = (size_t)bytes;
-        info->levels = g->L;
-        for (int k = 0; k <= g->L; k++) {
-            info->level_w[k] = g->w[k];
-            info->level_h[k] = g->h[k];
-        }
-        info->latency_rows = g->latency;
-        info->source_rows = imax(g->need_src, 1);
-        info->threshold_q = g->knee.t;
-        info->knee_q = g->knee.k;
-        info->intensity_q = g->out.intensity;
     }
     return BLOOM_OK;
 }

@@ -17,6 +17,8 @@
 #ifndef BLOOM_GRAPH_H
 #define BLOOM_GRAPH_H
 
+#include <string.h>
+
 #include "bloom_internal.h"
 
 #define BG_MAX_NODES 48
@@ -145,6 +147,29 @@ void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);
 /* Aux sample x of an aux row, scaled to Q16 (0 .. 65536): code * 65536 / max
  * rounded half up (exact for U16: 65535 -> 65536). */
 uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x);
+
+/* ---- shared with the default engine (bloom.c) --------------------------- */
+
+/* bloom_query's description of a planned engine: zeroes info, then sets the
+ * level count L and sizes w/h[0..L], the latency, the source rows
+ * (need_src, at least 1) and the quantized knee and intensity. The caller
+ * adds the ring and workspace bytes (its carve). Inline: the minimal
+ * firmware (no presets) keeps its size. */
+static inline void bloom_info_fill(bloom_info_t *info, int L, const int *w, const int *h, int latency,
+                                   int need_src, const bloom_knee_t *knee, const bloom_out_t *out)
+{
+    memset(info, 0, sizeof *info);
+    info->levels = L;
+    for (int k = 0; k <= L; k++) {
+        info->level_w[k] = w[k];
+        info->level_h[k] = h[k];
+    }
+    info->latency_rows = latency;
+    info->source_rows = need_src > 1 ? need_src : 1;
+    info->threshold_q = knee->t;
+    info->knee_q = knee->k;
+    info->intensity_q = out->intensity;
+}
 
 /* ---- the engine (bloom.c dispatches here) ----------------------------- */
 

@@ -1,6 +1,6 @@
-/* Presets by name, and their defaults (sim/docs/presets.md). A file of its
- * own so that a firmware that never names a preset links none of this (its
- * strings included). */
+/* Presets by name, their defaults and what each reads (sim/docs/presets.md).
+ * A file of its own so that a firmware that never names a preset links none
+ * of this (its strings included). */
 
 #include "bloom_graph.h"
 
@@ -39,6 +39,19 @@ int bloom_preset_available(bloom_preset_t p)
 #else
     return 0;
 #endif
+}
+
+uint32_t bloom_preset_params(bloom_preset_t p)
+{
+    static const uint32_t reads[BLOOM_PRESET_COUNT] = {
+        [BLOOM_PRESET_UNITY] = 0u,
+        [BLOOM_PRESET_GAMEDEV] = BLOOM_PARAM_STRENGTH,
+        [BLOOM_PRESET_XNA] = BLOOM_PARAM_PASSES | BLOOM_PARAM_SATURATE,
+        [BLOOM_PRESET_ATTENUATION] = BLOOM_PARAM_ATTENUATION | BLOOM_PARAM_MAX_REDUCTION | BLOOM_PARAM_AUX,
+        [BLOOM_PRESET_ARM] = BLOOM_PARAM_STRENGTH | BLOOM_PARAM_AUX | BLOOM_PARAM_TINT | BLOOM_PARAM_BAKED,
+        [BLOOM_PRESET_COD] = BLOOM_PARAM_TINT | BLOOM_PARAM_WEIGHTS | BLOOM_PARAM_ADDITIVE | BLOOM_PARAM_RADIUS,
+    };
+    return (unsigned)p < BLOOM_PRESET_COUNT ? reads[p] : 0u;
 }
 
 bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)

@@ -90,23 +90,33 @@ static inline uint32_t *frame_codes(const frame_t *f)
     return c;
 }
 
-static inline void model_params(const bloom_config_t *c, const bloom_info_t *info, int bittrue,
-                         bloom_model_params_t *p)
+/* The model's parameters for c (bloom_model_params_from: the core's
+ * quantized values in bit-true mode); c is known valid. */
+static inline void model_params(const bloom_config_t *c, int bittrue, bloom_model_params_t *p)
 {
-    memset(p, 0, sizeof *p);
-    p->width = c->width;
-    p->height = c->height;
-    p->levels = c->levels;
-    p->linear = (c->flags & BLOOM_FLAG_LINEAR) != 0;
-    p->debug_view = (c->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
-    p->bittrue = bittrue;
-    p->threshold = c->threshold / 65536.0;
-    p->soft_knee = c->soft_knee / 65536.0;
-    p->intensity = c->intensity / 65536.0;
-    p->threshold_q = info->threshold_q;
-    p->knee_q = info->knee_q;
-    p->intensity_q = info->intensity_q;
-    p->lin_bits = BLOOM_LIN_BITS;
+    bloom_model_preset_args_t a;
+    memset(&a, 0, sizeof a);
+    a.cfg = c;
+    a.bittrue = bittrue;
+    if (bloom_model_params_from(&a, p))
+        memset(p, 0, sizeof *p);
+}
+
+/* src through a fresh engine for c, with the aux plane aux (rows aux_stride
+ * bytes apart) unless NULL, into *out (allocated here, and freed again
+ * when the engine fails). The engine's status. */
+static inline bloom_status_t core_output(const bloom_config_t *c, const frame_t *src, const void *aux,
+                                         ptrdiff_t aux_stride, frame_t *out)
+{
+    engine_t e = engine_new(c);
+    *out = frame_alloc(c->width, c->height, c->out_fmt, 0);
+    bloom_status_t st = aux ? bloom_set_aux(e.b, aux, aux_stride) : BLOOM_OK;
+    if (st == BLOOM_OK)
+        st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out->p, (ptrdiff_t)out->stride);
+    engine_free(&e);
+    if (st != BLOOM_OK)
+        frame_free(out);
+    return st;
 }
 
 typedef struct {
@@ -124,13 +134,9 @@ static inline conform_t conform_run(const bloom_config_t *c, const frame_t *src)
     bloom_info_t info;
     if (bloom_query(c, &info) != BLOOM_OK)
         return r;
-    engine_t e = engine_new(c);
-    frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
-    if (bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride) != BLOOM_OK) {
-        frame_free(&out);
-        engine_free(&e);
+    frame_t out;
+    if (core_output(c, src, NULL, 0, &out) != BLOOM_OK)
         return r;
-    }
     const size_t n = (size_t)c->width * (size_t)c->height * 3u;
     uint32_t *in = frame_codes(src), *core = frame_codes(&out);
     uint32_t *bt = (uint32_t *)xmalloc(n * sizeof *bt), *fl = (uint32_t *)xmalloc(n * sizeof *fl);
@@ -138,8 +144,8 @@ static inline conform_t conform_run(const bloom_config_t *c, const frame_t *src)
     fmt_max(c->in_fmt, smax);
     fmt_max(c->out_fmt, dmax);
     bloom_model_params_t pb, pf;
-    model_params(c, &info, 1, &pb);
-    model_params(c, &info, 0, &pf);
+    model_params(c, 1, &pb);
+    model_params(c, 0, &pf);
     bloom_model_pyramid_t pyr;
     int lb = bloom_model_run(&pb, in, smax, bt, dmax, NULL);
     int lf = bloom_model_run(&pf, in, smax, fl, dmax, NULL);
@@ -163,7 +169,6 @@ static inline conform_t conform_run(const bloom_config_t *c, const frame_t *src)
     free(bt);
     free(fl);
     frame_free(&out);
-    engine_free(&e);
     return r;
 }
 

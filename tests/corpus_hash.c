@@ -253,6 +253,23 @@ static void extreme_corpus(void)
 }
 
 
+/* dir/name as a frame (frame_from_img); when it cannot be read, a line of
+ * the listing, an error counted and 0. */
+static int load_image(const char *dir, const char *name, frame_t *out)
+{
+    char path[1024], err[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    img_t im;
+    if (img_read(path, &im, err, sizeof err) != 0) {
+        printf("image %s: %s\n", name, err);
+        errors++;
+        return 0;
+    }
+    *out = frame_from_img(&im);
+    img_free(&im);
+    return 1;
+}
+
 /* Each image: the conformance test's configuration into every output
  * format, and a few parameter sets (levels 1, 5, 9) into RGB888. */
 static void image_corpus(const char *dir)
@@ -264,20 +281,14 @@ static void image_corpus(const char *dir)
         int levels;
     } extra[] = {{2, 9}, {4, 5}, {5, 5}, {6, 1}, {8, 5}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        char path[1024], err[512];
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        img_t im;
-        if (img_read(path, &im, err, sizeof err) != 0) {
-            printf("image %s: %s\n", names[i], err);
-            errors++;
+        frame_t src;
+        if (!load_image(dir, names[i], &src))
             continue;
-        }
-        frame_t src = frame_from_img(&im);
         const bloom_format_t in = src.fmt;
         char what[128];
         for (size_t fi = 0; fi < 4; fi++) {
             bloom_config_t c;
-            bloom_config_default(&c, im.width, im.height);
+            bloom_config_default(&c, src.w, src.h);
             c.in_fmt = in;
             c.out_fmt = FMTS[fi];
             if (in == BLOOM_FMT_RGBQ16)
@@ -287,7 +298,7 @@ static void image_corpus(const char *dir)
         }
         for (size_t k = 0; k < sizeof extra / sizeof extra[0]; k++) {
             bloom_config_t c;
-            bloom_config_default(&c, im.width, im.height);
+            bloom_config_default(&c, src.w, src.h);
             apply(&c, &PARAMS[extra[k].param]);
             c.levels = extra[k].levels;
             c.in_fmt = in;
@@ -296,7 +307,6 @@ static void image_corpus(const char *dir)
             run(what, &c, &src);
         }
         frame_free(&src);
-        img_free(&im);
     }
 }
 
@@ -348,31 +358,24 @@ static void preset_corpus(const char *dir)
         }
         static const char *const names[] = {"rocket_floodlights.ppm", "hall_lamps.pfm"};
         for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-            char path[1024], err[512];
-            snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-            img_t im;
-            if (img_read(path, &im, err, sizeof err) != 0) {
-                printf("image %s: %s\n", names[i], err);
-                errors++;
+            frame_t src;
+            if (!load_image(dir, names[i], &src))
                 continue;
-            }
-            frame_t src = frame_from_img(&im);
             bloom_config_t c;
-            bloom_config_default(&c, im.width, im.height);
+            bloom_config_default(&c, src.w, src.h);
             bloom_config_preset(&c, (bloom_preset_t)p);
             c.in_fmt = src.fmt;
-            uint8_t *aux = (uint8_t *)xmalloc((size_t)im.width * (size_t)im.height);
-            for (int y = 0; y < im.height; y++)
-                memset(aux + (size_t)y * (size_t)im.width, 255 - y * 255 / im.height, (size_t)im.width);
+            uint8_t *aux = (uint8_t *)xmalloc((size_t)src.w * (size_t)src.h);
+            for (int y = 0; y < src.h; y++)
+                memset(aux + (size_t)y * (size_t)src.w, 255 - y * 255 / src.h, (size_t)src.w);
             aux_plane = aux;
-            aux_stride = im.width;
+            aux_stride = src.w;
             if (c.aux_fmt != BLOOM_AUX_NONE)
                 c.aux_fmt = BLOOM_AUX_U8;
             snprintf(what, sizeof what, "preset %s image %s", bloom_preset_name((bloom_preset_t)p), names[i]);
             run(what, &c, &src);
             free(aux);
             frame_free(&src);
-            img_free(&im);
         }
     }
     aux_plane = NULL;

@@ -5,6 +5,7 @@
 #define PRESET_CONFORM_H
 
 #include "conform.h"
+#include "harness.h"
 
 typedef struct {
     errstat_t vs_float;     /* core against the float model, output codes */
@@ -22,15 +23,10 @@ static inline preset_conform_t preset_conform(const bloom_config_t *c, const fra
     bloom_info_t info;
     if (bloom_query(c, &info) != BLOOM_OK)
         return r;
-    engine_t e = engine_new(c);
-    frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
-    bloom_status_t st = aux ? bloom_set_aux(e.b, aux, aux_stride) : BLOOM_OK;
-    if (st == BLOOM_OK)
-        st = bloom_process(e.b, src->p, (ptrdiff_t)src->stride, out.p, (ptrdiff_t)out.stride);
-    engine_free(&e);
+    frame_t out;
+    const bloom_status_t st = core_output(c, src, aux, aux_stride, &out);
     if (st != BLOOM_OK) {
         fprintf(stderr, "bloom_process (%s): %s\n", bloom_preset_name(c->preset), bloom_status_str(st));
-        frame_free(&out);
         return r;
     }
     const size_t n = (size_t)c->width * (size_t)c->height * 3u, np = n / 3u;
@@ -76,6 +72,91 @@ static inline preset_conform_t preset_conform(const bloom_config_t *c, const fra
     free(ax);
     frame_free(&out);
     return r;
+}
+
+/* What preset_check_rows saw on the first frame, for a test's own checks. */
+typedef struct {
+    int busy;               /* BLOOM_E_BUSY answers */
+    int pushed_before_pull; /* rows in at the first BLOOM_E_BUSY (0: none) */
+    int source_rows;        /* bloom_info_t.source_rows */
+} rows_check_t;
+
+/* The row interface of c's engine on src (with the aux plane aux, rows
+ * aux_stride bytes apart, unless NULL), against a whole-frame run (CHECKs):
+ * a workspace one byte short refused; a pull before any push answers
+ * BLOOM_AGAIN; with an aux plane a push without its row refused
+ * (BLOOM_E_AUX, nothing pushed); rows pushed without pulling until
+ * BLOOM_E_BUSY, then pulled until BLOOM_AGAIN, and so on; after the last
+ * push pulled until BLOOM_DONE; a push after it refused (BLOOM_E_STATE);
+ * the output that of the frame run, for two frames on the same engine (the
+ * second BUSY at the same rows); the ring full at some point unless it
+ * holds the whole frame; then bloom_process in place (dst = src) gives the
+ * same output too, and the workspace canaries are intact. */
+static inline rows_check_t preset_check_rows(const bloom_config_t *c, const frame_t *src, const void *aux,
+                                             ptrdiff_t aux_stride)
+{
+    rows_check_t res[2];
+    memset(res, 0, sizeof res);
+    const char *pn = bloom_preset_name(c->preset);
+    frame_t ref = run_engine_aux(c, src, aux, aux_stride);
+    bloom_info_t info;
+    CHECK(bloom_query(c, &info) == BLOOM_OK);
+    guarded_t ws = guarded_alloc(info.workspace_bytes);
+    bloom_t *b = NULL;
+    CHECKF(bloom_init(&b, ws.p, info.workspace_bytes - 1, c) == BLOOM_E_WORKSPACE, "%s: one byte short", pn);
+    CHECK(bloom_init(&b, ws.p, info.workspace_bytes, c) == BLOOM_OK);
+    for (int frame = 0; frame < 2; frame++) {
+        rows_check_t *rc = &res[frame];
+        rc->source_rows = info.source_rows;
+        frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
+        CHECK(bloom_begin(b) == BLOOM_OK);
+        CHECK(bloom_pull_row(b, out.p) == BLOOM_AGAIN);
+        if (aux) {
+            CHECKF(bloom_push_row(b, src->p) == BLOOM_E_AUX, "%s: a push without the aux row", pn);
+            CHECK(bloom_rows_in(b) == 0);
+        }
+        bloom_status_t st = BLOOM_OK;
+        while (bloom_rows_in(b) < c->height) {
+            const int r = bloom_rows_in(b);
+            const uint8_t *row = src->p + (size_t)r * src->stride;
+            st = aux ? bloom_push_row_aux(b, row, (const uint8_t *)aux + (ptrdiff_t)r * aux_stride)
+                     : bloom_push_row(b, row);
+            if (st == BLOOM_E_BUSY) { /* drain and retry */
+                rc->busy++;
+                if (!rc->pushed_before_pull)
+                    rc->pushed_before_pull = r;
+                while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
+                    ;
+                CHECK(st == BLOOM_AGAIN);
+            } else if (st != BLOOM_OK) {
+                break;
+            }
+        }
+        CHECK(st != BLOOM_E_INTERNAL);
+        while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
+            ;
+        CHECK(st == BLOOM_DONE);
+        CHECK((aux ? bloom_push_row_aux(b, src->p, aux) : bloom_push_row(b, src->p)) == BLOOM_E_STATE);
+        CHECKF(frame_equal(&out, &ref), "%s: row interface (frame %d) = whole frame", pn, frame);
+        CHECKF(rc->busy > 0 || info.source_rows >= c->height, "%s: ring fills when pushing without pulling (%d)",
+               pn, rc->busy);
+        frame_free(&out);
+    }
+    CHECKF(res[1].busy == res[0].busy && res[1].pushed_before_pull == res[0].pushed_before_pull,
+           "%s: second frame BUSY %d times from row %d (first %d from %d)", pn, res[1].busy,
+           res[1].pushed_before_pull, res[0].busy, res[0].pushed_before_pull);
+    /* in place: dst aliases src */
+    frame_t inpl = frame_alloc(c->width, c->height, c->in_fmt, 0);
+    memcpy(inpl.p, src->p, src->bytes);
+    if (aux)
+        CHECK(bloom_set_aux(b, aux, aux_stride) == BLOOM_OK);
+    CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
+    CHECKF(frame_equal(&inpl, &ref), "%s: in place = out of place", pn);
+    CHECK(guarded_intact(&ws));
+    guarded_free(&ws);
+    frame_free(&inpl);
+    frame_free(&ref);
+    return res[0];
 }
 
 /* A deterministic aux plane: a smooth ramp plus noise (depth, mask or map),

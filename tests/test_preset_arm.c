@@ -473,8 +473,8 @@ static void bad_params(void)
     CHECK(bloom_workspace_size(&c) == 0);
 }
 
-/* Row interface with a mask: push several rows before pulling, BUSY when
- * the ring is full, the mask row required, one byte short refused, in place. */
+/* Row interface with a mask (preset_check_rows): the ring fills after
+ * more than one row pushed without pulling. */
 static void row_interface(void)
 {
     bloom_config_t c;
@@ -487,48 +487,9 @@ static void row_interface(void)
     uint8_t *mask = (uint8_t *)xmalloc(40 * 30);
     for (int i = 0; i < 40 * 30; i++)
         mask[i] = (uint8_t)(i % 251);
-    frame_t ref = run_engine_aux(&c, &src, mask, 40);
-    bloom_info_t info;
-    CHECK(bloom_query(&c, &info) == BLOOM_OK);
-    guarded_t ws = guarded_alloc(info.workspace_bytes);
-    bloom_t *b = NULL;
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes - 1, &c) == BLOOM_E_WORKSPACE);
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes, &c) == BLOOM_OK);
-    CHECK(bloom_push_row(b, src.p) == BLOOM_E_AUX);
-    frame_t out = frame_alloc(40, 30, c.out_fmt, 0);
-    int busy = 0, pushed_before_pull = 0;
-    bloom_status_t st = BLOOM_OK;
-    while (bloom_rows_in(b) < 30) {
-        const int r = bloom_rows_in(b);
-        st = bloom_push_row_aux(b, src.p + (size_t)r * src.stride, mask + 40 * r);
-        if (st == BLOOM_E_BUSY) {
-            busy++;
-            if (!pushed_before_pull)
-                pushed_before_pull = bloom_rows_in(b);
-            while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                ;
-            CHECK(st == BLOOM_AGAIN);
-        } else if (st != BLOOM_OK) {
-            break;
-        }
-    }
-    CHECK(st != BLOOM_E_INTERNAL);
-    while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-        ;
-    CHECK(st == BLOOM_DONE);
-    CHECK(frame_equal(&out, &ref));
-    CHECKF(busy > 0 && pushed_before_pull > 1, "ring fills after %d rows pushed without pulling (%d BUSY)",
-           pushed_before_pull, busy);
-    frame_t inpl = frame_alloc(40, 30, c.in_fmt, 0);
-    memcpy(inpl.p, src.p, src.bytes);
-    CHECK(bloom_set_aux(b, mask, 40) == BLOOM_OK);
-    CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
-    CHECKF(frame_equal(&inpl, &ref), "in place = out of place");
-    CHECK(guarded_intact(&ws));
-    guarded_free(&ws);
-    frame_free(&inpl);
-    frame_free(&out);
-    frame_free(&ref);
+    const rows_check_t rc = preset_check_rows(&c, &src, mask, 40);
+    CHECKF(rc.busy > 0 && rc.pushed_before_pull > 1, "ring fills after %d rows pushed without pulling (%d BUSY)",
+           rc.pushed_before_pull, rc.busy);
     frame_free(&src);
     free(mask);
 }

@@ -470,51 +470,14 @@ static void bad_params(void)
     CHECKF(bad == 0, "cod defaults: threshold 0, tint 1, Bevy NATURAL weights for the frame's L (%d bad)", bad);
 }
 
-/* Row interface: several rows pushed before pulling, BUSY, in place. */
+/* Row interface (preset_check_rows). */
 static void rows(void)
 {
     bloom_config_t c;
     bloom_config_default(&c, 41, 29);
     set_params(&c, P_OLD_SCHOOL, 3);
     frame_t src = frame_random(&c, c.in_fmt, 5);
-    frame_t ref = run_engine(&c, &src);
-    bloom_info_t info;
-    CHECK(bloom_query(&c, &info) == BLOOM_OK);
-    guarded_t ws = guarded_alloc(info.workspace_bytes);
-    bloom_t *b = NULL;
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes - 1, &c) == BLOOM_E_WORKSPACE);
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes, &c) == BLOOM_OK);
-    CHECK(bloom_begin(b) == BLOOM_OK);
-    frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
-    int busy = 0;
-    bloom_status_t st = BLOOM_OK;
-    while (bloom_rows_in(b) < c.height) {
-        const int r = bloom_rows_in(b);
-        st = bloom_push_row(b, src.p + (size_t)r * src.stride);
-        if (st == BLOOM_E_BUSY) {
-            busy++;
-            while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                ;
-            CHECK(st == BLOOM_AGAIN);
-        } else if (st != BLOOM_OK) {
-            break;
-        }
-    }
-    CHECK(st != BLOOM_E_INTERNAL);
-    while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-        ;
-    CHECK(st == BLOOM_DONE);
-    CHECK(frame_equal(&out, &ref));
-    CHECKF(busy > 0 || info.source_rows >= c.height, "cod: ring fills when pushing without pulling (%d)", busy);
-    frame_t inpl = frame_alloc(c.width, c.height, c.in_fmt, 0);
-    memcpy(inpl.p, src.p, src.bytes);
-    CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
-    CHECK(frame_equal(&inpl, &ref));
-    CHECK(guarded_intact(&ws));
-    guarded_free(&ws);
-    frame_free(&inpl);
-    frame_free(&out);
-    frame_free(&ref);
+    preset_check_rows(&c, &src, NULL, 0);
     frame_free(&src);
 }
 

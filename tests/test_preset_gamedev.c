@@ -407,55 +407,16 @@ static void bad_params(void)
     CHECK(bloom_query(&c, &info) == BLOOM_E_FORMAT);
 }
 
-/* Row interface: push several rows before pulling, BUSY when the source
- * ring is full, a workspace one byte short, in place. */
+/* Row interface (preset_check_rows): BUSY once the source ring's rows are
+ * all pushed. */
 static void rows(void)
 {
     bloom_config_t c = gd_config(50, 90);
     c.threshold = BLOOM_Q16(0.3);
     frame_t src = frame_random(&c, c.in_fmt, 8);
-    frame_t ref = run_engine(&c, &src);
-    bloom_info_t info;
-    CHECK(bloom_query(&c, &info) == BLOOM_OK);
-    guarded_t ws = guarded_alloc(info.workspace_bytes);
-    bloom_t *b = NULL;
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes - 1, &c) == BLOOM_E_WORKSPACE);
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes, &c) == BLOOM_OK);
-    CHECK(bloom_begin(b) == BLOOM_OK);
-    frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
-    int busy = 0, pushed_before_pull = 0;
-    bloom_status_t st = BLOOM_OK;
-    while (bloom_rows_in(b) < c.height) {
-        const int r = bloom_rows_in(b);
-        st = bloom_push_row(b, src.p + (size_t)r * src.stride);
-        if (st == BLOOM_E_BUSY) {
-            busy++;
-            if (!pushed_before_pull)
-                pushed_before_pull = r;
-            while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                ;
-            CHECK(st == BLOOM_AGAIN);
-        } else if (st != BLOOM_OK) {
-            break;
-        }
-    }
-    CHECK(st != BLOOM_E_INTERNAL);
-    while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-        ;
-    CHECK(st == BLOOM_DONE);
-    CHECKF(frame_equal(&out, &ref), "gamedev rows: push-before-pull gives the frame's output");
-    CHECKF(busy > 0 && pushed_before_pull == info.source_rows, "gamedev rows: BUSY after %d rows (source_rows %d)",
-           pushed_before_pull, info.source_rows);
-    /* in place */
-    frame_t inpl = frame_alloc(c.width, c.height, c.in_fmt, 0);
-    memcpy(inpl.p, src.p, src.bytes);
-    CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
-    CHECKF(frame_equal(&inpl, &ref), "gamedev rows: in place");
-    CHECK(guarded_intact(&ws));
-    guarded_free(&ws);
-    frame_free(&inpl);
-    frame_free(&out);
-    frame_free(&ref);
+    const rows_check_t rc = preset_check_rows(&c, &src, NULL, 0);
+    CHECKF(rc.busy > 0 && rc.pushed_before_pull == rc.source_rows, "gamedev rows: BUSY after %d rows (source_rows %d)",
+           rc.pushed_before_pull, rc.source_rows);
     frame_free(&src);
 }
 #endif

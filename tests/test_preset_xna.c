@@ -453,64 +453,22 @@ static void bad_parameters(void)
     frame_free(&src);
 }
 
-/* Row interface: push several rows before pulling, BUSY when the source
- * ring is full, pull until DONE, COPY_SOURCE, in place, a second frame. */
+/* Row interface (preset_check_rows), with and without COPY_SOURCE: the
+ * ring fills after more than one row pushed without pulling. */
 static void row_interface(void)
 {
     const xna_par_t par = {BLOOM_Q16(0.3), BLOOM_Q16(1.3), 4, 0};
     bloom_config_t c = xna_cfg(52, 90, BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, &par);
     frame_t src = frame_random(&c, c.in_fmt, 11);
-    frame_t ref = run_engine(&c, &src);
     for (int copy = 0; copy < 2; copy++) {
         bloom_config_t cc = c;
         if (copy)
             cc.flags |= BLOOM_FLAG_COPY_SOURCE;
-        bloom_info_t info;
-        CHECK(bloom_query(&cc, &info) == BLOOM_OK);
-        guarded_t ws = guarded_alloc(info.workspace_bytes);
-        bloom_t *b = NULL;
-        CHECK(bloom_init(&b, ws.p, info.workspace_bytes - 1, &cc) == BLOOM_E_WORKSPACE);
-        CHECK(bloom_init(&b, ws.p, info.workspace_bytes, &cc) == BLOOM_OK);
-        for (int frame = 0; frame < 2; frame++) {
-            frame_t out = frame_alloc(c.width, c.height, c.out_fmt, 0);
-            CHECK(bloom_begin(b) == BLOOM_OK);
-            CHECK(bloom_pull_row(b, out.p) == BLOOM_AGAIN);
-            int busy = 0, pushed_before_pull = 0;
-            bloom_status_t st = BLOOM_OK;
-            while (bloom_rows_in(b) < c.height) {
-                const int r = bloom_rows_in(b);
-                st = bloom_push_row(b, src.p + (size_t)r * src.stride);
-                if (st == BLOOM_E_BUSY) {
-                    busy++;
-                    if (!pushed_before_pull)
-                        pushed_before_pull = r;
-                    while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                        ;
-                    CHECK(st == BLOOM_AGAIN);
-                } else if (st != BLOOM_OK) {
-                    break;
-                }
-            }
-            CHECK(st != BLOOM_E_INTERNAL);
-            while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                ;
-            CHECK(st == BLOOM_DONE);
-            CHECK(bloom_push_row(b, src.p) == BLOOM_E_STATE);
-            CHECKF(frame_equal(&out, &ref), "row interface (copy %d, frame %d) = whole frame", copy, frame);
-            CHECKF(busy > 0 && pushed_before_pull > 1, "pushed %d rows before the first BUSY (source ring %d rows)",
-                   pushed_before_pull, info.source_rows);
-            frame_free(&out);
-        }
-        /* in place: dst aliases src */
-        frame_t inpl = frame_alloc(c.width, c.height, c.in_fmt, 0);
-        memcpy(inpl.p, src.p, src.bytes);
-        CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
-        CHECKF(frame_equal(&inpl, &ref), "in place (copy %d)", copy);
-        CHECK(guarded_intact(&ws));
-        frame_free(&inpl);
-        guarded_free(&ws);
+        const rows_check_t rc = preset_check_rows(&cc, &src, NULL, 0);
+        CHECKF(rc.busy > 0 && rc.pushed_before_pull > 1,
+               "copy %d: pushed %d rows before the first BUSY (source ring %d rows)", copy, rc.pushed_before_pull,
+               rc.source_rows);
     }
-    frame_free(&ref);
     frame_free(&src);
 }
 

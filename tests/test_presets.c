@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "harness.h"
-#include "testutil.h"
+#include "preset_conform.h"
 
 static void test_names(void)
 {
@@ -69,6 +69,93 @@ static void test_config_checks(void)
 #endif
 }
 
+/* bloom_query's status for preset p at its defaults with parameter bit
+ * (BLOOM_PARAM_*) out of range, or with the preset flag or an aux plane
+ * bit stands for; if_read, if_not: the status a preset that reads it,
+ * and one that does not, gives. */
+static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t *if_read, bloom_status_t *if_not)
+{
+    bloom_config_t c;
+    bloom_info_t info;
+    bloom_config_default(&c, 64, 48);
+    bloom_config_preset(&c, p);
+    *if_not = BLOOM_OK; /* a parameter the preset does not read is ignored */
+    switch (bit) {
+    case BLOOM_PARAM_STRENGTH: c.p.strength = UINT32_MAX; *if_read = BLOOM_E_STRENGTH; break;
+    case BLOOM_PARAM_PASSES: c.p.passes = 0; *if_read = BLOOM_E_PASSES; break;
+    case BLOOM_PARAM_ATTENUATION: c.p.attenuation = BLOOM_ONE + 1u; *if_read = BLOOM_E_ATTENUATION; break;
+    case BLOOM_PARAM_MAX_REDUCTION: c.p.max_reduction = BLOOM_ONE + 1u; *if_read = BLOOM_E_ATTENUATION; break;
+    case BLOOM_PARAM_TINT: c.p.tint[1] = BLOOM_ONE + 1u; *if_read = BLOOM_E_TINT; break;
+    case BLOOM_PARAM_WEIGHTS: c.p.level_weight[2] = BLOOM_ONE + 1u; *if_read = BLOOM_E_WEIGHT; break;
+    case BLOOM_PARAM_AUX: /* an aux plane: accepted or refused */
+        c.aux_fmt = BLOOM_AUX_U8;
+        *if_read = BLOOM_OK;
+        *if_not = BLOOM_E_AUX;
+        break;
+    default: /* a preset flag: accepted (with an aux plane if the preset reads one) or refused */
+        c.flags |= bit == BLOOM_PARAM_SATURATE   ? (uint32_t)BLOOM_FLAG_SATURATE
+                   : bit == BLOOM_PARAM_ADDITIVE ? (uint32_t)BLOOM_FLAG_ADDITIVE
+                                                 : (uint32_t)BLOOM_FLAG_BAKED;
+        if (bloom_preset_params(p) & BLOOM_PARAM_AUX)
+            c.aux_fmt = BLOOM_AUX_U8;
+        *if_read = BLOOM_OK;
+        *if_not = BLOOM_E_FLAGS;
+    }
+    return bloom_query(&c, &info);
+}
+
+/* bloom_preset_params against what the presets accept and refuse: a value
+ * out of range of a parameter a preset reads is refused, one it does not
+ * read is ignored; a preset flag or an aux plane is accepted by the
+ * presets that read it and refused by the others; RADIUS by the presets
+ * whose defaults follow the level count. */
+static void test_preset_params(void)
+{
+    static const uint32_t bits[] = {BLOOM_PARAM_STRENGTH, BLOOM_PARAM_PASSES, BLOOM_PARAM_ATTENUATION,
+                                    BLOOM_PARAM_MAX_REDUCTION, BLOOM_PARAM_AUX, BLOOM_PARAM_TINT,
+                                    BLOOM_PARAM_WEIGHTS, BLOOM_PARAM_SATURATE, BLOOM_PARAM_ADDITIVE,
+                                    BLOOM_PARAM_BAKED, BLOOM_PARAM_RADIUS};
+    const size_t nbits = sizeof bits / sizeof bits[0];
+    uint32_t all = 0;
+    for (size_t i = 0; i < nbits; i++) {
+        CHECK((all & bits[i]) == 0);
+        all |= bits[i];
+    }
+    CHECK(bloom_preset_params(BLOOM_PRESET_UNITY) == 0);
+    CHECK(bloom_preset_params(BLOOM_PRESET_COUNT) == 0);
+    CHECK(bloom_preset_params((bloom_preset_t)-1) == 0);
+    uint32_t seen = 0;
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        const bloom_preset_t pr = (bloom_preset_t)p;
+        const uint32_t reads = bloom_preset_params(pr);
+        const char *pn = bloom_preset_name(pr);
+        seen |= reads;
+        CHECKF((reads & ~all) == 0, "%s: only known bits (%#x)", pn, (unsigned)reads);
+        if (!bloom_preset_available(pr))
+            continue;
+        for (size_t i = 0; i < nbits; i++) {
+            if (bits[i] == BLOOM_PARAM_RADIUS)
+                continue;
+            bloom_status_t if_read, if_not;
+            const bloom_status_t st = query_with(pr, bits[i], &if_read, &if_not);
+            const int r = (reads & bits[i]) != 0;
+            CHECKF(st == (r ? if_read : if_not), "%s %s parameter %#x: status %d, expected %d", pn,
+                   r ? "reads" : "does not read", (unsigned)bits[i], (int)st, (int)(r ? if_read : if_not));
+        }
+        bloom_config_t c3, c6;
+        bloom_config_default(&c3, 64, 48);
+        bloom_config_default(&c6, 64, 48);
+        c3.levels = 3;
+        c6.levels = 6;
+        bloom_config_preset(&c3, pr);
+        bloom_config_preset(&c6, pr);
+        const int follows = memcmp(&c3.p, &c6.p, sizeof c3.p) != 0;
+        CHECKF(follows == ((reads & BLOOM_PARAM_RADIUS) != 0), "%s: RADIUS %s, defaults follow the level count %d",
+               pn, (reads & BLOOM_PARAM_RADIUS) ? "read" : "not read", follows);
+    }
+    CHECKF(seen == all, "every bit read by some preset (%#x of %#x)", (unsigned)seen, (unsigned)all);
+}
+
 #if BLOOM_USE_ATTENUATION
 /* The attenuation preset with a = 0 multiplies by exactly 1: the graph
  * engine must then give the default engine's bytes, at every size, depth,
@@ -117,8 +204,7 @@ static void test_graph_equals_default(void)
            runs);
 }
 
-/* Row interface: push several rows before pulling, BUSY when the ring is
- * full, aux required, workspace one byte short refused, in-place output. */
+/* Row interface with the depth plane (preset_check_rows). */
 static void test_graph_rows(void)
 {
     bloom_config_t c;
@@ -129,48 +215,7 @@ static void test_graph_rows(void)
     uint8_t *depth = (uint8_t *)xmalloc(40 * 30);
     for (int i = 0; i < 40 * 30; i++)
         depth[i] = (uint8_t)(i % 251);
-    frame_t ref = run_engine_aux(&c, &src, depth, 40);
-
-    bloom_info_t info;
-    CHECK(bloom_query(&c, &info) == BLOOM_OK);
-    guarded_t ws = guarded_alloc(info.workspace_bytes);
-    bloom_t *b = NULL;
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes - 1, &c) == BLOOM_E_WORKSPACE);
-    CHECK(bloom_init(&b, ws.p, info.workspace_bytes, &c) == BLOOM_OK);
-    CHECK(bloom_push_row(b, src.p) == BLOOM_E_AUX); /* the preset needs its depth row */
-    CHECK(bloom_rows_in(b) == 0);
-    frame_t out = frame_alloc(40, 30, c.out_fmt, 0);
-    int busy = 0;
-    bloom_status_t st = BLOOM_OK;
-    while (bloom_rows_in(b) < 30) {
-        const int r = bloom_rows_in(b);
-        st = bloom_push_row_aux(b, src.p + (size_t)r * src.stride, depth + 40 * r);
-        if (st == BLOOM_E_BUSY) { /* drain and retry */
-            busy++;
-            while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-                ;
-            CHECK(st == BLOOM_AGAIN);
-        } else if (st != BLOOM_OK) {
-            break;
-        }
-    }
-    CHECK(st != BLOOM_E_INTERNAL);
-    while ((st = bloom_pull_row(b, out.p + (size_t)bloom_rows_out(b) * out.stride)) == BLOOM_OK)
-        ;
-    CHECK(st == BLOOM_DONE);
-    CHECK(frame_equal(&out, &ref));
-    CHECKF(busy > 0 || info.source_rows >= 30, "ring fills when pushing without pulling (%d)", busy);
-    /* in place: dst aliases src */
-    frame_t inpl = frame_alloc(40, 30, c.in_fmt, 0);
-    memcpy(inpl.p, src.p, src.bytes);
-    CHECK(bloom_set_aux(b, depth, 40) == BLOOM_OK);
-    CHECK(bloom_process(b, inpl.p, (ptrdiff_t)inpl.stride, inpl.p, (ptrdiff_t)inpl.stride) == BLOOM_OK);
-    CHECK(frame_equal(&inpl, &ref));
-    CHECK(guarded_intact(&ws));
-    guarded_free(&ws);
-    frame_free(&inpl);
-    frame_free(&out);
-    frame_free(&ref);
+    preset_check_rows(&c, &src, depth, 40);
     frame_free(&src);
     free(depth);
 }
@@ -180,6 +225,7 @@ int main(void)
 {
     test_names();
     test_config_checks();
+    test_preset_params();
 #if BLOOM_USE_ATTENUATION
     test_graph_equals_default();
     test_graph_rows();

@@ -153,31 +153,25 @@ static int parse_list01(const char *s, uint32_t *out, int max)
     }
 }
 
-/* The options given, applied over the preset's defaults at the end. */
+/* The options given, applied over the preset's defaults at the end; a
+ * preset parameter's bit is its BLOOM_PARAM_* bit. */
 enum {
-    G_LEVELS = 1u << 0, G_THRESHOLD = 1u << 1, G_KNEE = 1u << 2, G_INTENSITY = 1u << 3,
-    G_STRENGTH = 1u << 4, G_PASSES = 1u << 5, G_SATURATE = 1u << 6, G_ATTENUATION = 1u << 7,
-    G_MAX_REDUCTION = 1u << 8, G_AUX = 1u << 9, G_TINT = 1u << 10, G_WEIGHTS = 1u << 11,
-    G_ADDITIVE = 1u << 12, G_BAKED = 1u << 13, G_RADIUS = 1u << 14
+    G_STRENGTH = BLOOM_PARAM_STRENGTH, G_PASSES = BLOOM_PARAM_PASSES, G_SATURATE = BLOOM_PARAM_SATURATE,
+    G_ATTENUATION = BLOOM_PARAM_ATTENUATION, G_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION, G_AUX = BLOOM_PARAM_AUX,
+    G_TINT = BLOOM_PARAM_TINT, G_WEIGHTS = BLOOM_PARAM_WEIGHTS, G_ADDITIVE = BLOOM_PARAM_ADDITIVE,
+    G_BAKED = BLOOM_PARAM_BAKED, G_RADIUS = BLOOM_PARAM_RADIUS,
+    G_LEVELS = 1u << 16, G_THRESHOLD = 1u << 17, G_KNEE = 1u << 18, G_INTENSITY = 1u << 19
 };
-#define PB(p) (1u << (p))
-/* Which presets read each option (bloom.h); the others refuse it by name. */
+/* The option of each preset parameter; the presets that do not read it
+ * (bloom_preset_params) refuse it by name. */
 static const struct {
     unsigned bit;
     const char *opt;
-    unsigned presets;
-} param_use[] = {
-    {G_STRENGTH, "--strength", PB(BLOOM_PRESET_GAMEDEV) | PB(BLOOM_PRESET_ARM)},
-    {G_PASSES, "--passes", PB(BLOOM_PRESET_XNA)},
-    {G_SATURATE, "--saturate", PB(BLOOM_PRESET_XNA)},
-    {G_ATTENUATION, "--attenuation", PB(BLOOM_PRESET_ATTENUATION)},
-    {G_MAX_REDUCTION, "--max-reduction", PB(BLOOM_PRESET_ATTENUATION)},
-    {G_AUX, "--aux", PB(BLOOM_PRESET_ATTENUATION) | PB(BLOOM_PRESET_ARM)},
-    {G_TINT, "--tint", PB(BLOOM_PRESET_COD) | PB(BLOOM_PRESET_ARM)},
-    {G_WEIGHTS, "--weights", PB(BLOOM_PRESET_COD)},
-    {G_ADDITIVE, "--additive", PB(BLOOM_PRESET_COD)},
-    {G_BAKED, "--baked", PB(BLOOM_PRESET_ARM)},
-    {G_RADIUS, "--radius", PB(BLOOM_PRESET_COD)},
+} param_opt[] = {
+    {G_STRENGTH, "--strength"}, {G_PASSES, "--passes"}, {G_SATURATE, "--saturate"},
+    {G_ATTENUATION, "--attenuation"}, {G_MAX_REDUCTION, "--max-reduction"}, {G_AUX, "--aux"},
+    {G_TINT, "--tint"}, {G_WEIGHTS, "--weights"}, {G_ADDITIVE, "--additive"},
+    {G_BAKED, "--baked"}, {G_RADIUS, "--radius"},
 };
 
 /* "unity, attenuation": the presets this build carries. */
@@ -390,16 +384,16 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     }
     /* the preset's defaults, then what was given */
     const char *pn = bloom_preset_name(o->preset);
-    for (size_t k = 0; k < sizeof param_use / sizeof param_use[0]; k++)
-        if ((given & param_use[k].bit) && !(param_use[k].presets & PB(o->preset))) {
+    for (size_t k = 0; k < sizeof param_opt / sizeof param_opt[0]; k++)
+        if ((given & param_opt[k].bit) && !(bloom_preset_params(o->preset) & param_opt[k].bit)) {
             char who[64] = "";
             size_t n = 0;
             for (int q = 0; q < BLOOM_PRESET_COUNT; q++)
-                if (param_use[k].presets & PB(q))
+                if (bloom_preset_params((bloom_preset_t)q) & param_opt[k].bit)
                     n += (size_t)snprintf(who + n, sizeof who - n, "%s%s", n ? " or " : "",
                                           bloom_preset_name((bloom_preset_t)q));
             return fail(err, errlen, "%s applies to the %s preset, not %s (give --preset)",
-                        param_use[k].opt, who, pn);
+                        param_opt[k].opt, who, pn);
         }
     if ((given & G_RADIUS) && (given & G_LEVELS))
         return fail(err, errlen, "--radius chooses the level count: give --radius or --levels");
