@@ -226,8 +226,10 @@ for wh in 160x120 320x240 640x480; do
 done
 cat <<EOF
 
-One-channel modes (a single luminance bloom plane) do not exist yet; they
-are a later issue, so there are no figures for them.
+These builds carry the default preset only (\`BLOOM_USE_<PRESET>=0\` for the
+others). The one-channel luminance bloom plane is the \`arm\` preset
+(sim/docs/presets/arm.md): its rings are a third of the default's per row;
+its host workspace is in README's preset table.
 EOF
 } >"$dest.tmp" && mv "$dest.tmp" "$dest" || fail "could not write $dest"
 echo "figures: wrote $dest"

@@ -457,6 +457,8 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         bloom_t *b;
         if ((st = bloom_init(&b, ws, info.workspace_bytes, &cfg)) != BLOOM_OK)
             die("bloom_init: %s", bloom_status_str(st));
+        if (bench_engine_attach(b, &cfg))
+            die("aux plane for %s", e->name);
         engine_ctx_t ec = {b, (ptrdiff_t)bloom_format_bpp(cfg.in_fmt) * w,
                            (ptrdiff_t)bloom_format_bpp(cfg.out_fmt) * w};
         if (measure(ring, run_engine, &ec, o->warm, o->runs, r))

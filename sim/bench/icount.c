@@ -65,6 +65,8 @@ int main(int argc, char **argv)
     bloom_t *b;
     if ((st = bloom_init(&b, ws, info.workspace_bytes, &cfg)) != BLOOM_OK)
         return fail("bloom_init", bloom_status_str(st));
+    if (bench_engine_attach(b, &cfg))
+        return fail("aux plane", e->name);
 
     st = bloom_process(b, src, (ptrdiff_t)(ibpp * (size_t)w), dst, (ptrdiff_t)(obpp * (size_t)w));
     if (st != BLOOM_OK)

@@ -31,5 +31,9 @@ extern const int bench_engine_count;
 
 /* Fills cfg for row e at w x h. Returns 0, or -1 if the row is skipped. */
 int bench_engine_config(const bench_engine_t *e, int w, int h, bloom_config_t *cfg);
+/* After bloom_init: gives an engine whose preset reads an aux plane a
+ * synthetic one (a horizontal depth ramp: near at the left; no mask
+ * effect for arm, which has none by default). Returns 0 or -1. */
+int bench_engine_attach(bloom_t *b, const bloom_config_t *cfg);
 
 #endif
