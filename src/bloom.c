@@ -16,19 +16,6 @@
 #include "bloom_graph.h"
 #include "bloom_internal.h"
 
-static inline int imin(int a, int b)
-{
-    return a < b ? a : b;
-}
-static inline int imax(int a, int b)
-{
-    return a > b ? a : b;
-}
-static inline int clampi(int v, int lo, int hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
-
 int bloom_format_bpp(bloom_format_t fmt)
 {
     switch (fmt) {

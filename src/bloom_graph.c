@@ -10,19 +10,6 @@
 
 #if BLOOM_USE_GRAPH
 
-static inline int imin(int a, int b)
-{
-    return a < b ? a : b;
-}
-static inline int imax(int a, int b)
-{
-    return a > b ? a : b;
-}
-static inline int clampi(int v, int lo, int hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
-
 #define FAR (1 << 30)
 
 const bloom_preset_ops_t *bloom_preset_ops(bloom_preset_t p)

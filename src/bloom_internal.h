@@ -20,6 +20,20 @@
 #define BLOOM_LIN_ONE (1u << BLOOM_LIN_BITS)
 #define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << BLOOM_Q16_SHIFT) /* 2^28 - 16 at 20 bits */
 
+/* Small integer helpers shared by the core's files. */
+static inline int imin(int a, int b)
+{
+    return a < b ? a : b;
+}
+static inline int imax(int a, int b)
+{
+    return a > b ? a : b;
+}
+static inline int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
 /* Internal -> Q16.16, round half up. */
 static inline uint32_t bloom_lin_to_q16(uint32_t v)
 {

@@ -28,11 +28,6 @@
 #define ARM_WG 46871u
 #define ARM_WB 4732u
 
-static inline int imin(int a, int b)
-{
-    return a < b ? a : b;
-}
-
 /* A mask or map code as Q16 (0 .. 65536), = bg_aux_q16: U8 c*65536/255
  * rounded = 257c + (c >= 128); U16 c*65536/65535 rounded. */
 static inline uint32_t aux_q16(const uint8_t *row, int x, bool u16)

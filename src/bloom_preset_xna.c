@@ -32,11 +32,6 @@
 #define XNA_LAST 2u
 #define XNA_SAT 4u
 
-static inline int imin_(int a, int b)
-{
-    return a < b ? a : b;
-}
-
 /* Half resolution: 4x4 box of the source rows base-1 .. base+2 (input 0). */
 static void fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
@@ -93,7 +88,7 @@ static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r, const v
     for (int j = 0; j < cnt; j++)
         cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
     /* interior columns need no clamping: i + 1 <= x <= w - i - 2 */
-    const int xa = imin_(i + 1, w), xb = w - i - 1 > xa ? w - i - 1 : xa;
+    const int xa = imin(i + 1, w), xb = w - i - 1 > xa ? w - i - 1 : xa;
     kawase_h(cs, row, 0, xa, i, w);
     for (int x = xa; x < xb; x++) {
         const uint32_t *a = cs + 3 * (x - i - 1), *c = cs + 3 * (x + i);
@@ -149,7 +144,7 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const int w = n->w, sw = g->node[n->in[1].node].w;
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
-        const int cnt = imin_(BLOOM_OUT_CHUNK, w - x0);
+        const int cnt = imin(BLOOM_OUT_CHUNK, w - x0);
         g->kern.tent(u, r & 1, NULL, bl, x0, cnt, sw);
         if (!o->debug) {
             /* the source row is read before the encoded row is written: dst may alias src */

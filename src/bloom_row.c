@@ -5,15 +5,6 @@
 
 #include "bloom_pixel.h"
 
-static inline int imin(int a, int b)
-{
-    return a < b ? a : b;
-}
-static inline int imax(int a, int b)
-{
-    return a > b ? a : b;
-}
-
 /* Column sum of four rows at column c (three channels). */
 static inline void colsum4(const uint32_t *const s[4], int c, uint32_t out[3])
 {
