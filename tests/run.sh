@@ -30,7 +30,7 @@ done
 [ "$1" = "--" ] && shift
 for c in "$@"; do
     t0=$(date +%s)
-    if make -s "$c" >"$log" 2>&1; then
+    if make -s -j2 "$c" >"$log" 2>&1; then
         if grep -q '^skipped:' "$log"; then
             skip=$((skip + 1))
             printf '%-22s %s\n' "$c" "$(grep '^skipped:' "$log" | head -n 1)"
