@@ -84,9 +84,13 @@ freestanding: | $(B)/arm
 	echo "freestanding: Cortex-M4 core references only:" $$undef
 
 # clang's sanitizers check more than gcc's (an offset on a null pointer, ...).
-$(B)/clangsan/%: tests/%.c $(wildcard tests/*.h) $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
+CLANGSAN_OBJ := $(patsubst %.c,$(B)/clangsan/obj/%.o,$(CORE_SRC) $(SIM_SRC))
+$(B)/clangsan/obj/%.o: %.c $(CORE_HDR) $(SIM_HDR)
+	@mkdir -p $(@D)
+	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) -c $< -o $@
+$(B)/clangsan/%: tests/%.c $(wildcard tests/*.h) $(CLANGSAN_OBJ) $(CORE_HDR) $(SIM_HDR)
 	@mkdir -p $(B)/clangsan
-	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
+	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CLANGSAN_OBJ) -lm -o $@
 test-clang-san: $(B)/clangsan/test_core $(B)/clangsan/test_extreme
 	@echo "clang -fsanitize=address,undefined:"
 	@for t in test_core test_extreme; do \

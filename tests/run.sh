@@ -22,11 +22,23 @@ count() { # name, exit status, log file
     # the figures a test prints (and, on failure, what failed)
     grep -vE '^[0-9]+ passed, [0-9]+ failed' "$3" | sed 's/^/    /' | tail -n 40
 }
+# The test binaries are independent processes: two at a time (xargs -P 2),
+# each into its own log; reported in order.
+tdir=$(mktemp -d)
+names=""
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
-    t0=$(date +%s)
-    "$bindir/$1" >"$log" 2>&1; count "$1" $? "$log"
+    names="$names $1"
     shift
 done
+# shellcheck disable=SC2086
+printf '%s\n' $names | xargs -P 2 -I{} sh -c \
+    't0=$(date +%s); "$1/$2" >"$3/$2.log" 2>&1; echo $? >"$3/$2.rc"; echo $(( $(date +%s) - t0 )) >"$3/$2.sec"' \
+    sh "$bindir" {} "$tdir"
+for n in $names; do
+    t0=$(( $(date +%s) - $(cat "$tdir/$n.sec" 2>/dev/null || echo 0) ))
+    count "$n" "$(cat "$tdir/$n.rc" 2>/dev/null || echo 1)" "$tdir/$n.log"
+done
+rm -rf "$tdir"
 [ "$1" = "--" ] && shift
 for c in "$@"; do
     t0=$(date +%s)
