@@ -16,111 +16,6 @@
 #include "bloom_graph.h"
 #include "bloom_internal.h"
 
-int bloom_format_bpp(bloom_format_t fmt)
-{
-    switch (fmt) {
-#if BLOOM_USE_RGB888
-    case BLOOM_FMT_RGB888:
-        return 3;
-#endif
-#if BLOOM_USE_XRGB8888
-    case BLOOM_FMT_XRGB8888:
-        return 4;
-#endif
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565:
-        return 2;
-#endif
-#if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16:
-        return 12;
-#endif
-    default:
-        return 0;
-    }
-}
-
-const char *bloom_status_str(bloom_status_t st)
-{
-    switch (st) {
-    case BLOOM_OK: return "ok";
-    case BLOOM_AGAIN: return "no output row ready: push more source rows";
-    case BLOOM_DONE: return "frame complete";
-    case BLOOM_E_NULL: return "null pointer argument";
-    case BLOOM_E_SIZE: return "width and height must be 1 .. 16384";
-    case BLOOM_E_LEVELS: return "levels must be 1 .. 16";
-    case BLOOM_E_THRESHOLD: return "threshold above 256.0 (Q16.16 16777216)";
-    case BLOOM_E_KNEE: return "soft knee above 1.0 (Q16.16 65536)";
-    case BLOOM_E_INTENSITY: return "intensity above 10.0 (Q16.16 655360)";
-    case BLOOM_E_FORMAT: return "pixel format unknown or compiled out";
-    case BLOOM_E_FLAGS: return "unknown flag bits";
-    case BLOOM_E_WORKSPACE: return "workspace smaller than bloom_workspace_size()";
-    case BLOOM_E_ALIGN: return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
-    case BLOOM_E_BUSY: return "source ring full: pull output rows before pushing more";
-    case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
-    case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
-    case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
-    case BLOOM_E_PRESET: return "preset unknown or compiled out";
-    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
-#if BLOOM_USE_GRAPH /* only presets other than the default return these */
-    case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
-    case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";
-    case BLOOM_E_ATTENUATION: return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
-    case BLOOM_E_WEIGHT: return "level weight above 1.0 (Q16.16 65536)";
-    case BLOOM_E_TINT: return "tint above 1.0 (Q16.16 65536)";
-#else
-    default: break;
-#endif
-    }
-    return "unknown status";
-}
-
-void bloom_config_default(bloom_config_t *cfg, int width, int height)
-{
-    memset(cfg, 0, sizeof *cfg);
-    cfg->width = width;
-    cfg->height = height;
-    cfg->in_fmt = cfg->out_fmt = BLOOM_FMT_RGB888;
-    cfg->levels = 5;
-    cfg->threshold = BLOOM_ONE;
-    cfg->soft_knee = BLOOM_ONE / 2u;
-    cfg->intensity = BLOOM_ONE;
-    cfg->flags = 0;
-}
-
-#define PRESET_FLAGS (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE)
-
-static bloom_status_t validate(const bloom_config_t *c)
-{
-    if (c->width < 1 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM)
-        return BLOOM_E_SIZE;
-    if (c->levels < 1 || c->levels > BLOOM_MAX_LEVELS)
-        return BLOOM_E_LEVELS;
-    if (c->threshold > BLOOM_MAX_THRESHOLD)
-        return BLOOM_E_THRESHOLD;
-    if (c->soft_knee > BLOOM_ONE)
-        return BLOOM_E_KNEE;
-    if (c->intensity > BLOOM_MAX_INTENSITY)
-        return BLOOM_E_INTENSITY;
-    if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
-        return BLOOM_E_FORMAT;
-    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | PRESET_FLAGS))
-        return BLOOM_E_FLAGS;
-    if (c->preset != BLOOM_PRESET_UNITY) {
-#if BLOOM_USE_GRAPH
-        return bloom_graph_validate(c); /* the preset checks its own flags and aux plane */
-#else
-        return BLOOM_E_PRESET;
-#endif
-    }
-    if (c->flags & PRESET_FLAGS)
-        return BLOOM_E_FLAGS;
-    if (c->aux_fmt != BLOOM_AUX_NONE)
-        return BLOOM_E_AUX;
-    return BLOOM_OK;
-}
-
 #if BLOOM_USE_SKIP
 /* The largest code of each width whose decoded value the knee zeroes
  * (bmax <= t - k): rows without a larger code contribute nothing. */
@@ -495,24 +390,14 @@ static void dry_frame(bloom_t *b)
     }
 }
 
-static uint64_t align8(uint64_t n)
-{
-    return (n + 7u) & ~(uint64_t)7u;
-}
-
 /* Lay the rings out after the engine struct; with base NULL only count.
  * Counted in 64 bits: on a 32-bit target a huge configuration must be
  * refused (BLOOM_E_TOO_BIG), not wrap around. */
 static uint64_t carve(bloom_t *b, uint8_t *base, size_t *per_level)
 {
-    uint64_t off = align8(sizeof(bloom_t));
+    uint64_t off = bloom_align8(sizeof(bloom_t));
     const int cap_src = imax(b->need_src, 1);
-#define TAKE(ptr, type, count)                                   \
-    do {                                                         \
-        if (base)                                                \
-            (ptr) = (type *)(void *)(base + (size_t)off);        \
-        off = align8(off + sizeof(type) * (uint64_t)(count));    \
-    } while (0)
+#define TAKE(ptr, type, count) BLOOM_TAKE(base, off, ptr, type, count)
     if (b->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
         uint64_t before = off;
         TAKE(b->src_copy, uint8_t, (uint64_t)cap_src * b->src_row_bytes);
@@ -560,7 +445,7 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
 {
     if (!cfg)
         return BLOOM_E_NULL;
-    bloom_status_t st = validate(cfg);
+    bloom_status_t st = bloom_validate(cfg);
     if (st != BLOOM_OK)
         return st;
     setup(b, cfg);
@@ -577,8 +462,8 @@ static bloom_status_t plan(bloom_t *b, const bloom_config_t *cfg, bloom_info_t *
 
 #if BLOOM_USE_GRAPH
 /* A preset's engine: bloom_t (graph set), the graph, its rings. */
-#define GRAPH_OFF align8(sizeof(bloom_t))
-#define GRAPH_RINGS align8(GRAPH_OFF + sizeof(struct bloom_graph))
+#define GRAPH_OFF bloom_align8(sizeof(bloom_t))
+#define GRAPH_RINGS bloom_align8(GRAPH_OFF + sizeof(struct bloom_graph))
 
 /* Not inlined: the graph (about 6 KB) must not enlarge bloom_query's frame on
  * the default path (the Cortex-M stack figure). */
@@ -622,7 +507,7 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
 {
 #if BLOOM_USE_GRAPH
     if (cfg && cfg->preset != BLOOM_PRESET_UNITY) {
-        bloom_status_t st = validate(cfg);
+        bloom_status_t st = bloom_validate(cfg);
         return st != BLOOM_OK ? st : graph_query(cfg, info);
     }
 #endif
@@ -643,7 +528,7 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
     *out = NULL;
     if ((uintptr_t)ws % BLOOM_WORKSPACE_ALIGN)
         return BLOOM_E_ALIGN;
-    bloom_status_t st = validate(cfg);
+    bloom_status_t st = bloom_validate(cfg);
     if (st != BLOOM_OK)
         return st;
 #if BLOOM_USE_GRAPH

@@ -285,11 +285,6 @@ bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, blo
     return BLOOM_OK;
 }
 
-static uint64_t align8(uint64_t n)
-{
-    return (n + 7u) & ~(uint64_t)7u;
-}
-
 /* Bytes after the graph struct (which the caller places); with base NULL
  * only count. per_level[k] gets the ring bytes of nodes at level k, [0] the
  * source copies. */
@@ -297,12 +292,7 @@ uint64_t bloom_graph_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
 {
     uint64_t off = 0;
     const int cap = imax(g->need_src, 1);
-#define TAKE(ptr, type, count)                                \
-    do {                                                      \
-        if (base)                                             \
-            (ptr) = (type *)(void *)(base + (size_t)off);     \
-        off = align8(off + sizeof(type) * (uint64_t)(count)); \
-    } while (0)
+#define TAKE(ptr, type, count) BLOOM_TAKE(base, off, ptr, type, count)
     if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
         TAKE(g->src_copy, uint8_t, (uint64_t)cap * g->src_row_bytes);
         if (g->aux_bpp)

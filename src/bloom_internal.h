@@ -34,6 +34,25 @@ static inline int clampi(int v, int lo, int hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* Size, depth, parameters, formats, flags, preset and aux plane of cfg
+ * (bloom_params.c): BLOOM_OK or the most specific refusal. */
+bloom_status_t bloom_validate(const bloom_config_t *cfg);
+
+/* Workspace carving (bloom.c, bloom_graph.c), counted in 64 bits so that a
+ * configuration too big for a 32-bit address space is refused, not wrapped.
+ * BLOOM_TAKE places `count` objects of `type` at offset `off` of `base`
+ * (with base NULL it only counts) and moves `off` on, 8-byte aligned. */
+static inline uint64_t bloom_align8(uint64_t n)
+{
+    return (n + 7u) & ~(uint64_t)7u;
+}
+#define BLOOM_TAKE(base, off, ptr, type, count)                          \
+    do {                                                                \
+        if (base)                                                       \
+            (ptr) = (type *)(void *)((base) + (size_t)(off));           \
+        (off) = bloom_align8((off) + sizeof(type) * (uint64_t)(count)); \
+    } while (0)
+
 /* Internal -> Q16.16, round half up. */
 static inline uint32_t bloom_lin_to_q16(uint32_t v)
 {

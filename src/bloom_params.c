@@ -1,0 +1,112 @@
+/* The configuration's vocabulary: pixel formats, status messages, the
+ * defaults, and the checks every configuration goes through before the
+ * scheduler (bloom.c) or a preset's graph (bloom_graph.c) plans it. */
+#include <string.h>
+
+#include "bloom_graph.h"
+#include "bloom_internal.h"
+
+int bloom_format_bpp(bloom_format_t fmt)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        return 3;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        return 4;
+#endif
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        return 2;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        return 12;
+#endif
+    default:
+        return 0;
+    }
+}
+
+const char *bloom_status_str(bloom_status_t st)
+{
+    switch (st) {
+    case BLOOM_OK: return "ok";
+    case BLOOM_AGAIN: return "no output row ready: push more source rows";
+    case BLOOM_DONE: return "frame complete";
+    case BLOOM_E_NULL: return "null pointer argument";
+    case BLOOM_E_SIZE: return "width and height must be 1 .. 16384";
+    case BLOOM_E_LEVELS: return "levels must be 1 .. 16";
+    case BLOOM_E_THRESHOLD: return "threshold above 256.0 (Q16.16 16777216)";
+    case BLOOM_E_KNEE: return "soft knee above 1.0 (Q16.16 65536)";
+    case BLOOM_E_INTENSITY: return "intensity above 10.0 (Q16.16 655360)";
+    case BLOOM_E_FORMAT: return "pixel format unknown or compiled out";
+    case BLOOM_E_FLAGS: return "unknown flag bits";
+    case BLOOM_E_WORKSPACE: return "workspace smaller than bloom_workspace_size()";
+    case BLOOM_E_ALIGN: return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
+    case BLOOM_E_BUSY: return "source ring full: pull output rows before pushing more";
+    case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
+    case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
+    case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
+    case BLOOM_E_PRESET: return "preset unknown or compiled out";
+    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
+#if BLOOM_USE_GRAPH /* only presets other than the default return these */
+    case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
+    case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";
+    case BLOOM_E_ATTENUATION: return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
+    case BLOOM_E_WEIGHT: return "level weight above 1.0 (Q16.16 65536)";
+    case BLOOM_E_TINT: return "tint above 1.0 (Q16.16 65536)";
+#else
+    default: break;
+#endif
+    }
+    return "unknown status";
+}
+
+void bloom_config_default(bloom_config_t *cfg, int width, int height)
+{
+    memset(cfg, 0, sizeof *cfg);
+    cfg->width = width;
+    cfg->height = height;
+    cfg->in_fmt = cfg->out_fmt = BLOOM_FMT_RGB888;
+    cfg->levels = 5;
+    cfg->threshold = BLOOM_ONE;
+    cfg->soft_knee = BLOOM_ONE / 2u;
+    cfg->intensity = BLOOM_ONE;
+    cfg->flags = 0;
+}
+
+#define PRESET_FLAGS (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE)
+
+bloom_status_t bloom_validate(const bloom_config_t *c)
+{
+    if (c->width < 1 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM)
+        return BLOOM_E_SIZE;
+    if (c->levels < 1 || c->levels > BLOOM_MAX_LEVELS)
+        return BLOOM_E_LEVELS;
+    if (c->threshold > BLOOM_MAX_THRESHOLD)
+        return BLOOM_E_THRESHOLD;
+    if (c->soft_knee > BLOOM_ONE)
+        return BLOOM_E_KNEE;
+    if (c->intensity > BLOOM_MAX_INTENSITY)
+        return BLOOM_E_INTENSITY;
+    if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
+        return BLOOM_E_FORMAT;
+    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
+                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | PRESET_FLAGS))
+        return BLOOM_E_FLAGS;
+    if (c->preset != BLOOM_PRESET_UNITY) {
+#if BLOOM_USE_GRAPH
+        return bloom_graph_validate(c); /* the preset checks its own flags and aux plane */
+#else
+        return BLOOM_E_PRESET;
+#endif
+    }
+    if (c->flags & PRESET_FLAGS)
+        return BLOOM_E_FLAGS;
+    if (c->aux_fmt != BLOOM_AUX_NONE)
+        return BLOOM_E_AUX;
+    return BLOOM_OK;
+}
