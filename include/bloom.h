@@ -67,7 +67,9 @@ enum {
     BLOOM_FLAG_SATURATE = 1u << 5,    /* xna: clamp to 1.0 between passes (8-bit targets) */
     BLOOM_FLAG_BAKED = 1u << 6,       /* arm: no pyramid; out = S + S*map*strength
                                          with the aux plane as the map */
-    BLOOM_FLAG_ADDITIVE = 1u << 7     /* cod: additive levels instead of energy-conserving */
+    BLOOM_FLAG_ADDITIVE = 1u << 7,    /* cod: additive levels instead of energy-conserving */
+    BLOOM_FLAG_NO_AVX2 = 1u << 8      /* x86-64: SSE2 row kernels even where the CPU has
+                                         AVX2 (same bits; for tests and benchmarks) */
 };
 
 typedef enum {

@@ -150,6 +150,8 @@ typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool 
 typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
+typedef void (*bloom_eo_fn)(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                            const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
@@ -158,8 +160,9 @@ typedef struct {
     bloom_vtent_fn vtent;       /* NULL in BLOOM_SMALL builds */
     bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
+    bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
     bool simd;        /* false: the C kernels */
-    const char *name; /* "c", "sse2", "neon" */
+    const char *name; /* "c", "sse2", "avx2", "neon" */
 } bloom_kernels_t;
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
@@ -183,6 +186,15 @@ bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
 uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
+/* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
+#if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
+#define BLOOM_SIMD_AVX2 1
+bool bloom_cpu_avx2(void);
+uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
+void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                          const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
+#endif
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
 #define BLOOM_SIMD_NEON 1
 void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);

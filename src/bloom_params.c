@@ -95,7 +95,7 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
     if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | PRESET_FLAGS))
+                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 | PRESET_FLAGS))
         return BLOOM_E_FLAGS;
     if (c->preset != BLOOM_PRESET_UNITY) {
 #if BLOOM_USE_GRAPH

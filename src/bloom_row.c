@@ -519,7 +519,8 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
 {
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
-    uint32_t vb[3 * (OUT_FAST_CH + 2)], e[3 * OUT_FAST_CH], od[3 * OUT_FAST_CH];
+    uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
+    uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
     for (int m0 = 0; m0 < sw; m0 += OUT_FAST_CH) {
         const int n = imin(OUT_FAST_CH, sw - m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
@@ -542,8 +543,7 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
             k->scale(e, 3 * n, o->intensity);
             k->scale(od, 3 * n, o->intensity);
         }
-        bloom_encode_eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od,
-                        dst + (size_t)x0 * obpp, nx);
+        k->eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od, dst + (size_t)x0 * obpp, nx);
     }
 }
 #endif
@@ -581,11 +581,13 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->vtent = bloom_row_vtent_c;
     k->htent_eo = bloom_row_htent_eo_c;
     k->scale = bloom_row_scale_c;
+    k->eo = bloom_encode_eo;
 #else
     k->d1 = NULL; /* compute_d1 calls the box and the knee itself */
     k->vtent = NULL;
     k->htent_eo = NULL;
     k->scale = NULL;
+    k->eo = NULL;
 #endif
     k->simd = false;
     k->name = "c";
@@ -605,6 +607,14 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
 #endif
     k->simd = true;
     k->name = "sse2";
+#if defined(BLOOM_SIMD_AVX2)
+    if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
+        k->vtent = bloom_row_vtent_avx2;
+        k->htent_eo = bloom_row_htent_eo_avx2;
+        k->eo = bloom_encode_eo_avx2;
+        k->name = "avx2";
+    }
+#endif
 #elif defined(BLOOM_SIMD_NEON)
     k->box = bloom_row_box_neon_any;
     k->tent = bloom_row_tent_neon_any;

@@ -1,5 +1,5 @@
-/* The SIMD row kernels (SSE2 on x86-64, NEON on aarch64) against their C
- * twins, bit for bit: every kernel at many widths, unaligned pointers,
+/* The SIMD row kernels (SSE2 and, where the CPU has it, AVX2 on x86-64;
+ * NEON on aarch64) against their C twins, bit for bit: every kernel at many widths, unaligned pointers,
  * random and extreme inputs; then whole frames through bloom_process with
  * and without BLOOM_FLAG_NO_SIMD. On a target without SIMD kernels it
  * compares the C kernels with themselves (and says so). */
@@ -428,6 +428,70 @@ static void test_enc_fast(void)
     CHECKF(bad == 0, "%d values encode differently", bad);
 }
 
+/* The fused composite + encode of the fast output path (k->eo: the AVX2
+ * twin where the CPU has it) against bloom_encode_eo, for every format
+ * pair, with and without the debug view, bloom samples at the encoder's
+ * thresholds and up to the largest the path allows (P + S < 2^32), even
+ * and odd columns in one buffer (as bloom_row_out_k has them, either order)
+ * and in two. */
+static void test_eo(const bloom_kernels_t *ks)
+{
+    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565};
+    /* the AVX2 encoder reads the bucket table as 32-bit words */
+    CHECK((bloom_srgb_enc8[255] >> (BLOOM_LIN_BITS - 12)) + 4u <= sizeof bloom_srgb_bkt8);
+    int bad = 0, cases = 0;
+    for (int wi = 0; wi < NWIDTHS; wi++) {
+        const int n = widths[wi], ns = 3 * ((n + 1) / 2);
+        for (int fi = 0; fi < 3; fi++)
+            for (int fo = 0; fo < 3; fo++)
+                for (int var = 0; var < 6; var++) {
+                    const int ib = bloom_format_bpp(fmts[fi]), ob = bloom_format_bpp(fmts[fo]);
+                    if (ib == 0 || ob == 0)
+                        continue;
+                    const bool dbg = var == 5;
+                    row_t buf = row_new((size_t)(2 * ns + 8), var & 3, 0), e2 = row_new((size_t)ns, 1, 0);
+                    uint32_t *e = buf.p, *o = buf.p + ns + var % 3;
+                    if (var == 3) { /* odd columns first */
+                        o = buf.p;
+                        e = buf.p + ns + 2;
+                    }
+                    if (var == 4)
+                        e = e2.p;
+                    for (int i = 0; i < ns; i++)
+                        for (int h = 0; h < 2; h++) {
+                            const uint32_t r = rng_next(&seed);
+                            const int mode = (int)((r >> 28) % 4u);
+                            const uint32_t v = mode == 0   ? r % (2u << BLOOM_LIN_BITS)
+                                               : mode == 1 ? r >> 1
+                                               : mode == 2 ? bloom_srgb_enc8[(r >> 8) & 255u] + (r & 3u) - 1u
+                                                           : ((r & 1u) ? 0xFFFFFFFFu - BLOOM_LIN_ONE : 0u);
+                            (h ? o : e)[i] = v;
+                        }
+                    uint8_t *src = (uint8_t *)xmalloc((size_t)n * (size_t)ib + 1u);
+                    for (int i = 0; i < n * ib + 1; i++)
+                        src[i] = (uint8_t)rng_next(&seed);
+                    const size_t nb = (size_t)n * (size_t)ob;
+                    uint8_t *d1 = (uint8_t *)xmalloc(nb + 9u), *d2 = (uint8_t *)xmalloc(nb + 9u);
+                    memset(d1, 0x5A, nb + 9u);
+                    memset(d2, 0x5A, nb + 9u);
+                    ks->eo(fmts[fi], fmts[fo], dbg, src + 1, e, o, d1 + 1, n);
+                    bloom_encode_eo(fmts[fi], fmts[fo], dbg, src + 1, e, o, d2 + 1, n);
+                    cases++;
+                    if (memcmp(d1, d2, nb + 9u) != 0) {
+                        bad++;
+                        fprintf(stderr, "eo (%s): n %d in %d out %d var %d differs\n", ks->name, n, (int)fmts[fi],
+                                (int)fmts[fo], var);
+                    }
+                    free(d1);
+                    free(d2);
+                    free(src);
+                    free(buf.base);
+                    free(e2.base);
+                }
+    }
+    CHECKF(bad == 0, "%d of %d encoded rows differ", bad, cases);
+}
+
 /* The output row kernel: bloom_row_out_k (fast path where it applies) with
  * the SIMD and the C kernels against bloom_row_out_c, U at the bound of the
  * default pipeline (16 * 2^F) and below. */
@@ -536,14 +600,17 @@ static void test_frames(void)
                 bloom_config_t cc = c;
                 cc.flags |= BLOOM_FLAG_NO_SIMD;
                 frame_t b = run_engine(&cc, &src);
+                cc.flags = c.flags | BLOOM_FLAG_NO_AVX2;
+                frame_t b2 = run_engine(&cc, &src);
                 frames++;
-                if (!frame_equal(&a, &b) || !frame_intact(&a) || !frame_intact(&b)) {
+                if (!frame_equal(&a, &b) || !frame_equal(&b2, &b) || !frame_intact(&a) || !frame_intact(&b)) {
                     bad++;
                     fprintf(stderr, "frame %dx%d in %d out %d flags %u levels %d: SIMD differs\n", c.width,
                             c.height, (int)c.in_fmt, (int)c.out_fmt, (unsigned)c.flags, c.levels);
                 }
                 frame_free(&a);
                 frame_free(&b);
+                frame_free(&b2);
                 frame_free(&src);
             }
     /* The worst case: every sample at the maximum, threshold 0, intensity 10. */
@@ -575,35 +642,50 @@ static void test_frames(void)
     printf("frames: %d configurations, SIMD and NO_SIMD %s\n", frames, bad ? "DIFFER" : "identical");
 }
 
-int main(void)
+/* Every test of one SIMD kernel set against the C kernels. */
+static void test_set(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 {
-    bloom_kernels_t ks, kc;
-    bloom_kernels_select(&ks, 0);
-    bloom_kernels_select(&kc, BLOOM_FLAG_NO_SIMD);
-    CHECK(!kc.simd && kc.box == bloom_row_box_c && kc.tent == bloom_row_tent_c);
-    if (ks.simd)
-        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale) against C\n", ks.name);
+    if (ks->simd)
+        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale, eo) against C\n", ks->name);
     else
         printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");
+    test_box(ks, kc);
+    test_tent(ks, kc);
+    test_composite(ks, kc);
+    test_composite_formula(ks);
+#if !BLOOM_SMALL
+    test_flat(ks, kc);
+    test_d1(ks, kc);
+    test_eo(ks);
+    test_out(ks, kc);
+#endif
+}
 
-    /* the flag is accepted; the next bit is not */
+int main(void)
+{
+    bloom_kernels_t ks, k2, kc;
+    bloom_kernels_select(&ks, 0);
+    bloom_kernels_select(&k2, BLOOM_FLAG_NO_AVX2);
+    bloom_kernels_select(&kc, BLOOM_FLAG_NO_SIMD);
+    CHECK(!kc.simd && kc.box == bloom_row_box_c && kc.tent == bloom_row_tent_c);
+    CHECK(strcmp(k2.name, "avx2") != 0);
+
+    /* the flags are accepted; the next bit is not */
     bloom_config_t c;
     bloom_config_default(&c, 16, 16);
-    c.flags = BLOOM_FLAG_NO_SIMD;
+    c.flags = BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2;
     CHECK(bloom_query(&c, NULL) == BLOOM_OK);
-    c.flags = BLOOM_FLAG_NO_SIMD << 1;
+    c.flags = BLOOM_FLAG_NO_AVX2 << 1;
     CHECK(bloom_query(&c, NULL) == BLOOM_E_FLAGS);
 
-    test_box(&ks, &kc);
-    test_tent(&ks, &kc);
-    test_composite(&ks, &kc);
-    test_composite_formula(&ks);
+    test_set(&ks, &kc);
+    if (strcmp(ks.name, k2.name) != 0)
+        test_set(&k2, &kc);
+    else if (strcmp(ks.name, "sse2") == 0)
+        printf("skipped: AVX2 kernels (this CPU or build has none): SSE2 only\n");
     test_composite_formula(&kc);
 #if !BLOOM_SMALL
-    test_flat(&ks, &kc);
-    test_d1(&ks, &kc);
     test_enc_fast();
-    test_out(&ks, &kc);
 #endif
     test_frames();
     return harness_finish();
