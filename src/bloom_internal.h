@@ -190,6 +190,8 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
 bool bloom_cpu_avx2(void);
+void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                         int n, int sw);
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,

@@ -131,15 +131,19 @@ static void test_tent(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
     int bad = 0, cases = 0;
     for (int wi = 0; wi < NWIDTHS; wi++) {
         const int sw = widths[wi];
-        for (int mode = 0; mode < 6; mode++)
+        for (int mode = 0; mode < 7; mode++)
             for (int off = 0; off < 4; off++) {
                 row_t u[3];
                 const uint32_t *up[3];
                 for (int i = 0; i < 3; i++) {
                     u[i] = row_new((size_t)sw * 3u, (off + i + 1) & 3, 0);
-                    /* U sums: anything below 2^32; modes 3..5 below 2^29
-                     * (the SIMD kernels' path without the split) */
+                    /* U sums: anything below 2^32; modes 3..6 below 2^29
+                     * (the SIMD kernels' path without the split), but
+                     * mode 6 has one sample above (one chunk of the AVX2
+                     * tent takes the exact path) */
                     fill(u[i].p, (size_t)sw * 3u, mode % 3, mode < 3 ? 0xFFFFFFFFu : (1u << 29) - 1u);
+                    if (mode == 6 && i == 1)
+                        u[i].p[rng_next(&seed) % ((uint32_t)sw * 3u)] = 0xF0000000u + (rng_next(&seed) >> 4);
                     up[i] = u[i].p;
                 }
                 for (int w = 2 * sw - 1; w <= 2 * sw; w++) {
