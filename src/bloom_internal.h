@@ -189,6 +189,18 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 /* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
+/* A bloom sample b at most max(A c, H0) cannot change the 8-bit sRGB code
+ * c it is added to: the bound is at most t[c + 1] - dec(c) - 1 for every c
+ * (tests/test_simd.c checks it on the tables built in), so t[c] <= dec(c)
+ * <= dec(c) + b < t[c + 1] and the encoder gives c back. Other sample
+ * precisions (BLOOM_LIN_BITS < 20) keep b = 0 only. */
+#if BLOOM_LIN_BITS == 20
+#define BLOOM_KEEP8_A 12
+#define BLOOM_KEEP8_H0 158
+#else
+#define BLOOM_KEEP8_A 0
+#define BLOOM_KEEP8_H0 0
+#endif
 bool bloom_cpu_avx2(void);
 void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
                          int n, int sw);

@@ -153,21 +153,9 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 }
 
 #if !BLOOM_SMALL
-/* sRGB encode without the code bound test: v clamped to the top threshold
- * t[n] first, so the bucket code is at most n - 1 (the top threshold is not
- * at a bucket start: tests/test_simd.c checks it for the tables built in)
- * and t[c + 1] exists. Every v >= t[n] gives n, as the reference does. */
-static BLOOM_ALWAYS_INLINE uint32_t enc_fast(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
-                                             uint32_t n)
-{
-    const uint32_t top = t[n], *next = t + 1;
-    v = v < top ? v : top;
-    const size_t c = bkt[v >> shift];
-    return (uint32_t)c + (v >= next[c]);
-}
-#define FENC8(v) enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
-#define FENC6(v) enc_fast(v, bloom_srgb_bkt6, BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63)
-#define FENC5(v) enc_fast(v, bloom_srgb_bkt5, BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31)
+#define FENC8(v) BLOOM_FENC8(v)
+#define FENC6(v) bloom_enc_fast(v, bloom_srgb_bkt6, BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63)
+#define FENC5(v) bloom_enc_fast(v, bloom_srgb_bkt5, BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31)
 
 uint32_t bloom_enc_srgb_fast(uint32_t v, int bits)
 {

@@ -73,6 +73,19 @@ void bloom_encode_row(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_
  * the debug view), sRGB-encoded into dst. Formats RGB888, XRGB8888, RGB565
  * in and out (bloom_encode_eo_ok); P + S must not pass 2^32 - 1. Same
  * codes as bloom_decode_row + bloom_row_composite_c + bloom_encode_row. */
+/* sRGB encode without the code bound test: v clamped to the top threshold
+ * t[n] first, so the bucket code is at most n - 1 (the top threshold is not
+ * at a bucket start: tests/test_simd.c checks it for the tables built in)
+ * and t[c + 1] exists. Every v >= t[n] gives n, as the reference does. */
+static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
+                                                   uint32_t n)
+{
+    const uint32_t top = t[n], *next = t + 1;
+    v = v < top ? v : top;
+    const size_t c = bkt[v >> shift];
+    return (uint32_t)c + (v >= next[c]);
+}
+#define BLOOM_FENC8(v) bloom_enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
 bool bloom_encode_eo_ok(bloom_format_t in_fmt, bloom_format_t out_fmt, bool linear);
 void bloom_encode_eo(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                      const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);

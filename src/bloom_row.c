@@ -609,10 +609,16 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->name = "sse2";
 #if defined(BLOOM_SIMD_AVX2)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
+#ifndef EXP_NO_TENT
         k->tent = bloom_row_tent_avx2;
+#endif
+#ifndef EXP_NO_FLAT
         k->vtent = bloom_row_vtent_avx2;
         k->htent_eo = bloom_row_htent_eo_avx2;
+#endif
+#ifndef EXP_NO_EO
         k->eo = bloom_encode_eo_avx2;
+#endif
         k->name = "avx2";
     }
 #endif

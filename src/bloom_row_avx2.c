@@ -1,24 +1,17 @@
-/* AVX2 twins of the fast output path's kernels (x86-64 with GCC or clang),
- * chosen at bloom_init when the CPU and the OS support AVX2
- * (bloom_cpu_avx2: CPUID leaf 7 and XGETBV), never when BLOOM_FLAG_NO_AVX2
- * or BLOOM_FLAG_NO_SIMD is set. Same bits as the C kernels; every function
- * here is compiled for AVX2 through a target pragma, so the rest of the
- * core stays baseline x86-64 and the file needs no special flags.
+/* AVX2 twins of the fast output path's kernels and of the tent (x86-64
+ * with GCC or clang), chosen at bloom_init when the CPU and the OS support
+ * AVX2 (bloom_cpu_avx2: CPUID leaves 1 and 7, XGETBV), never with
+ * BLOOM_FLAG_NO_AVX2 or BLOOM_FLAG_NO_SIMD. Same bits as the C kernels;
+ * every function after the target pragma is compiled for AVX2, so the rest
+ * of the core stays baseline x86-64 and the file needs no special flags.
  *
  *   vtent, htent_eo   the flat kernels of bloom_row_simd.h on 8 lanes
  *   tent              whole rows through vtent, htent_eo and an interleave
  *                     of the even and odd columns by lane permutes
  *   encode_eo         decode + composite + sRGB encode of RGB888 -> RGB888
- *                     and XRGB8888 -> XRGB8888 in 8-pixel groups, one
- *                     sample per 32-bit lane: the source code's linear
- *                     value and the encoder's two table reads are gathers
- *                     (and the bloom sample for XRGB8888; RGB888
- *                     interleaves it by permutes) (the tables of bloom_tables.c; the
- *                     bucket table is read as 32-bit words at byte offsets,
- *                     which stay inside it because the value is clamped to
- *                     the top threshold first: tests/test_simd.c checks the
- *                     highest offset read). Other format pairs, the debug
- *                     view and group tails go to bloom_encode_eo. */
+ *                     and XRGB8888 -> XRGB8888 in 8-pixel groups: the
+ *                     groups whose codes the bloom cannot change copied,
+ *                     the others encoded sample by sample */
 #include "bloom_internal.h"
 #include "bloom_pixel.h"
 
@@ -196,96 +189,101 @@ void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *ad
     }
 }
 
-/* The 8-bit sRGB code of each lane's Q12.20 value: enc_fast of
- * bloom_pixel.c (clamp to the top threshold t[255], the bucket's code c,
- * plus one where v >= t[c + 1]). The bucket byte is the low byte of the
- * 32-bit word gathered at its offset. */
-static inline __m256i enc8_lanes(__m256i v)
+/* The codes of the 8 source bytes at p, one per lane. */
+static inline __m256i codes8(const uint8_t *p)
 {
-    const __m256i top = _mm256_set1_epi32((int)bloom_srgb_enc8[255]), ff = _mm256_set1_epi32(0xFF);
-    v = _mm256_min_epu32(v, top);
-    const __m256i idx = _mm256_srli_epi32(v, BLOOM_LIN_BITS - 12);
-    const __m256i c = _mm256_and_si256(_mm256_i32gather_epi32((const int *)(const void *)bloom_srgb_bkt8, idx, 1), ff);
-    const __m256i t = _mm256_i32gather_epi32((const int *)(const void *)(bloom_srgb_enc8 + 1), c, 4);
-    /* v >= t <=> v + 1 > t (both below 2^31): the compare gives -1 there */
-    return _mm256_sub_epi32(c, _mm256_cmpgt_epi32(_mm256_add_epi32(v, _mm256_set1_epi32(1)), t));
+    return _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
 }
 
-/* One vector of samples: the codes of the 8 source bytes at p decoded and
- * added to the bloom b, encoded. */
-static inline __m256i eo_lanes(const uint8_t *p, __m256i b)
+/* All ones in the lanes whose code the bloom b cannot change: b at most
+ * max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0) (bloom_internal.h). */
+static inline __m256i keep8(__m256i code, __m256i b)
 {
-    const __m256i code = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
-    const __m256i s = _mm256_i32gather_epi32((const int *)(const void *)bloom_srgb_dec8, code, 4);
-    return enc8_lanes(_mm256_add_epi32(s, b));
+    const __m256i lb = _mm256_max_epu32(_mm256_mullo_epi32(code, _mm256_set1_epi32(BLOOM_KEEP8_A)),
+                                        _mm256_set1_epi32(BLOOM_KEEP8_H0));
+    return _mm256_cmpeq_epi32(_mm256_min_epu32(b, lb), b);
 }
 
-/* The bloom of a vector from the group's base e at the lanes' indices. */
-static inline __m256i gather_b(const uint32_t *e, __m256i idx)
+/* n samples, flat: dst[q] = enc(dec(src[q]) + b[q]). */
+static inline void enc_flat(const uint8_t *src, const uint32_t *b, uint8_t *dst, int n)
 {
-    return _mm256_i32gather_epi32((const int *)(const void *)e, idx, 4);
+#if defined(__clang__)
+#pragma clang loop unroll(full)
+#else
+#pragma GCC unroll 24
+#endif
+    for (int q = 0; q < n; q++)
+        dst[q] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[q]] + b[q]);
 }
 
-/* Four vectors of values below 256 as 32 bytes in order. */
-static inline __m256i pack4(__m256i a, __m256i b, __m256i c, __m256i d)
+/* The bloom of the 32 bytes of 8 XRGB8888 pixels (B G R X each) as four
+ * vectors, from e[0..11] and o[0..11]; the X lanes hold a copy of R. */
+static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
 {
-    const __m256i x = _mm256_packus_epi16(_mm256_packus_epi32(a, b), _mm256_packus_epi32(c, d));
-    return _mm256_permutevar8x32_epi32(x, _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7));
+    const __m256i e0 = LD8(e), e3 = LD8(e + 3), e4 = LD8(e + 4), o0 = LD8(o), o3 = LD8(o + 3), o4 = LD8(o + 4);
+#define PERM(x, a, b, c, d, e_, f, g, h) _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
+    v[0] = _mm256_blend_epi32(PERM(e0, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o0, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
+    v[1] = _mm256_blend_epi32(PERM(e3, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o3, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
+    v[2] = _mm256_blend_epi32(PERM(e4, 4, 3, 2, 2, 0, 0, 0, 0), PERM(o4, 0, 0, 0, 0, 4, 3, 2, 2), 0xF0);
+    v[3] = _mm256_blend_epi32(PERM(e4, 7, 6, 5, 5, 0, 0, 0, 0), PERM(o4, 0, 0, 0, 0, 7, 6, 5, 5), 0xF0);
+#undef PERM
 }
 
-/* Index of the bloom sample of flat byte k of an 8-pixel group (pixels of
- * bpp bytes, channel order R G B for RGB888, B G R X for XRGB8888), from
- * the group's even-pixel base e, with the odd pixels d words further on. */
-static inline int eo_index(int k, int bpp, int d)
-{
-    const int x = k / bpp, j = k % bpp;
-    const int ch = bpp == 3 ? j : j < 3 ? 2 - j : 0; /* X: any sample, replaced by 0xFF */
-    return (x & 1 ? d : 0) + 3 * (x >> 1) + ch;
-}
-
-static inline __m256i idx_vec(int k0, int bpp, int d)
-{
-    return _mm256_setr_epi32(eo_index(k0, bpp, d), eo_index(k0 + 1, bpp, d), eo_index(k0 + 2, bpp, d),
-                             eo_index(k0 + 3, bpp, d), eo_index(k0 + 4, bpp, d), eo_index(k0 + 5, bpp, d),
-                             eo_index(k0 + 6, bpp, d), eo_index(k0 + 7, bpp, d));
-}
-
+/* The fused composite and encode in groups of 8 pixels: the bloom
+ * interleaved into pixel order by permutes; a group where the bloom
+ * changes no code (keep8 in every lane) is the source copied; the others
+ * are encoded sample by sample (the table reads stay scalar: on the CPU
+ * this was measured on, AVX2 gathers were slower than scalar loads). */
 void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n)
 {
     const bool rgb = BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888 && out_fmt == BLOOM_FMT_RGB888;
     const bool xrgb = BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888 && out_fmt == BLOOM_FMT_XRGB8888;
-    /* XRGB8888 gathers the bloom: o as a word offset from e, if it is one
-     * the indices can hold */
-    const uintptr_t pe = (uintptr_t)e, po = (uintptr_t)o;
-    const uintptr_t gap = po >= pe ? po - pe : pe - po;
-    if (debug || !(rgb || xrgb) || (xrgb && (gap % sizeof *e || gap / sizeof *e > (1u << 24))) || n < 8) {
+    if (debug || !(rgb || xrgb) || n < 8) {
         bloom_encode_eo(in_fmt, out_fmt, debug, src, e, o, dst, n);
         return;
     }
-    const int d = (int)(gap / sizeof *e) * (po >= pe ? 1 : -1);
     const int g = n / 8; /* groups of 8 pixels: 12 bloom samples of e and of o each */
+    uint32_t bb[32];
     if (rgb) {
         for (int j = 0; j < g; j++, src += 24, dst += 24, e += 12, o += 12) {
             __m256i b[3];
             il24(e, o, b);
-            const __m256i c = eo_lanes(src + 16, b[2]);
-            const __m256i x = pack4(eo_lanes(src, b[0]), eo_lanes(src + 8, b[1]), c, c);
-            _mm_storeu_si128((__m128i *)(void *)dst, _mm256_castsi256_si128(x));
-            _mm_storel_epi64((__m128i *)(void *)(dst + 16), _mm256_extracti128_si256(x, 1));
+            const __m256i keep = _mm256_and_si256(_mm256_and_si256(keep8(codes8(src), b[0]), keep8(codes8(src + 8), b[1])),
+                                                  keep8(codes8(src + 16), b[2]));
+            if (_mm256_movemask_epi8(keep) == -1) { /* the bloom changes no code here */
+                if (src != dst)
+                    memcpy(dst, src, 24);
+                continue;
+            }
+            for (int k = 0; k < 3; k++)
+                ST8(bb + 8 * k, b[k]);
+            enc_flat(src, bb, dst, 24);
         }
     } else {
-        const __m256i i0 = idx_vec(0, 4, d), i1 = idx_vec(8, 4, d), i2 = idx_vec(16, 4, d),
-                      i3 = idx_vec(24, 4, d);
-        const __m256i xff = _mm256_set1_epi32((int)0xFF000000u);
-        for (int j = 0; j < g; j++, src += 32, dst += 32, e += 12) {
-            const __m256i x = pack4(eo_lanes(src, gather_b(e, i0)), eo_lanes(src + 8, gather_b(e, i1)),
-                                    eo_lanes(src + 16, gather_b(e, i2)), eo_lanes(src + 24, gather_b(e, i3)));
-            ST8(dst, _mm256_or_si256(x, xff));
+        const __m256i xlanes = _mm256_setr_epi32(0, 0, 0, -1, 0, 0, 0, -1);
+        for (int j = 0; j < g; j++, src += 32, dst += 32, e += 12, o += 12) {
+            __m256i b[4];
+            il32x(e, o, b);
+            __m256i keep = xlanes;
+            for (int k = 0; k < 4; k++)
+                keep = _mm256_and_si256(keep, _mm256_or_si256(keep8(codes8(src + 8 * k), b[k]), xlanes));
+            const __m256i x = _mm256_or_si256(LD8(src), _mm256_set1_epi32((int)0xFF000000u));
+            if (_mm256_movemask_epi8(keep) != -1) {
+                for (int k = 0; k < 4; k++)
+                    ST8(bb + 8 * k, b[k]);
+                uint8_t q[32];
+                ST8(q, x);
+                for (int p = 0; p < 32; p += 4)
+                    enc_flat(src + p, bb + p, q + p, 3);
+                memcpy(dst, q, 32);
+            } else {
+                ST8(dst, x);
+            }
         }
     }
     if (n > 8 * g)
-        bloom_encode_eo(in_fmt, out_fmt, false, src, e, rgb ? o : o + 12 * g, dst, n - 8 * g);
+        bloom_encode_eo(in_fmt, out_fmt, false, src, e, o, dst, n - 8 * g);
 }
 
 #if defined(__clang__)
