@@ -202,6 +202,8 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 #define BLOOM_KEEP8_H0 0
 #endif
 bool bloom_cpu_avx2(void);
+bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
+                       const bloom_knee_t *kn, const bloom_dark_t *dk);
 void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
                          int n, int sw);
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);

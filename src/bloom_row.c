@@ -611,6 +611,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
 #ifndef EXP_NO_TENT
         k->tent = bloom_row_tent_avx2;
+        k->d1 = bloom_row_d1_avx2;
 #endif
 #ifndef EXP_NO_FLAT
         k->vtent = bloom_row_vtent_avx2;

@@ -5,6 +5,7 @@
  * every function after the target pragma is compiled for AVX2, so the rest
  * of the core stays baseline x86-64 and the file needs no special flags.
  *
+ *   d1                level-1 box and knee with 8-pixel dark blocks
  *   vtent, htent_eo   the flat kernels of bloom_row_simd.h on 8 lanes
  *   tent              whole rows through vtent, htent_eo and an interleave
  *                     of the even and odd columns by lane permutes
@@ -56,8 +57,8 @@ static inline uint32_t or_lanes8(__m256i v)
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3 in wrapping 32-bit lanes
  * (bloom_internal.h); returns the OR of every dst[i], and the OR of every
  * input in *in_or (the sums are exact when it is below 2^29). */
-static uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
-                       uint32_t *in_or)
+static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c,
+                                                             uint32_t *dst, int n, uint32_t *in_or)
 {
     const __m256i k4 = _mm256_set1_epi32(4);
     __m256i any = _mm256_setzero_si256(), in = _mm256_setzero_si256();
@@ -68,7 +69,8 @@ static uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
         const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, k4)), 3);
         ST8(dst + i, s);
         any = _mm256_or_si256(any, s);
-        in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
+        if (in_or)
+            in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
     }
     if (i < n && n >= 8) { /* the last 8 again (dst is not an input) */
         i = n - 8;
@@ -77,7 +79,8 @@ static uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
         const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, k4)), 3);
         ST8(dst + i, s);
         any = _mm256_or_si256(any, s);
-        in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
+        if (in_or)
+            in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
         i = n;
     }
     uint32_t r = or_lanes8(any), ri = or_lanes8(in);
@@ -86,14 +89,14 @@ static uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c, 
         r |= dst[i];
         ri |= a[i] | b[i] | c[i];
     }
-    *in_or = ri;
+    if (in_or)
+        *in_or = ri;
     return r;
 }
 
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
-    uint32_t in;
-    return vtent8(a, b, c, dst, n, &in);
+    return vtent8(a, b, c, dst, n, NULL);
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */
@@ -187,6 +190,67 @@ void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *ad
         bloom_row_htent_eo_avx2(vb + 3, eo, eo + 3 * TENT_CH, 3 * nn);
         il_add(eo, eo + 3 * TENT_CH, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, np);
     }
+}
+
+/* ---- level-1 row: box from the source and knee, dark blocks skipped ------ */
+
+/* Whether a colour byte of the 18 pixels of bpp bytes at s[r] + off
+ * (r = 0..3) exceeds c: RGB888 54 bytes (reads 64), XRGB8888 72 bytes with
+ * the X bytes left out (reads 96). */
+static inline bool bright18(const uint8_t *const s[4], size_t off, bool x8, __m256i c)
+{
+    const int nv = x8 ? 3 : 2;
+    __m256i m[3];
+    for (int k = 0; k < nv; k++) {
+        m[k] = LD8(s[0] + off + 32u * (size_t)k);
+        for (int r = 1; r < 4; r++)
+            m[k] = _mm256_max_epu8(m[k], LD8(s[r] + off + 32u * (size_t)k));
+    }
+    __m256i a;
+    if (x8) { /* bytes 72..95 out, X bytes (the high byte of each word) out */
+        const __m256i keep3 = _mm256_setr_epi32(0x00FFFFFF, 0x00FFFFFF, 0, 0, 0, 0, 0, 0);
+        a = _mm256_max_epu8(_mm256_max_epu8(m[0], m[1]), _mm256_and_si256(m[2], keep3));
+        a = _mm256_and_si256(a, _mm256_set1_epi32(0x00FFFFFF));
+    } else { /* bytes 54..63 out */
+        const __m256i keep2 = _mm256_setr_epi32(-1, -1, -1, -1, -1, 0x0000FFFF, 0, 0);
+        a = _mm256_max_epu8(m[0], _mm256_and_si256(m[1], keep2));
+    }
+    return !_mm256_testz_si256(_mm256_subs_epu8(a, c), _mm256_set1_epi8(-1));
+}
+
+/* bloom_row_d1_sse2 in blocks of 8 level-1 pixels (RGB888 and XRGB8888;
+ * the others go to the SSE2 twin): a block whose 4 x 18 source pixels have
+ * no colour code above the dark code is written as zeros, the others run
+ * the C box and knee in runs. */
+bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
+                       const bloom_knee_t *kn, const bloom_dark_t *dk)
+{
+    const bool x8 = BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888;
+    if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8)
+        return bloom_row_d1_sse2(s, fmt, linear, dst, dw, sw, kn, dk);
+    const size_t bpp = x8 ? 4u : 3u, rd = x8 ? 96u : 64u, row = (size_t)sw * bpp;
+    const __m256i c = _mm256_set1_epi8((char)dk->c8), zero = _mm256_setzero_si256();
+    bool any = false;
+    int run = 0; /* first pixel not written yet */
+    int x = 1;
+    for (; x + 8 <= dw && (size_t)(2 * x - 1) * bpp + rd <= row; x += 8) {
+        if (bright18(s, (size_t)(2 * x - 1) * bpp, x8, c))
+            continue; /* computed with its run */
+        if (run < x) {
+            bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);
+            any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
+        }
+        uint32_t *d = dst + (size_t)x * 3u;
+        ST8(d, zero);
+        ST8(d + 8, zero);
+        ST8(d + 16, zero);
+        run = x + 8;
+    }
+    if (run < dw) {
+        bloom_row_box_src_range_c(s, fmt, linear, dst, run, dw, sw);
+        any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
+    }
+    return any;
 }
 
 /* The codes of the 8 source bytes at p, one per lane. */
