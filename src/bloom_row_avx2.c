@@ -280,6 +280,22 @@ static inline void enc_flat(const uint8_t *src, const uint32_t *b, uint8_t *dst,
         dst[q] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[q]] + b[q]);
 }
 
+/* 8 XRGB8888 pixels, B G R X bytes: dst = enc(dec(src) + b), X = 0xFF. */
+static inline void enc_xrgb(const uint8_t *src, const uint32_t *b, uint8_t *dst)
+{
+#if defined(__clang__)
+#pragma clang loop unroll(full)
+#else
+#pragma GCC unroll 8
+#endif
+    for (int p = 0; p < 32; p += 4) {
+        dst[p] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p]] + b[p]);
+        dst[p + 1] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 1]] + b[p + 1]);
+        dst[p + 2] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 2]] + b[p + 2]);
+        dst[p + 3] = 0xFF;
+    }
+}
+
 /* The bloom of the 32 bytes of 8 XRGB8888 pixels (B G R X each) as four
  * vectors, from e[0..11] and o[0..11]; the X lanes hold a copy of R. */
 static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
@@ -332,17 +348,12 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
             __m256i keep = xlanes;
             for (int k = 0; k < 4; k++)
                 keep = _mm256_and_si256(keep, _mm256_or_si256(keep8(codes8(src + 8 * k), b[k]), xlanes));
-            const __m256i x = _mm256_or_si256(LD8(src), _mm256_set1_epi32((int)0xFF000000u));
             if (_mm256_movemask_epi8(keep) != -1) {
                 for (int k = 0; k < 4; k++)
                     ST8(bb + 8 * k, b[k]);
-                uint8_t q[32];
-                ST8(q, x);
-                for (int p = 0; p < 32; p += 4)
-                    enc_flat(src + p, bb + p, q + p, 3);
-                memcpy(dst, q, 32);
-            } else {
-                ST8(dst, x);
+                enc_xrgb(src, bb, dst);
+            } else { /* the bloom changes no code here: the source, X = 0xFF */
+                ST8(dst, _mm256_or_si256(LD8(src), _mm256_set1_epi32((int)0xFF000000u)));
             }
         }
     }
