@@ -672,7 +672,7 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
     } else {
         const uint32_t *u[3];
         tent_rows(b, 0, y, u);
-        if (b->kern.simd)
+        if (bloom_kernels_simd(&b->kern))
             bloom_row_out_k(&b->kern, u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);
         else
             bloom_row_out_c(u, y & 1, src_get(b, y), (uint8_t *)dst_row, b->w[0], b->w[1], &b->out);

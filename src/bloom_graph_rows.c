@@ -47,7 +47,7 @@ void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r,
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
-    if (g->kern.simd)
+    if (bloom_kernels_simd(&g->kern))
         bloom_row_out_k(&g->kern, u, r & 1, (const uint8_t *)in[0][0], (uint8_t *)dst, n->w,
                         g->node[n->in[1].node].w, &g->out);
     else

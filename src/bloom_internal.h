@@ -161,9 +161,13 @@ typedef struct {
     bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
     bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
-    bool simd;        /* false: the C kernels */
-    const char *name; /* "c", "sse2", "avx2", "neon" */
+    const char *name;           /* "c", "sse2", "avx2", "neon" */
 } bloom_kernels_t;
+/* Whether k holds SIMD twins (the C set is the one with the C box). */
+static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
+{
+    return k->box != bloom_row_box_c;
+}
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
 /* bloom_row_out_c with the kernels of k. For 8/6/5-bit sRGB input and

@@ -589,7 +589,6 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->scale = NULL;
     k->eo = NULL;
 #endif
-    k->simd = false;
     k->name = "c";
     if (flags & BLOOM_FLAG_NO_SIMD)
         return;
@@ -605,7 +604,6 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->htent_eo = bloom_row_htent_eo_sse2;
     k->scale = bloom_row_scale_sse2;
 #endif
-    k->simd = true;
     k->name = "sse2";
 #if defined(BLOOM_SIMD_AVX2)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
@@ -635,7 +633,6 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->htent_eo = bloom_row_htent_eo_neon;
     k->scale = bloom_row_scale_neon;
 #endif
-    k->simd = true;
     k->name = "neon";
 #endif
 }
