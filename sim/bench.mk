@@ -6,6 +6,9 @@
 #   make icount   instructions per output pixel of one bloom_process call
 #                 under callgrind, per engine row and stage: sim/docs/icount.md
 #                 (installs valgrind if missing)
+#   make profile  where the time goes per stage: perf samples of the same
+#                 binary repeating the frame call, sim/docs/profile.md
+#                 (installs linux-perf if missing; skips if perf may not sample)
 # Knobs: BENCH_CFLAGS (engine and harness for bench; default CFLAGS),
 # BENCH_ARGS (options of bloom_bench, e.g. --quick or --sizes 640x480),
 # ICOUNT_SIZES (default 640x480 1920x1080).
@@ -32,7 +35,7 @@ ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgi
 BENCH_CV_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags opencv4))
 BENCH_CV_LIBS = $(filter-out -lopencv_%,$(shell pkg-config --libs opencv4)) -lopencv_imgproc -lopencv_core
 
-.PHONY: bench icount bench-deps icount-deps bench-force
+.PHONY: bench icount profile bench-deps icount-deps profile-deps bench-force
 
 bench-deps:
 	@sh sim/bench/deps.sh bench
@@ -76,3 +79,9 @@ $(ICOUNT_DIR)/bloom_icount: $(ICOUNT_SRC) $(BENCH_HDR) $(SIM_HDR) $(ICOUNT_CORE_
 
 icount: icount-deps $(ICOUNT_DIR)/bloom_icount
 	sh sim/bench/icount.sh $(ICOUNT_DIR)/bloom_icount sim/docs/icount.md $(ICOUNT_SIZES)
+
+# Where the time goes per stage: perf samples of the icount binary.
+profile-deps:
+	@sh sim/bench/deps.sh profile
+profile: profile-deps $(ICOUNT_DIR)/bloom_icount
+	sh sim/bench/profile.sh $(ICOUNT_DIR)/bloom_icount sim/docs/profile.md

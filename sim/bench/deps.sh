@@ -1,8 +1,8 @@
 #!/bin/sh
 # Debian packages for `make bench` (OpenCV 4 development files, a C++
-# compiler, pkg-config) and `make icount` (valgrind). Installs only what is
-# missing; quiet when everything is there.
-#   sh sim/bench/deps.sh bench|icount
+# compiler, pkg-config), `make icount` (valgrind) and `make profile`
+# (linux-perf). Installs only what is missing; quiet when everything is there.
+#   sh sim/bench/deps.sh bench|icount|profile
 set -e
 need=""
 case "${1:-bench}" in
@@ -17,8 +17,11 @@ icount)
     command -v valgrind >/dev/null 2>&1 || need="$need valgrind"
     command -v callgrind_annotate >/dev/null 2>&1 || need="$need valgrind"
     ;;
+profile)
+    command -v perf >/dev/null 2>&1 || need="$need linux-perf"
+    ;;
 *)
-    echo "usage: deps.sh bench|icount" >&2
+    echo "usage: deps.sh bench|icount|profile" >&2
     exit 2
     ;;
 esac

@@ -4,6 +4,9 @@
  *
  *   bloom_icount --list                  the engine rows of variants.c
  *   bloom_icount VARIANT W H [IMAGE]     scene, engine, one frame call
+ *   bloom_icount --repeat N VARIANT W H [IMAGE]
+ *                                        the same frame call N times (for a
+ *                                        sampling profiler: make profile)
  *
  * Deterministic: no clocks, no randomness, no address-dependent choices. */
 #include <stdio.h>
@@ -27,8 +30,16 @@ int main(int argc, char **argv)
             printf("%s\n", bench_engines[i].name);
         return 0;
     }
+    int repeat = 1;
+    if (argc >= 3 && !strcmp(argv[1], "--repeat")) {
+        repeat = atoi(argv[2]);
+        if (repeat < 1 || repeat > 100000)
+            return fail("--repeat", "needs a count of 1 .. 100000");
+        argc -= 2;
+        argv += 2;
+    }
     if (argc < 4 || argc > 5) {
-        fprintf(stderr, "usage: bloom_icount --list | VARIANT W H [IMAGE]\n");
+        fprintf(stderr, "usage: bloom_icount --list | [--repeat N] VARIANT W H [IMAGE]\n");
         return 2;
     }
     const bench_engine_t *e = NULL;
@@ -68,9 +79,11 @@ int main(int argc, char **argv)
     if (bench_engine_attach(b, &cfg))
         return fail("aux plane", e->name);
 
-    st = bloom_process(b, src, (ptrdiff_t)(ibpp * (size_t)w), dst, (ptrdiff_t)(obpp * (size_t)w));
-    if (st != BLOOM_OK)
-        return fail("bloom_process", bloom_status_str(st));
+    for (int i = 0; i < repeat; i++) {
+        st = bloom_process(b, src, (ptrdiff_t)(ibpp * (size_t)w), dst, (ptrdiff_t)(obpp * (size_t)w));
+        if (st != BLOOM_OK)
+            return fail("bloom_process", bloom_status_str(st));
+    }
 
     /* A checksum of the output, so a changed result is visible next to a
      * changed count. */
