@@ -81,4 +81,12 @@
 #define BLOOM_NO_SIMD 0
 #endif
 
+/* AVX2 twins of the level-1 row, the tents and the output encode
+ * (src/bloom_row_avx2.c, GCC or clang on x86-64), used where CPUID and
+ * XGETBV report AVX2 (BLOOM_FLAG_NO_AVX2 keeps SSE2 at run time). 1 leaves
+ * them out of the build. */
+#ifndef BLOOM_NO_AVX2
+#define BLOOM_NO_AVX2 0
+#endif
+
 #endif

@@ -163,11 +163,6 @@ typedef struct {
     bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
     const char *name;           /* "c", "sse2", "avx2", "neon" */
 } bloom_kernels_t;
-/* Whether k holds SIMD twins (the C set is the one with the C box). */
-static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
-{
-    return k->box != bloom_row_box_c;
-}
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
 /* bloom_row_out_c with the kernels of k. For 8/6/5-bit sRGB input and
@@ -227,6 +222,18 @@ uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);
 #endif
+
+/* Whether k holds SIMD twins (the C set is the one with the C box); a
+ * constant false on targets without any (the fast output path drops out). */
+static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
+{
+#if defined(BLOOM_SIMD_SSE2) || defined(BLOOM_SIMD_NEON)
+    return k->box != bloom_row_box_c;
+#else
+    (void)k;
+    return false;
+#endif
+}
 
 /* Pixel access (bloom_pixel.c). */
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);

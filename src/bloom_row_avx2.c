@@ -63,7 +63,12 @@ static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, 
     const __m256i k4 = _mm256_set1_epi32(4);
     __m256i any = _mm256_setzero_si256(), in = _mm256_setzero_si256();
     int i = 0;
-    for (; i + 8 <= n; i += 8) {
+    /* the vectors at i, then the last 8 again (dst is not an input) */
+    for (int last = 0; i < n && n >= 8; i += 8) {
+        if (i + 8 > n) {
+            i = n - 8;
+            last = 1;
+        }
         const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
         const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
         const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, k4)), 3);
@@ -71,20 +76,11 @@ static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, 
         any = _mm256_or_si256(any, s);
         if (in_or)
             in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
-    }
-    if (i < n && n >= 8) { /* the last 8 again (dst is not an input) */
-        i = n - 8;
-        const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
-        const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
-        const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, k4)), 3);
-        ST8(dst + i, s);
-        any = _mm256_or_si256(any, s);
-        if (in_or)
-            in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
-        i = n;
+        if (last)
+            i = n - 8; /* ends the loop */
     }
     uint32_t r = or_lanes8(any), ri = or_lanes8(in);
-    for (; i < n; i++) {
+    for (; i < n; i++) { /* n < 8 */
         dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
         r |= dst[i];
         ri |= a[i] | b[i] | c[i];
