@@ -57,27 +57,31 @@ static inline uint32_t or_lanes8(__m256i v)
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3 in wrapping 32-bit lanes
  * (bloom_internal.h); returns the OR of every dst[i], and the OR of every
  * input in *in_or (the sums are exact when it is below 2^29). */
+/* One vector of vtent8 at i: stored, ORed into *any (and its inputs into
+ * *in when in_or). */
+static inline __attribute__((always_inline)) void vtent_vec(const uint32_t *a, const uint32_t *b,
+                                                            const uint32_t *c, uint32_t *dst, int i,
+                                                            __m256i *any, __m256i *in, bool in_or)
+{
+    const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
+    const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
+    const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, _mm256_set1_epi32(4))), 3);
+    ST8(dst + i, s);
+    *any = _mm256_or_si256(*any, s);
+    if (in_or)
+        *in = _mm256_or_si256(*in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
+}
+
 static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c,
                                                              uint32_t *dst, int n, uint32_t *in_or)
 {
-    const __m256i k4 = _mm256_set1_epi32(4);
     __m256i any = _mm256_setzero_si256(), in = _mm256_setzero_si256();
     int i = 0;
-    /* the vectors at i, then the last 8 again (dst is not an input) */
-    for (int last = 0; i < n && n >= 8; i += 8) {
-        if (i + 8 > n) {
-            i = n - 8;
-            last = 1;
-        }
-        const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
-        const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
-        const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, k4)), 3);
-        ST8(dst + i, s);
-        any = _mm256_or_si256(any, s);
-        if (in_or)
-            in = _mm256_or_si256(in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
-        if (last)
-            i = n - 8; /* ends the loop */
+    for (; i + 8 <= n; i += 8)
+        vtent_vec(a, b, c, dst, i, &any, &in, in_or != NULL);
+    if (i < n && n >= 8) { /* the last 8 again (dst is not an input) */
+        vtent_vec(a, b, c, dst, n - 8, &any, &in, in_or != NULL);
+        i = n;
     }
     uint32_t r = or_lanes8(any), ri = or_lanes8(in);
     for (; i < n; i++) { /* n < 8 */
