@@ -139,6 +139,19 @@ bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, 
 void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
                                int xa, int xb, int sw);
 
+/* A bloom sample b at most max(A c, H0) cannot change the 8-bit sRGB code
+ * c it is added to: the bound is at most t[c + 1] - dec(c) - 1 for every c
+ * (tests/test_simd.c checks it on the tables built in), so t[c] <= dec(c)
+ * <= dec(c) + b < t[c + 1] and the encoder gives c back. Other sample
+ * precisions (BLOOM_LIN_BITS < 20) keep b = 0 only. */
+#if BLOOM_LIN_BITS == 20
+#define BLOOM_KEEP8_A 12
+#define BLOOM_KEEP8_H0 158
+#else
+#define BLOOM_KEEP8_A 0
+#define BLOOM_KEEP8_H0 0
+#endif
+
 /* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
  * the C ones, or SIMD twins that give the same bits. */
 typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
@@ -152,6 +165,23 @@ typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *
 typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
 typedef void (*bloom_eo_fn)(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                             const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
+/* The tent through flat kernels for whole rows (x0 = 0, n = 2 sw or 2 sw - 1),
+ * bloom_row.c: per chunk of low-resolution columns the vertical tent
+ * (vt, which also ORs its inputs into *in_or), the horizontal tent into
+ * even and odd columns (ht), the two interleaved with add (il); a chunk
+ * whose rows hold a value of 2^29 or more (the flat sums could wrap) and
+ * any other call go to exact. Same bits as bloom_row_tent_c. */
+typedef uint32_t (*bloom_vtent_in_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
+                                      uint32_t *in_or);
+typedef void (*bloom_il_add_fn)(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
+void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
+                         int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
+                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                                       int x0, int n, int sw));
+/* dst pixels 0 .. n-1 = the even/odd columns e, o interleaved (pixel x is
+ * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
+void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
+
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
@@ -188,18 +218,6 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 /* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
-/* A bloom sample b at most max(A c, H0) cannot change the 8-bit sRGB code
- * c it is added to: the bound is at most t[c + 1] - dec(c) - 1 for every c
- * (tests/test_simd.c checks it on the tables built in), so t[c] <= dec(c)
- * <= dec(c) + b < t[c + 1] and the encoder gives c back. Other sample
- * precisions (BLOOM_LIN_BITS < 20) keep b = 0 only. */
-#if BLOOM_LIN_BITS == 20
-#define BLOOM_KEEP8_A 12
-#define BLOOM_KEEP8_H0 158
-#else
-#define BLOOM_KEEP8_A 0
-#define BLOOM_KEEP8_H0 0
-#endif
 bool bloom_cpu_avx2(void);
 bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
                        const bloom_knee_t *kn, const bloom_dark_t *dk);
@@ -221,6 +239,10 @@ bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linea
 uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);
+void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                              int n, int sw);
+void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                          const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
 #endif
 
 /* Whether k holds SIMD twins (the C set is the one with the C box); a

@@ -86,6 +86,35 @@ static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bk
     return (uint32_t)c + (v >= next[c]);
 }
 #define BLOOM_FENC8(v) bloom_enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
+
+/* The scalar part of the SIMD encoders (bloom_row_avx2.c, bloom_row_neon.c):
+ * 8 pixels whose bloom b is in the order of their bytes. RGB888:
+ * dst[q] = enc(dec(src[q]) + b[q]) for the 24 bytes; XRGB8888 (B G R X):
+ * the same for the colour bytes, X = 0xFF. Unrolled: 24 independent
+ * table walks. */
+#if defined(__clang__)
+#define BLOOM_UNROLL _Pragma("clang loop unroll(full)")
+#elif defined(__GNUC__)
+#define BLOOM_UNROLL _Pragma("GCC unroll 24")
+#else
+#define BLOOM_UNROLL
+#endif
+static BLOOM_ALWAYS_INLINE void bloom_enc8_run24(const uint8_t *src, const uint32_t *b, uint8_t *dst)
+{
+    BLOOM_UNROLL
+    for (int q = 0; q < 24; q++)
+        dst[q] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[q]] + b[q]);
+}
+static BLOOM_ALWAYS_INLINE void bloom_enc8_xrgb8(const uint8_t *src, const uint32_t *b, uint8_t *dst)
+{
+    BLOOM_UNROLL
+    for (int p = 0; p < 32; p += 4) {
+        dst[p] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p]] + b[p]);
+        dst[p + 1] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 1]] + b[p + 1]);
+        dst[p + 2] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 2]] + b[p + 2]);
+        dst[p + 3] = 0xFF;
+    }
+}
 bool bloom_encode_eo_ok(bloom_format_t in_fmt, bloom_format_t out_fmt, bool linear);
 void bloom_encode_eo(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                      const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);

@@ -548,6 +548,48 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
 }
 #endif
 
+void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+{
+    for (int x = 0; x < n; x++) { /* pixel x: column x / 2 of e or o */
+        const uint32_t *p = (x & 1 ? o : e) + 3 * (x >> 1);
+        for (int c = 0; c < 3; c++, dst++)
+            *dst = p[c] + (add ? *add++ : 0u);
+    }
+}
+
+/* Low-resolution columns per chunk of bloom_row_tent_flat (stack: 3 x 32 words). */
+#define TENT_CH 32
+
+void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
+                         int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
+                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                                       int x0, int n, int sw))
+{
+    if (x0 != 0 || sw < 2 || sw != (n + 1) / 2) {
+        exact(u, odd, add, dst, x0, n, sw);
+        return;
+    }
+    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
+    uint32_t vb[3 * (TENT_CH + 2)], eo[6 * TENT_CH]; /* vb[3 j] is column m0 - 1 + j */
+    for (int m0 = 0; m0 < sw; m0 += TENT_CH) {
+        const int nn = imin(TENT_CH, sw - m0), np = imin(2 * nn, n - 2 * m0);
+        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
+        const size_t c0 = (size_t)lo * 3u;
+        uint32_t in;
+        vt(ua + c0, ub + c0, uc + c0, vb + (size_t)(lo - m0 + 1) * 3u, 3 * (hi - lo + 1), &in);
+        if (in >> 29) { /* 3a + 4b + c + 4 could pass 2^32: the exact tent */
+            exact(u, odd, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, 2 * m0, np, sw);
+            continue;
+        }
+        if (m0 == 0) /* edges replicated */
+            memcpy(vb, vb + 3, 3u * sizeof *vb);
+        if (m0 + nn == sw)
+            memcpy(vb + 3 * (nn + 1), vb + 3 * nn, 3u * sizeof *vb);
+        ht(vb + 3, eo, eo + 3 * TENT_CH, 3 * nn);
+        il(eo, eo + 3 * TENT_CH, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, np);
+    }
+}
+
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
                      const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
@@ -632,6 +674,8 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->vtent = bloom_row_vtent_neon;
     k->htent_eo = bloom_row_htent_eo_neon;
     k->scale = bloom_row_scale_neon;
+    k->tent = bloom_row_tent_neon_flat;
+    k->eo = bloom_encode_eo_neon;
 #endif
     k->name = "neon";
 #endif

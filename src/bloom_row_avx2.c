@@ -133,8 +133,7 @@ static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
 #undef PERM
 }
 
-/* dst pixels 0 .. n-1 = even/odd columns e, o interleaved, plus add (if
- * not NULL; add may equal dst). */
+/* bloom_row_il_add_c in groups of 8 pixels. */
 static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
 {
     int x = 0;
@@ -149,47 +148,22 @@ static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, ui
         for (int j = 0; j < 3; j++)
             ST8(dst + 8 * j, v[j]);
     }
-    for (int i = 0; x < n; x++, i++) { /* pixel x: column i / 2 of e or o */
-        const uint32_t *p = (i & 1 ? o : e) + 3 * (i >> 1);
-        for (int c = 0; c < 3; c++, dst++)
-            *dst = p[c] + (add ? *add++ : 0u);
-    }
+    if (x < n)
+        bloom_row_il_add_c(e, o, add, dst, n - x);
 }
 
-/* Level-(k+1) columns per chunk of the tent (stack: 3 x 32 words). */
-#define TENT_CH 32
+static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
+                         uint32_t *in_or)
+{
+    return vtent8(a, b, c, dst, n, in_or);
+}
 
-/* bloom_row_tent_sse2_any through the flat kernels, for whole rows
- * (x0 = 0, n = 2 sw or 2 sw - 1): per chunk of low-resolution columns the
- * vertical tent (edges replicated), the horizontal tent into even and odd
- * columns, then interleaved with add. A chunk whose rows hold a value of
- * 2^29 or more (the flat sums could wrap) takes the exact SSE2 tent. */
+/* bloom_row_tent_sse2_any through the flat kernels for whole rows. */
 void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
                          int n, int sw)
 {
-    if (x0 != 0 || sw < 2 || sw != (n + 1) / 2) {
-        bloom_row_tent_sse2_any(u, odd, add, dst, x0, n, sw);
-        return;
-    }
-    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
-    uint32_t vb[3 * (TENT_CH + 2)], eo[6 * TENT_CH];
-    for (int m0 = 0; m0 < sw; m0 += TENT_CH) {
-        const int nn = imin(TENT_CH, sw - m0), np = imin(2 * nn, n - 2 * m0);
-        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
-        uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u, in;
-        const size_t c0 = (size_t)lo * 3u;
-        vtent8(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1), &in);
-        if (in >> 29) {
-            bloom_row_tent_sse2_any(u, odd, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, 2 * m0, np, sw);
-            continue;
-        }
-        if (m0 == 0)
-            memcpy(vb, vb + 3, 3u * sizeof *vb);
-        if (m0 + nn == sw)
-            memcpy(vb + 3 * (nn + 1), vb + 3 * nn, 3u * sizeof *vb);
-        bloom_row_htent_eo_avx2(vb + 3, eo, eo + 3 * TENT_CH, 3 * nn);
-        il_add(eo, eo + 3 * TENT_CH, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, np);
-    }
+    bloom_row_tent_flat(u, odd, add, dst, x0, n, sw, vtent_in, bloom_row_htent_eo_avx2, il_add,
+                        bloom_row_tent_sse2_any);
 }
 
 /* ---- level-1 row: box from the source and knee, dark blocks skipped ------ */
@@ -268,34 +242,6 @@ static inline __m256i keep8(__m256i code, __m256i b)
     return _mm256_cmpeq_epi32(_mm256_min_epu32(b, lb), b);
 }
 
-/* n samples, flat: dst[q] = enc(dec(src[q]) + b[q]). */
-static inline void enc_flat(const uint8_t *src, const uint32_t *b, uint8_t *dst, int n)
-{
-#if defined(__clang__)
-#pragma clang loop unroll(full)
-#else
-#pragma GCC unroll 24
-#endif
-    for (int q = 0; q < n; q++)
-        dst[q] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[q]] + b[q]);
-}
-
-/* 8 XRGB8888 pixels, B G R X bytes: dst = enc(dec(src) + b), X = 0xFF. */
-static inline void enc_xrgb(const uint8_t *src, const uint32_t *b, uint8_t *dst)
-{
-#if defined(__clang__)
-#pragma clang loop unroll(full)
-#else
-#pragma GCC unroll 8
-#endif
-    for (int p = 0; p < 32; p += 4) {
-        dst[p] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p]] + b[p]);
-        dst[p + 1] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 1]] + b[p + 1]);
-        dst[p + 2] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 2]] + b[p + 2]);
-        dst[p + 3] = 0xFF;
-    }
-}
-
 /* The bloom of the 32 bytes of 8 XRGB8888 pixels (B G R X each) as four
  * vectors, from e[0..11] and o[0..11]; the X lanes hold a copy of R. */
 static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
@@ -338,7 +284,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
             }
             for (int k = 0; k < 3; k++)
                 ST8(bb + 8 * k, b[k]);
-            enc_flat(src, bb, dst, 24);
+            bloom_enc8_run24(src, bb, dst);
         }
     } else {
         const __m256i xlanes = _mm256_setr_epi32(0, 0, 0, -1, 0, 0, 0, -1);
@@ -351,7 +297,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
             if (_mm256_movemask_epi8(keep) != -1) {
                 for (int k = 0; k < 4; k++)
                     ST8(bb + 8 * k, b[k]);
-                enc_xrgb(src, bb, dst);
+                bloom_enc8_xrgb8(src, bb, dst);
             } else { /* the bloom changes no code here: the source, X = 0xFF */
                 ST8(dst, _mm256_or_si256(LD8(src), _mm256_set1_epi32((int)0xFF000000u)));
             }

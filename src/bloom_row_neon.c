@@ -2,6 +2,7 @@
  * of bloom_row.c; the kernels are written once in bloom_row_simd.h. Empty
  * on other targets. */
 #include "bloom_internal.h"
+#include "bloom_pixel.h"
 
 #if defined(BLOOM_SIMD_NEON)
 #include <arm_neon.h>
@@ -127,6 +128,145 @@ uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
     return htent_eo_flat(v, e, o, n);
+}
+
+/* vtent_flat that also ORs its inputs into *in_or (bloom_row_tent_flat). */
+static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
+                         uint32_t *in_or)
+{
+    uint32x4_t any = vdupq_n_u32(0), in = vdupq_n_u32(0);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const uint32x4_t va = vld1q_u32(a + i), vb = vld1q_u32(b + i), vc = vld1q_u32(c + i);
+        const uint32x4_t t = vaddq_u32(vaddq_u32(va, vshlq_n_u32(va, 1)), vshlq_n_u32(vb, 2));
+        const uint32x4_t r = vshrq_n_u32(vaddq_u32(t, vaddq_u32(vc, vdupq_n_u32(4))), 3);
+        vst1q_u32(dst + i, r);
+        any = vorrq_u32(any, r);
+        in = vorrq_u32(in, vorrq_u32(va, vorrq_u32(vb, vc)));
+    }
+    uint32_t ri = or_lanes(in), r = or_lanes(any);
+    for (; i < n; i++) {
+        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+        r |= dst[i];
+        ri |= a[i] | b[i] | c[i];
+    }
+    *in_or = ri;
+    return r;
+}
+
+/* bloom_row_il_add_c in groups of 8 pixels: the R, G, B planes of the even
+ * and the odd columns (vld3) zipped into pixel order, stored by vst3. */
+static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+{
+    int x = 0;
+    for (; x + 8 <= n; x += 8, e += 12, o += 12, dst += 24) {
+        const uint32x4x3_t ev = vld3q_u32(e), ov = vld3q_u32(o);
+        uint32x4x3_t lo, hi;
+        for (int c = 0; c < 3; c++) {
+            lo.val[c] = vzip1q_u32(ev.val[c], ov.val[c]);
+            hi.val[c] = vzip2q_u32(ev.val[c], ov.val[c]);
+        }
+        if (add) {
+            const uint32x4x3_t a0 = vld3q_u32(add), a1 = vld3q_u32(add + 12);
+            for (int c = 0; c < 3; c++) {
+                lo.val[c] = vaddq_u32(lo.val[c], a0.val[c]);
+                hi.val[c] = vaddq_u32(hi.val[c], a1.val[c]);
+            }
+            add += 24;
+        }
+        vst3q_u32(dst, lo);
+        vst3q_u32(dst + 12, hi);
+    }
+    if (x < n)
+        bloom_row_il_add_c(e, o, add, dst, n - x);
+}
+
+void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                              int n, int sw)
+{
+    bloom_row_tent_flat(u, odd, add, dst, x0, n, sw, vtent_in, bloom_row_htent_eo_neon, il_add,
+                        bloom_row_tent_neon_any);
+}
+
+/* All ones in the lanes whose code c the bloom b cannot change
+ * (b <= max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0), bloom_internal.h). */
+static inline uint32x4_t keep4(uint32x4_t c, uint32x4_t b)
+{
+    return vcleq_u32(b, vmaxq_u32(vmulq_n_u32(c, BLOOM_KEEP8_A), vdupq_n_u32(BLOOM_KEEP8_H0)));
+}
+
+/* The 8 codes of a plane (pixels 0..7) as two vectors of 32-bit lanes. */
+static inline void widen8(uint8x8_t p, uint32x4_t *lo, uint32x4_t *hi)
+{
+    const uint16x8_t w = vmovl_u8(p);
+    *lo = vmovl_u16(vget_low_u16(w));
+    *hi = vmovl_high_u16(w);
+}
+
+/* The fused composite and encode (bloom_encode_eo) in groups of 8 pixels,
+ * RGB888 -> RGB888 and XRGB8888 -> XRGB8888: the bloom's R, G, B planes
+ * of the even and odd columns zipped into pixel order; a group where the
+ * bloom changes no code is the source copied, the others are encoded
+ * sample by sample (the table reads stay scalar). */
+void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
+                          const uint32_t *e, const uint32_t *o, uint8_t *dst, int n)
+{
+    const bool rgb = BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888 && out_fmt == BLOOM_FMT_RGB888;
+    const bool xrgb = BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888 && out_fmt == BLOOM_FMT_XRGB8888;
+    if (debug || !(rgb || xrgb) || n < 8) {
+        bloom_encode_eo(in_fmt, out_fmt, debug, src, e, o, dst, n);
+        return;
+    }
+    const int g = n / 8;
+    const size_t bpp = rgb ? 3u : 4u;
+    uint32_t bb[32];
+    for (int j = 0; j < g; j++, src += 8 * bpp, dst += 8 * bpp, e += 12, o += 12) {
+        const uint32x4x3_t ev = vld3q_u32(e), ov = vld3q_u32(o);
+        uint32x4_t blo[3], bhi[3]; /* R, G, B of pixels 0..3 and 4..7 */
+        for (int c = 0; c < 3; c++) {
+            blo[c] = vzip1q_u32(ev.val[c], ov.val[c]);
+            bhi[c] = vzip2q_u32(ev.val[c], ov.val[c]);
+        }
+        uint8x8_t code[3]; /* R, G, B planes of the source */
+        uint8x8x4_t px;
+        if (rgb) {
+            const uint8x8x3_t p3 = vld3_u8(src);
+            for (int c = 0; c < 3; c++)
+                code[c] = p3.val[c];
+        } else {
+            px = vld4_u8(src); /* B G R X */
+            for (int c = 0; c < 3; c++)
+                code[c] = px.val[2 - c];
+        }
+        uint32x4_t keep = vdupq_n_u32(0xFFFFFFFFu);
+        for (int c = 0; c < 3; c++) {
+            uint32x4_t clo, chi;
+            widen8(code[c], &clo, &chi);
+            keep = vandq_u32(keep, vandq_u32(keep4(clo, blo[c]), keep4(chi, bhi[c])));
+        }
+        if (vminvq_u32(keep) == 0xFFFFFFFFu) { /* the bloom changes no code here */
+            if (xrgb) {
+                px.val[3] = vdup_n_u8(0xFF);
+                vst4_u8(dst, px);
+            } else if (src != dst) {
+                memcpy(dst, src, 24);
+            }
+            continue;
+        }
+        if (rgb) {
+            const uint32x4x3_t lo = {{blo[0], blo[1], blo[2]}}, hi = {{bhi[0], bhi[1], bhi[2]}};
+            vst3q_u32(bb, lo);
+            vst3q_u32(bb + 12, hi);
+            bloom_enc8_run24(src, bb, dst);
+        } else {
+            const uint32x4x4_t lo = {{blo[2], blo[1], blo[0], blo[0]}}, hi = {{bhi[2], bhi[1], bhi[0], bhi[0]}};
+            vst4q_u32(bb, lo);
+            vst4q_u32(bb + 16, hi);
+            bloom_enc8_xrgb8(src, bb, dst);
+        }
+    }
+    if (n > 8 * g)
+        bloom_encode_eo(in_fmt, out_fmt, false, src, e, o, dst, n - 8 * g);
 }
 
 /* x = low 32 bits of (I x + 32768) >> 16: a widening multiply, then a
