@@ -291,8 +291,8 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
         for (int j = 0; j < g; j++, src += 32, dst += 32, e += 12, o += 12) {
             __m256i b[4];
             il32x(e, o, b);
-            __m256i keep = xlanes;
-            for (int k = 0; k < 4; k++)
+            __m256i keep = _mm256_set1_epi32(-1);
+            for (int k = 0; k < 4; k++) /* the X lanes count as kept */
                 keep = _mm256_and_si256(keep, _mm256_or_si256(keep8(codes8(src + 8 * k), b[k]), xlanes));
             if (_mm256_movemask_epi8(keep) != -1) {
                 for (int k = 0; k < 4; k++)
