@@ -87,6 +87,21 @@ static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bk
 }
 #define BLOOM_FENC8(v) bloom_enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
 
+/* What the SIMD encoders (bloom_row_avx2.c, bloom_row_neon.c) take in
+ * 8-pixel groups: the bytes per pixel, 3 for RGB888 -> RGB888 and 4 for
+ * XRGB8888 -> XRGB8888; 0 sends the call to bloom_encode_eo (other format
+ * pairs, the debug view, fewer than 8 pixels). */
+static inline int bloom_eo_group_bpp(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, int n)
+{
+    if (debug || n < 8 || in_fmt != out_fmt)
+        return 0;
+    if (BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888)
+        return 3;
+    if (BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888)
+        return 4;
+    return 0;
+}
+
 /* The scalar part of the SIMD encoders (bloom_row_avx2.c, bloom_row_neon.c):
  * 8 pixels whose bloom b is in the order of their bytes. RGB888:
  * dst[q] = enc(dec(src[q]) + b[q]) for the 24 bytes; XRGB8888 (B G R X):

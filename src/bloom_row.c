@@ -503,116 +503,6 @@ void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity)
         x[i] = (uint32_t)(((uint64_t)intensity * x[i] + 32768u) >> 16);
 }
 
-#if !BLOOM_SMALL
-/* Level-1 columns per chunk of the fast output path (stack: 3 x 32 words). */
-#define OUT_FAST_CH 32
-
-/* The fast output path of bloom_row_out_k (see bloom_internal.h for the
- * bound it relies on). Per chunk of level-1 columns m0 .. m0+n-1: the
- * vertical tent V of columns m0-1 .. m0+n (edges replicated) in one flat
- * pass, the horizontal tent into the even (e) and odd (od) output columns,
- * the intensity, then the composite and encode per output pixel. Same bits
- * as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
- * for I <= 224.4 and P + S < 2^32. */
-static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
-{
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
-    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
-    uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
-    uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
-    for (int m0 = 0; m0 < sw; m0 += OUT_FAST_CH) {
-        const int n = imin(OUT_FAST_CH, sw - m0);
-        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
-        const size_t c0 = (size_t)lo * 3u;
-        uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
-        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
-        if (!k->vtent(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1))) { /* V = 0: B = 0 here */
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
-            continue;
-        }
-        if (m0 == 0)
-            memcpy(vb, vb + 3, 3u * sizeof *vb);
-        if (m0 + n == sw)
-            memcpy(vb + 3 * (n + 1), vb + 3 * n, 3u * sizeof *vb);
-        if (!k->htent_eo(vb + 3, e, od, 3 * n)) { /* B = 0 on this chunk */
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
-            continue;
-        }
-        if (o->intensity != 65536u) { /* (65536 x + 32768) >> 16 = x */
-            k->scale(e, 3 * n, o->intensity);
-            k->scale(od, 3 * n, o->intensity);
-        }
-        k->eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od, dst + (size_t)x0 * obpp, nx);
-    }
-}
-#endif
-
-void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
-{
-    for (int x = 0; x < n; x++) { /* pixel x: column x / 2 of e or o */
-        const uint32_t *p = (x & 1 ? o : e) + 3 * (x >> 1);
-        for (int c = 0; c < 3; c++, dst++)
-            *dst = p[c] + (add ? *add++ : 0u);
-    }
-}
-
-/* Low-resolution columns per chunk of bloom_row_tent_flat (stack: 3 x 32 words). */
-#define TENT_CH 32
-
-void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
-                         int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
-                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                                       int x0, int n, int sw))
-{
-    if (x0 != 0 || sw < 2 || sw != (n + 1) / 2) {
-        exact(u, odd, add, dst, x0, n, sw);
-        return;
-    }
-    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
-    uint32_t vb[3 * (TENT_CH + 2)], eo[6 * TENT_CH]; /* vb[3 j] is column m0 - 1 + j */
-    for (int m0 = 0; m0 < sw; m0 += TENT_CH) {
-        const int nn = imin(TENT_CH, sw - m0), np = imin(2 * nn, n - 2 * m0);
-        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
-        const size_t c0 = (size_t)lo * 3u;
-        uint32_t in;
-        vt(ua + c0, ub + c0, uc + c0, vb + (size_t)(lo - m0 + 1) * 3u, 3 * (hi - lo + 1), &in);
-        if (in >> 29) { /* 3a + 4b + c + 4 could pass 2^32: the exact tent */
-            exact(u, odd, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, 2 * m0, np, sw);
-            continue;
-        }
-        if (m0 == 0) /* edges replicated */
-            memcpy(vb, vb + 3, 3u * sizeof *vb);
-        if (m0 + nn == sw)
-            memcpy(vb + 3 * (nn + 1), vb + 3 * nn, 3u * sizeof *vb);
-        ht(vb + 3, eo, eo + 3 * TENT_CH, 3 * nn);
-        il(eo, eo + 3 * TENT_CH, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, np);
-    }
-}
-
-void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
-                     const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
-{
-#if !BLOOM_SMALL
-    if (k->vtent && sw >= 1 && sw == (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        out_fast(k, u, odd, src, dst, w, sw, o);
-        return;
-    }
-#endif
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
-    uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
-    if (o->debug)
-        memset(sv, 0, sizeof sv);
-    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
-        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
-        k->tent(u, odd, NULL, bl, x0, n, sw);
-        if (!o->debug)
-            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
-        k->composite(bl, sv, 3 * n, o->intensity);
-        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
-    }
-}
-
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
 {
     k->box = bloom_row_box_c;
@@ -649,17 +539,11 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->name = "sse2";
 #if defined(BLOOM_SIMD_AVX2)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
-#ifndef EXP_NO_TENT
         k->tent = bloom_row_tent_avx2;
         k->d1 = bloom_row_d1_avx2;
-#endif
-#ifndef EXP_NO_FLAT
         k->vtent = bloom_row_vtent_avx2;
         k->htent_eo = bloom_row_htent_eo_avx2;
-#endif
-#ifndef EXP_NO_EO
         k->eo = bloom_encode_eo_avx2;
-#endif
         k->name = "avx2";
     }
 #endif

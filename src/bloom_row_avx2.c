@@ -263,12 +263,12 @@ static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
 void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n)
 {
-    const bool rgb = BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888 && out_fmt == BLOOM_FMT_RGB888;
-    const bool xrgb = BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888 && out_fmt == BLOOM_FMT_XRGB8888;
-    if (debug || !(rgb || xrgb) || n < 8) {
+    const int gbpp = bloom_eo_group_bpp(in_fmt, out_fmt, debug, n);
+    if (!gbpp) {
         bloom_encode_eo(in_fmt, out_fmt, debug, src, e, o, dst, n);
         return;
     }
+    const bool rgb = gbpp == 3; /* else XRGB8888 */
     const int g = n / 8; /* groups of 8 pixels: 12 bloom samples of e and of o each */
     uint32_t bb[32];
     if (rgb) {

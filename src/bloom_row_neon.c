@@ -211,14 +211,14 @@ static inline void widen8(uint8x8_t p, uint32x4_t *lo, uint32x4_t *hi)
 void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n)
 {
-    const bool rgb = BLOOM_USE_RGB888 && in_fmt == BLOOM_FMT_RGB888 && out_fmt == BLOOM_FMT_RGB888;
-    const bool xrgb = BLOOM_USE_XRGB8888 && in_fmt == BLOOM_FMT_XRGB8888 && out_fmt == BLOOM_FMT_XRGB8888;
-    if (debug || !(rgb || xrgb) || n < 8) {
+    const int gbpp = bloom_eo_group_bpp(in_fmt, out_fmt, debug, n);
+    if (!gbpp) {
         bloom_encode_eo(in_fmt, out_fmt, debug, src, e, o, dst, n);
         return;
     }
+    const bool rgb = gbpp == 3, xrgb = gbpp == 4;
     const int g = n / 8;
-    const size_t bpp = rgb ? 3u : 4u;
+    const size_t bpp = (size_t)gbpp;
     uint32_t bb[32];
     for (int j = 0; j < g; j++, src += 8 * bpp, dst += 8 * bpp, e += 12, o += 12) {
         const uint32x4x3_t ev = vld3q_u32(e), ov = vld3q_u32(o);

@@ -59,6 +59,7 @@ extern double load_start, load_end;
 void die(const char *fmt, const char *arg);
 const char *bench_cv_row_name(int i); /* the OpenCV variants, in table order */
 double loadavg1(void);
+void bench_read_machine(void); /* fills cpu_model, ncpu, llc_* (bench_machine.c) */
 void write_csv(const char *path);
 void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
               size_t ring_bytes, const char *cv_version, const char *cv_parallel);

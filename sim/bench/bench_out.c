@@ -14,18 +14,6 @@
 char date_utc[64];
 double load_start = -1.0, load_end = -1.0;
 
-double loadavg1(void)
-{
-    double v = -1.0;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f) {
-        if (fscanf(f, "%lf", &v) != 1)
-            v = -1.0;
-        fclose(f);
-    }
-    return v;
-}
-
 static FILE *open_tmp(const char *path, char *tmp, size_t tmplen)
 {
     snprintf(tmp, tmplen, "%s.tmp", path);

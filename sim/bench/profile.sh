@@ -46,6 +46,42 @@ stage_of() {
     esac
 }
 
+# The head of a table: its first columns, then one column per row.
+table_head() {
+    printf '%s' "$1"
+    for s in $rows; do printf ' `%s` |' "$(cat "$dir/$s.name")"; done
+    printf '\n%s' "$2"
+    for s in $rows; do printf -- '---:|'; done
+    printf '\n'
+}
+
+# function, row, % of that row's engine samples: one line each.
+shares() {
+    for s in $rows; do
+        tot=$(awk -F'\t' '{ t += $2 } END { print t + 0 }' "$dir/$s.fn")
+        awk -F'\t' -v s="$s" -v t="$tot" '{ printf "%s\t%s\t%.1f\n", $1, s, (t > 0 ? 100 * $2 / t : 0) }' "$dir/$s.fn"
+    done
+}
+
+# key, row, share lines summed per key into table lines "| key | share |...",
+# largest share of the first row first; keys under $1 % in every row left out.
+table_rows() {
+    awk -F'\t' -v rows="$rows" -v min="$1" -v fmt="$2" '
+        { share[$1 SUBSEP $2] += $3; keys[$1] = 1 }
+        END {
+            n = split(rows, r, " ")
+            for (k in keys) {
+                line = "| " k " |"
+                big = 0
+                for (i = 1; i <= n; i++) {
+                    line = line sprintf(fmt, share[k SUBSEP r[i]])
+                    if (share[k SUBSEP r[i]] >= min) big = 1
+                }
+                if (big) printf "%08.3f\t%s\n", 1000 - share[k SUBSEP r[1]], line
+            }
+        }' | sort | cut -f2
+}
+
 rows=""
 for v in "$@"; do
     safe=$(printf '%s' "$v" | tr -c 'A-Za-z0-9_' '_')
@@ -74,55 +110,15 @@ done
     printf 'in user space outside the scene set-up (which runs once): the engine and the `memcpy`\n'
     printf 'it calls. Sampling is statistical and the machine is shared: shares move by a point or\n'
     printf 'two between runs; the instruction counts of `sim/docs/icount.md` are the repeatable figure.\n\n'
-    printf '| stage |'
-    for s in $rows; do printf ' `%s` |' "$(cat "$dir/$s.name")"; done
-    printf '\n|---|'
-    for s in $rows; do printf -- '---:|'; done
-    printf '\n'
-    for s in $rows; do
-        tot=$(awk -F'\t' '{ t += $2 } END { print t + 0 }' "$dir/$s.fn")
-        while IFS="$(printf '\t')" read -r fn p; do
-            printf '%s\t%s\t%s\n' "$(stage_of "$fn")" "$s" "$(awk -v p="$p" -v t="$tot" 'BEGIN { printf "%.1f", (t > 0 ? 100 * p / t : 0) }')"
-        done < "$dir/$s.fn"
-    done | awk -F'\t' -v rows="$rows" '
-        { share[$1 SUBSEP $2] += $3; stages[$1] = 1 }
-        END {
-            n = split(rows, r, " ")
-            for (st in stages) {
-                line = "| " st " |"
-                key = 0
-                for (i = 1; i <= n; i++) {
-                    line = line sprintf(" %.1f %% |", share[st SUBSEP r[i]])
-                    if (i == 1) key = share[st SUBSEP r[i]]
-                }
-                printf "%08.3f\t%s\n", 1000 - key, line
-            }
-        }' | sort | cut -f2
+    table_head '| stage |' '|---|'
+    shares | while IFS="$(printf '\t')" read -r fn s p; do
+        printf '%s\t%s\t%s\n' "$(stage_of "$fn")" "$s" "$p"
+    done | table_rows 0 ' %.1f %% |'
     printf '\nBy function (share of the engine samples, %% ; functions under 0.5 %% in every row left out):\n\n'
-    printf '| function | stage |'
-    for s in $rows; do printf ' `%s` |' "$(cat "$dir/$s.name")"; done
-    printf '\n|---|---|'
-    for s in $rows; do printf -- '---:|'; done
-    printf '\n'
-    for s in $rows; do
-        tot=$(awk -F'\t' '{ t += $2 } END { print t + 0 }' "$dir/$s.fn")
-        awk -F'\t' -v s="$s" -v t="$tot" '{ printf "%s\t%s\t%.1f\n", $1, s, (t > 0 ? 100 * $2 / t : 0) }' "$dir/$s.fn"
-    done | awk -F'\t' -v rows="$rows" '
-        { share[$1 SUBSEP $2] += $3; fns[$1] = 1 }
-        END {
-            n = split(rows, r, " ")
-            for (f in fns) {
-                big = 0
-                line = ""
-                for (i = 1; i <= n; i++) {
-                    line = line sprintf(" %.1f |", share[f SUBSEP r[i]])
-                    if (share[f SUBSEP r[i]] >= 0.5) big = 1
-                }
-                if (big) printf "%08.3f\t%s\t%s\n", 1000 - share[f SUBSEP r[1]], f, line
-            }
-        }' | sort | while IFS="$(printf '\t')" read -r k fn line; do
-        printf '| `%s` | %s |%s\n' "$fn" "$(stage_of "$fn")" "$line"
-    done
+    table_head '| function | stage |' '|---|---|'
+    shares | while IFS="$(printf '\t')" read -r fn s p; do
+        printf '`%s` | %s\t%s\t%s\n' "$fn" "$(stage_of "$fn")" "$s" "$p"
+    done | table_rows 0.5 ' %.1f |'
     printf '\nRows: '
     for s in $rows; do printf '`%s` ' "$(cat "$dir/$s.stdout")"; done
     printf '\n'
