@@ -54,6 +54,7 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
 }
 #endif
 
+#if defined(BLOOM_SIMD_AVX2) || defined(BLOOM_SIMD_NEON) /* their whole-row tent */
 void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
 {
     for (int x = 0; x < n; x++) { /* pixel x: column x / 2 of e or o */
@@ -95,6 +96,7 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
         il(eo, eo + 3 * TENT_CH, add ? add + (size_t)m0 * 6u : NULL, dst + (size_t)m0 * 6u, np);
     }
 }
+#endif
 
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
                      const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
