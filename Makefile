@@ -26,11 +26,13 @@ CORE_HDR := $(wildcard include/*.h src/*.h)
 SIM_SRC := sim/bloom_model.c sim/imgio.c sim/model_presets.c $(filter-out sim/model_presets.c,$(sort $(wildcard sim/model_*.c)))
 SIM_HDR := sim/bloom_model.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
-# Make targets `make test` runs after the test binaries, one pass/fail each;
-# a target that prints a line starting "skipped:" counts as skipped.
-CHECKS := freestanding clang-build check-tables test-small test-precision test-clang-san
+# Make targets `make test` runs after the test binaries, one verdict each
+# (tests/verdict.sh: a closing line "N passed, N failed, N skipped" or, for
+# a recipe that is its own check, its exit status; a line "skipped: WHAT:
+# WHY" names a skip, and under CI=true fails).
+CHECKS := test-runner freestanding clang-build check-tables test-small test-precision test-clang-san
 
-.PHONY: all test demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
+.PHONY: all test test-runner demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
@@ -92,19 +94,18 @@ $(B)/clangsan/%: tests/%.c $(wildcard tests/*.h) $(CLANGSAN_OBJ) $(CORE_HDR) $(S
 	@mkdir -p $(B)/clangsan
 	$(CLANG) $(WARN) $(SAN) $(HOST_CPPFLAGS) $< $(CLANGSAN_OBJ) -lm -o $@
 test-clang-san: $(B)/clangsan/test_core $(B)/clangsan/test_extreme
-	@echo "clang -fsanitize=address,undefined:"
 	@for t in test_core test_extreme; do \
-	  BLOOM_DATA_DIR=tests/data $(B)/clangsan/$$t > $(B)/clangsan/$$t.log 2>&1; st=$$?; \
-	  tail -n 1 $(B)/clangsan/$$t.log; [ $$st -eq 0 ] || { tail -n 20 $(B)/clangsan/$$t.log; exit 1; }; done
+	  sh tests/runbin.sh "clang -fsanitize=address,undefined: $$t" '^$$' -- \
+	    env BLOOM_DATA_DIR=tests/data $(B)/clangsan/$$t || st=1; done; exit $${st:-0}
 
 # The size-optimized core (BLOOM_SMALL) must compute the same bits.
 $(B)/small/%: tests/%.c $(wildcard tests/*.h) $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(B)/small
 	$(CC) $(WARN) -O2 -DBLOOM_SMALL=1 $(HOST_CPPFLAGS) $< $(CORE_SRC) $(SIM_SRC) -lm -o $@
 test-small: $(B)/small/test_conformance $(B)/small/test_core
-	@echo "BLOOM_SMALL=1 (binary-search encoder, no per-format copies):"
-	@BLOOM_DATA_DIR=tests/data $(B)/small/test_conformance | tail -n 1
-	@$(B)/small/test_core | tail -n 1
+	@sh tests/runbin.sh "BLOOM_SMALL=1 (binary-search encoder, no per-format copies): test_conformance" '^$$' -- \
+	  env BLOOM_DATA_DIR=tests/data $(B)/small/test_conformance; a=$$?; \
+	sh tests/runbin.sh "BLOOM_SMALL=1: test_core" '^$$' -- $(B)/small/test_core && exit $$a
 
 # Fewer internal fraction bits (BLOOM_LIN_BITS = F): tables generated for F,
 # and the conformance test must stay bit-exact with the bit-true model at F.
@@ -116,8 +117,9 @@ $(B)/f%/test_conformance: tests/test_conformance.c tests/conform.h tests/testuti
 	$(CC) $(WARN) -O2 -DBLOOM_LIN_BITS=$* $(HOST_CPPFLAGS) $< $(filter-out src/bloom_tables.c,$(CORE_SRC)) \
 	  $(B)/f$*/bloom_tables.c $(SIM_SRC) -lm -o $@
 test-precision: $(foreach f,$(PRECISIONS),$(B)/f$(f)/test_conformance)
-	@for f in $(PRECISIONS); do echo "BLOOM_LIN_BITS=$$f:"; \
-	  BLOOM_DATA_DIR=tests/data $(B)/f$$f/test_conformance | grep -E "bit-true|vs float|passed"; done
+	@for f in $(PRECISIONS); do \
+	  sh tests/runbin.sh "BLOOM_LIN_BITS=$$f:" "bit-true|vs float" -- \
+	    env BLOOM_DATA_DIR=tests/data $(B)/f$$f/test_conformance || st=1; done; exit $${st:-0}
 
 tables: $(B)/gen_tables
 	$(B)/gen_tables > src/bloom_tables.c
@@ -126,6 +128,11 @@ check-tables: $(B)/gen_tables
 
 deps:
 	sh tests/deps.sh
+
+# The runner's self-test: stand-ins that crash, fail or miscount, through
+# the same machinery, must each be reported as a failure.
+test-runner:
+	@B=$(B) sh tests/selftest/selftest.sh
 
 # The test binaries build two at a time (one make, so no races); the
 # checks then run one after another.

@@ -96,7 +96,9 @@ typedef enum {
     BLOOM_E_ATTENUATION = -18,
     BLOOM_E_WEIGHT = -19,
     BLOOM_E_TINT = -20,
-    BLOOM_E_AUX = -21        /* aux plane missing, unexpected or of an unknown format */
+    BLOOM_E_AUX = -21,       /* aux plane missing, unexpected or of an unknown format */
+    BLOOM_E_ALIAS = -22      /* destination overlaps source rows still needed: in place
+                                needs the same format and stride */
 } bloom_status_t;
 
 /* Parameters of the presets other than the default; a preset ignores the
@@ -202,7 +204,8 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
  * After the last push, pull until BLOOM_DONE. pull writes output row
  * bloom_rows_out() (before the call) to dst_row. Output row y never needs
  * source rows above y, so dst may alias src (in place) when the formats
- * and strides match. */
+ * and strides match; a destination row that overlaps a source row still
+ * needed, or source row y in another format, is refused (BLOOM_E_ALIAS). */
 bloom_status_t bloom_begin(bloom_t *b);
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row);
 /* The same with the aux plane's row (presets that read one). */
@@ -210,6 +213,8 @@ bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *a
 /* The aux plane for bloom_run_rows/bloom_process: its row 0 and stride. */
 bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride);
 bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row);
+/* Source rows pushed and output rows pulled in this frame (BLOOM_E_NULL
+ * for a NULL handle). */
 int bloom_rows_in(const bloom_t *b);
 int bloom_rows_out(const bloom_t *b);
 

@@ -584,6 +584,8 @@ bloom_status_t bloom_begin(bloom_t *b)
 
 int bloom_rows_in(const bloom_t *b)
 {
+    if (!b)
+        return BLOOM_E_NULL;
 #if BLOOM_USE_GRAPH
     if (b->graph)
         return b->graph->src_n;
@@ -593,6 +595,8 @@ int bloom_rows_in(const bloom_t *b)
 
 int bloom_rows_out(const bloom_t *b)
 {
+    if (!b)
+        return BLOOM_E_NULL;
 #if BLOOM_USE_GRAPH
     if (b->graph)
         return b->graph->node[b->graph->out_node].next;
@@ -654,14 +658,43 @@ bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
     return BLOOM_OK;
 }
 
+/* Whether output row y written at d would overwrite a source row the engine
+ * still reads (pointer mode): any held row after y, or row y itself unless
+ * d is that row and the formats are the same (in place). Rows before y are
+ * never read again once y is out. */
+static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap, size_t src_bytes,
+                         size_t dst_bytes, bool same, int y, const uint8_t *d)
+{
+    for (int s = 0; s < cap; s++) {
+        const int r = tag[s] & ~ZBIT;
+        const uint8_t *p = ptr[s];
+        if (tag[s] < 0 || r < y || (uintptr_t)d >= (uintptr_t)p + src_bytes ||
+            (uintptr_t)p >= (uintptr_t)d + dst_bytes)
+            continue;
+        if (r > y || p != d || !same)
+            return true;
+    }
+    return false;
+}
+
 bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
 {
     if (!b || !dst_row)
         return BLOOM_E_NULL;
+    const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
+    const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
 #if BLOOM_USE_GRAPH
-    if (b->graph)
+    if (b->graph) {
+        const struct bloom_graph *g = b->graph;
+        if (!g->src_copy && dst_overlaps(g->src_ptr, g->src_tag, g->src_cap, g->src_row_bytes, out_bytes,
+                                         same, g->node[g->out_node].next, (const uint8_t *)dst_row))
+            return BLOOM_E_ALIAS;
         return bloom_graph_pull(b->graph, dst_row);
+    }
 #endif
+    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes,
+                                     same, b->out_n, (const uint8_t *)dst_row))
+        return BLOOM_E_ALIAS;
     const int y = b->out_n;
     if (y >= b->h[0])
         return BLOOM_DONE;
@@ -683,6 +716,34 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
     return BLOOM_OK;
 }
 
+/* The byte span of rows r0 .. r1 - 1 of a frame (row 0 at p), for either
+ * sign of the stride. */
+static void span(const uint8_t *p, ptrdiff_t stride, size_t row_bytes, int r0, int r1, uintptr_t *lo,
+                 uintptr_t *hi)
+{
+    const uintptr_t a = (uintptr_t)(p + (ptrdiff_t)r0 * stride), z = (uintptr_t)(p + (ptrdiff_t)(r1 - 1) * stride);
+    *lo = a < z ? a : z;
+    *hi = (a < z ? z : a) + row_bytes;
+}
+
+/* A band's source and destination rows may overlap only as the same frame
+ * (same rows, stride and format: in place): a destination row written over
+ * a source row not yet pushed, or in another format, would corrupt it
+ * (with COPY_SOURCE too: rows are copied only when pushed). */
+static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, const uint8_t *d, ptrdiff_t ds,
+                           int r0, int r1)
+{
+    if (r1 <= r0)
+        return false;
+    uintptr_t slo, shi, dlo, dhi;
+    const size_t w = (size_t)b->cfg.width;
+    span(s, ss, w * (size_t)bloom_format_bpp(b->cfg.in_fmt), r0, r1, &slo, &shi);
+    span(d, ds, w * (size_t)bloom_format_bpp(b->cfg.out_fmt), r0, r1, &dlo, &dhi);
+    if (dlo >= shi || slo >= dhi)
+        return false;
+    return !(s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt);
+}
+
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows,
                               void *dst, ptrdiff_t dst_stride)
 {
@@ -693,6 +754,8 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
     const int end = bloom_rows_in(b) + nrows;
     if (nrows < 0 || end > rows_total(b))
         return BLOOM_E_STATE;
+    if (frames_overlap(b, s, src_stride, d, dst_stride, bloom_rows_in(b), end))
+        return BLOOM_E_ALIAS;
     const uint8_t *aux = NULL;
     ptrdiff_t aux_stride = 0;
 #if BLOOM_USE_GRAPH

@@ -1,7 +1,8 @@
 #!/bin/sh
 # test-cross (tests/cross.mk): cross-build for each ARM Linux architecture,
 # run under qemu-user from the repo root, and require
-#   - every unit test binary to end "N passed, 0 failed" and exit 0,
+#   - every unit test binary to pass by tests/verdict.sh (exit 0, a closing
+#     line "N passed, 0 failed, N skipped", nothing crashed),
 #   - tests/corpus_hash's listing to be byte-identical to the host's,
 #   - bloom_demo's four images to be byte-identical to the host's,
 #   - bloom_info to run (its workspace figures differ on 32-bit: pointers).
@@ -50,12 +51,12 @@ if [ "${1:-}" = job ]; then
         if [ $rc -eq 0 ]; then ok=1; res="runs"; else ok=0; res="exit $rc"; fi ;;
     *)
         BLOOM_DATA_DIR=tests/data "$qemu" "$dir/$name" >"$dir/$name.log" 2>&1; rc=$?
-        res=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$dir/$name.log" | tail -n 1)
-        case $res in
-        *" passed, 0 failed") ok=$((rc == 0)) ;;
-        *) ok=0 ;;
-        esac
-        [ $rc -eq 0 ] || res="exit $rc ${res:-(no summary)}" ;;
+        # the same verdict as on the host (a crash never passes)
+        . tests/verdict.sh
+        verdict "$rc" "$dir/$name.log" 0
+        res="$v_pass passed, $v_fail failed, $v_skip skipped"
+        ok=$((v_fail == 0))
+        [ -z "$v_why" ] || res="$res ($v_why)" ;;
     esac
     printf '%s %s %ss %s\n' "$ok" "$name" "$(($(date +%s) - t0))" "$res" >"$dir/$name.result"
     exit 0

@@ -114,7 +114,7 @@ int main(void)
     near_plane_kills_bloom();
     real_image();
 #else
-    printf("skipped: BLOOM_USE_ATTENUATION=0\n");
+    SKIP("attenuation preset: compiled out (BLOOM_USE_ATTENUATION=0)");
 #endif
     return harness_finish();
 }

@@ -578,7 +578,7 @@ int main(void)
     timed("reach", reach);
     timed("worst_case", worst_case);
 #else
-    printf("skipped: BLOOM_USE_COD=0\n");
+    SKIP("cod preset: compiled out (BLOOM_USE_COD=0)");
 #endif
     return harness_finish();
 }

@@ -436,7 +436,7 @@ int main(void)
     bad_params();
     rows();
 #else
-    printf("skipped: BLOOM_USE_GAMEDEV=0\n");
+    SKIP("gamedev preset: compiled out (BLOOM_USE_GAMEDEV=0)");
 #endif
     return harness_finish();
 }
