@@ -196,9 +196,7 @@ int main(int argc, char **argv)
     p.threshold = c.threshold / 65536.0;
     p.soft_knee = c.soft_knee / 65536.0;
     p.intensity = c.intensity / 65536.0;
-    p.threshold_q = info.threshold_q;
-    p.knee_q = info.knee_q;
-    p.intensity_q = info.intensity_q;
+    bloom_model_quantize(&c, BLOOM_LIN_BITS, &p.threshold_q, &p.knee_q, &p.intensity_q);
     const int smax[3] = {c.in_fmt == BLOOM_FMT_RGBQ16 ? 0 : 255, c.in_fmt == BLOOM_FMT_RGBQ16 ? 0 : 255,
                          c.in_fmt == BLOOM_FMT_RGBQ16 ? 0 : 255};
     const int dmax[3] = {255, 255, 255};

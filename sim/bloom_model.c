@@ -16,6 +16,7 @@
 
 #define MAX_LINEAR 16777215.0 /* BLOOM_MAX_LINEAR = 2^24 - 1, Q16.16 */
 #define Q_ONE 65536.0         /* 1.0 in Q16.16 (factors, intensity, RGBQ16) */
+#define KNEE_ONE 16777216.0   /* 1.0 in the knee factor's Q24 */
 
 /* The pipeline's parameters in the units of the mode. */
 typedef struct {
@@ -71,11 +72,20 @@ static double fdiv(double a, double b)
 }
 
 /* Normalising a kernel sum by its power-of-two weight total: exact real
- * division in float mode; round half up, (sum + den/2) >> log2(den), in
- * bit-true mode. */
-static double norm(int bt, double sum, double den)
+ * division in float mode; in bit-true mode the rounding fixed-point.md
+ * names for that point ("Rounding without bias"): half up, half down or
+ * half to even. */
+enum { RND_UP, RND_DOWN, RND_EVEN };
+static double norm(int bt, double sum, double den, int rnd)
 {
-    return bt ? fdiv(sum + den / 2, den) : sum / den;
+    if (!bt)
+        return sum / den;
+    if (rnd == RND_UP)
+        return fdiv(sum + den / 2, den);
+    if (rnd == RND_DOWN)
+        return fdiv(sum + den / 2 - 1, den);
+    const double q = fdiv(sum, den), r = sum - q * den; /* half to even */
+    return q + (r > den / 2 || (r == den / 2 && fmod(q, 2.0) == 1.0));
 }
 
 /* ---- images --------------------------------------------------------- */
@@ -150,8 +160,8 @@ static uint32_t encode(const model_t *m, int linear, double v, int n)
 {
     double e;
     if (m->bt) {
-        if (n == 0) /* Q12.20 -> Q16.16, round half up, clamp */
-            return (uint32_t)fmin(m->q16 == 1.0 ? v : fdiv(v + m->q16 / 2, m->q16), MAX_LINEAR);
+        if (n == 0) /* Q12.20 -> Q16.16, round half to even, clamp */
+            return (uint32_t)fmin(m->q16 == 1.0 ? v : norm(1, v, m->q16, RND_EVEN), MAX_LINEAR);
         if (linear) /* (min(v, 2^20)*n + 2^19) >> 20 */
             return (uint32_t)fdiv(fmin(v, m->one) * n + m->one / 2, m->one);
         /* equals counting the table thresholds E_n[c] (fixed-point.md step 7) */
@@ -209,28 +219,34 @@ static void knee(const model_t *m, double rgb[3])
             rgb[c] *= contribution;
         return;
     }
-    /* Integer form: the zero cases are explicit instead of the epsilons. */
+    /* Integer form, the epsilons in internal units (fixed-point.md step 3):
+     * soft = 2x^2 / (8K + E8), rounded, E8 = round(0.00008 * 2^F); the
+     * factor num / max(b, 2^F / 100000) in Q16. x^2 reaches 2^58: integers. */
     x = clampd(b - m->t + m->k, 0.0, 2.0 * m->k);     /* signed before the clamp */
-    if (m->k == 0) { /* x^2/(4K), rounded; x^2 reaches 2^58: integers */
+    if (m->k == 0) { /* then x = 0 */
         soft = 0.0;
     } else {
-        uint64_t xi = (uint64_t)x, ki = (uint64_t)m->k;
-        soft = (double)((xi * xi + 2u * ki) / (4u * ki));
+        const uint64_t xi = (uint64_t)x, den = 8u * (uint64_t)m->k + (uint64_t)floor(m->one * 0.00008 + 0.5);
+        soft = (double)((2u * xi * xi + den / 2u) / den);
     }
     num = fmax(fmax(soft, b - m->t), 0.0);
     if (num == 0 || b == 0) {
         rgb[0] = rgb[1] = rgb[2] = 0.0;
         return;
     }
-    f = fdiv(num * Q_ONE + floor(b / 2), b);           /* Q16 factor, rounded */
+    /* the Q24 factor: num * 2^24 reaches 2^53, so the quotient in integers */
+    if (b * 100000.0 < m->one) /* max(b, 0.00001) = 0.00001: exact */
+        f = num * KNEE_ONE * 100000.0 / m->one;
+    else
+        f = (double)((((uint64_t)num << 24) + (uint64_t)floor(b / 2)) / (uint64_t)b);
     for (c = 0; c < 3; c++)
-        rgb[c] = fdiv(rgb[c] * f + 32768.0, Q_ONE);    /* (c*f + 32768) >> 16 */
+        rgb[c] = fdiv(rgb[c] * f + KNEE_ONE / 2, KNEE_ONE); /* (c*f + 2^23) >> 24, c*f < 2^53 */
 }
 
 void bloom_model_knee(const bloom_model_params_t *p, double rgb[3])
 {
     model_t m;
-    m.bt = p->bittrue != 0;
+    model_units(&m, p->bittrue, p->lin_bits);
     m.t = m.bt ? p->threshold_q : p->threshold;
     m.k = m.bt ? p->knee_q : p->threshold * p->soft_knee;
     m.i = 0.0;
@@ -252,7 +268,7 @@ int bloom_model_box_down(const bloom_model_image_t *src, bloom_model_image_t *ds
                 for (i = 0; i < 4; i++)
                     for (j = 0; j < 4; j++)
                         sum += at(src, 2 * x - 1 + j, 2 * y - 1 + i, c);
-                px(dst, x, y)[c] = norm(bittrue, sum, 16.0); /* (sum + 8) >> 4 */
+                px(dst, x, y)[c] = norm(bittrue, sum, 16.0, RND_EVEN); /* sum / 16, half to even */
             }
     return 0;
 }
@@ -277,23 +293,23 @@ int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_mode
         bloom_model_image_free(&v);
         return -1;
     }
-    /* vertical first, rounded ... */
+    /* vertical first, rounded half up ... */
     for (y = 0; y < h; y++)
         for (x = 0; x < low->w; x++)
             for (c = 0; c < 3; c++) {
                 double sum = 0.0;
                 for (i = 0; i < 3; i++)
                     sum += tent_w[y & 1][i] * at(low, x, (y >> 1) - 1 + i, c);
-                px(&v, x, y)[c] = norm(bittrue, sum, 8.0); /* (sum + 4) >> 3 */
+                px(&v, x, y)[c] = norm(bittrue, sum, 8.0, RND_UP); /* (sum + 4) >> 3 */
             }
-    /* ... then horizontal, rounded */
+    /* ... then horizontal, rounded half down (the two passes' ties cancel) */
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
             for (c = 0; c < 3; c++) {
                 double sum = 0.0;
                 for (i = 0; i < 3; i++)
                     sum += tent_w[x & 1][i] * at(&v, (x >> 1) - 1 + i, y, c);
-                px(dst, x, y)[c] = norm(bittrue, sum, 8.0); /* (sum + 4) >> 3 */
+                px(dst, x, y)[c] = norm(bittrue, sum, 8.0, RND_DOWN); /* (sum + 3) >> 3 */
             }
     bloom_model_image_free(&v);
     return 0;
@@ -401,7 +417,7 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
         knee(&m, v);
         if (p->d1_scale)
             for (k = 0; k < 3; k++)
-                v[k] = m.bt ? fdiv(v[k] * p->d1_scale[i] + 32768.0, Q_ONE) : v[k] * p->d1_scale[i];
+                v[k] = m.bt ? fdiv(v[k] * p->d1_scale[i] + KNEE_ONE / 2, KNEE_ONE) : v[k] * p->d1_scale[i];
     }
     for (k = 1; k < L; k++)
         if (bloom_model_box_down(&out->D[k], &out->D[k + 1], m.bt))

@@ -19,14 +19,15 @@ typedef struct {
     int bittrue;              /* 0: float model; 1: bit-true model */
     /* float model parameters (real values; intensity in gamma space as the user gives it) */
     double threshold, soft_knee, intensity;
-    /* bit-true parameters: the core's quantized values (bloom_info_t): T_q and K_q
-     * in Q12.20, I_q in Q16.16 (fixed-point.md) */
+    /* bit-true parameters: the quantized values (fixed-point.md, "Parameters
+     * at setup"), T_q and K_q in Q12.20, I_q in Q16.16: from
+     * bloom_model_quantize, never read back from the engine */
     uint32_t threshold_q, knee_q, intensity_q;
     int lin_bits; /* bit-true: fraction bits F of the internal samples (BLOOM_LIN_BITS,
                      16..20); 0 means 20. T_q and K_q are then in Q(32-F).F */
     /* Optional factor per level-1 pixel (w1*h1, row-major) applied to D1
      * after the knee (the attenuation preset): real factors in float mode,
-     * Q16 integers (0 .. 65536) in bit-true mode, there D1 = (D1*f + 2^15) >> 16.
+     * Q24 integers (0 .. 2^24) in bit-true mode, there D1 = (D1*f + 2^23) >> 24.
      * NULL: none. */
     const double *d1_scale;
 } bloom_model_params_t;
@@ -104,7 +105,7 @@ void bloom_model_knee(const bloom_model_params_t *p, double rgb[3]);
  * The model of every preset of the core, driven by the core's own
  * configuration: float mode takes the parameters as the real values they
  * stand for (Q16.16 / 65536; intensity through the sRGB curve), bit-true
- * mode the core's quantized values (bloom_query). */
+ * mode the values bloom_model_quantize computes by the written rules. */
 #include "bloom.h"
 
 typedef struct {
@@ -128,8 +129,14 @@ int bloom_model_gamedev(const bloom_model_preset_args_t *a);
 int bloom_model_xna(const bloom_model_preset_args_t *a);
 int bloom_model_arm(const bloom_model_preset_args_t *a);
 int bloom_model_cod(const bloom_model_preset_args_t *a);
+/* The quantized threshold, knee and intensity of cfg (any preset) by the
+ * rules of fixed-point.md, computed in double from cfg alone; lin_bits F
+ * (0 = 20). The tests hold bloom_query's figures equal to these. */
+void bloom_model_quantize(const bloom_config_t *c, int lin_bits, uint32_t *threshold_q, uint32_t *knee_q,
+                          uint32_t *intensity_q);
 /* bloom_model_params_t for a preset args' common part (sizes, knee,
- * intensity, flags, mode). Returns 0, or -1 when bloom_query refuses cfg. */
+ * intensity, flags, mode), quantized by bloom_model_quantize. Returns 0,
+ * or -1 when bloom_query refuses cfg (only its verdict is used). */
 int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_params_t *p);
 
 #endif

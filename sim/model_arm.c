@@ -67,7 +67,8 @@ static int down(const plane_t *s, plane_t *d, int bt)
                 for (int i = 0; i < 4; i++)
                     for (int j = 0; j < 4; j++)
                         sum += K4[i][j] * at(s, 2 * x - 1 + j, 2 * y - 1 + i);
-                r = bloom_model_fdiv(sum + 16, 32);
+                const double q = bloom_model_fdiv(sum, 32), rem = sum - 32 * q; /* half to even */
+                r = q + (rem > 16 || (rem == 16 && fmod(q, 2.0) == 1.0));
             } else {
                 const double cx = 2 * x + 1, cy = 2 * y + 1; /* destination centre, source texels */
                 r = (4 * samp(s, cx, cy) + samp(s, cx - 1, cy - 1) + samp(s, cx + 1, cy - 1) +
@@ -107,7 +108,7 @@ static int up(const plane_t *s, plane_t *d, int w, int h, int bt)
 }
 
 /* The knee on one channel: b * contribution (float, epsilons included),
- * max(soft, b - T, 0) with soft = (x^2 + 2K) / (4K) (bit-true). */
+ * max(soft, b - T, 0) with soft = 2x^2 / (8K + E8), rounded (bit-true). */
 static double knee1(const bloom_model_params_t *p, double b)
 {
     if (!p->bittrue) {
@@ -116,24 +117,26 @@ static double knee1(const bloom_model_params_t *p, double b)
         soft = soft * soft * 0.25 / (k + 0.00001);
         return b * (fmax(soft, b - t) / fmax(b, 0.00001));
     }
-    const double t = p->threshold_q, k = p->knee_q;
+    const double t = p->threshold_q, k = p->knee_q, one = ldexp(1.0, p->lin_bits);
     const double x = fmin(fmax(b - t + k, 0.0), 2 * k);
     double soft = 0;
-    if (k > 0) {
-        const uint64_t xi = (uint64_t)x, ki = (uint64_t)k;
-        soft = (double)((xi * xi + 2u * ki) / (4u * ki));
+    if (k > 0) { /* 2x^2 / (8K + round(0.00008 * 2^F)), rounded; x^2 < 2^58: integers */
+        const uint64_t xi = (uint64_t)x, den = 8u * (uint64_t)k + (uint64_t)floor(one * 0.00008 + 0.5);
+        soft = (double)((2u * xi * xi + den / 2u) / den);
     }
-    return fmax(fmax(soft, b - t), 0.0);
+    const double v = fmax(fmax(soft, b - t), 0.0);
+    if (b * 100000.0 < one) /* max(b, 0.00001) = 0.00001: v * b / 0.00001, rounded */
+        return floor((v * b * 100000.0 + one / 2) / one);
+    return v;
 }
 
-/* Q16 value of a mask or map code (bit-true), c / max (float). */
+/* Q24 value of a mask or map code (bit-true: c * 2^24 / max rounded, max
+ * odd so no tie), c / max (float). */
 static double auxv(const bloom_model_preset_args_t *a, uint32_t c)
 {
     if (!a->bittrue)
         return (double)c / a->aux_max;
-    if (a->aux_max == 65535)
-        return c + floor((c + 32768.0) / 65536.0);
-    return floor((c * 65536.0 + 127.0) / 255.0);
+    return floor((c * 16777216.0 + (a->aux_max - 1) / 2) / a->aux_max);
 }
 
 int bloom_model_arm(const bloom_model_preset_args_t *a)
@@ -168,8 +171,10 @@ int bloom_model_arm(const bloom_model_preset_args_t *a)
                 if (!bt) {
                     V[3 * i + ch] = (dbg ? 0.0 : s) + s * m * (st / 65536.0);
                 } else {
-                    const double f = floor((m * st + 32768.0) / 65536.0);
-                    V[3 * i + ch] = fmin(floor((s * ((dbg ? 0.0 : 65536.0) + f) + 32768.0) / 65536.0), top);
+                    /* Q24: s (2^24 + f) reaches 2^56, so in 64-bit integers */
+                    const uint64_t f = (uint64_t)floor((m * st + 32768.0) / 65536.0);
+                    const uint64_t v = ((uint64_t)s * ((dbg ? 0u : 1u << 24) + f) + (1u << 23)) >> 24;
+                    V[3 * i + ch] = fmin((double)v, top);
                 }
             }
         }
@@ -185,9 +190,10 @@ int bloom_model_arm(const bloom_model_preset_args_t *a)
                 if (has_aux)
                     y *= auxv(a, a->aux[i]);
             } else {
-                y = floor((13933.0 * s[0] + 46871.0 * s[1] + 4732.0 * s[2] + 32768.0) / 65536.0);
+                /* Q24 weights summing to 2^24; sums below 2^53 */
+                y = floor((3566861.0 * s[0] + 11999031.0 * s[1] + 1211324.0 * s[2] + 8388608.0) / 16777216.0);
                 if (has_aux)
-                    y = floor((y * auxv(a, a->aux[i]) + 32768.0) / 65536.0);
+                    y = floor((y * auxv(a, a->aux[i]) + 8388608.0) / 16777216.0);
             }
             lev[0].v[i] = y;
         }

@@ -6,11 +6,32 @@
 
 #include "bloom_model.h"
 
+/* The quantized parameters by the rules of sim/docs/fixed-point.md
+ * ("Parameters at setup"), computed here in double from the configuration
+ * alone: never read back from the engine, so that a wrong quantization in
+ * the core shows as a bit-true mismatch. Every product is an integer below
+ * 2^53, so each step is exact; I_q is the correctly rounded sRGB curve
+ * (the double is within 1e-9 of the real value, no value lies within 1e-6
+ * of a tie: tests/test_fixed.c holds the core to it for every intensity). */
+void bloom_model_quantize(const bloom_config_t *c, int lin_bits, uint32_t *threshold_q, uint32_t *knee_q,
+                          uint32_t *intensity_q)
+{
+    const double t = (double)c->threshold * ldexp(1.0, (lin_bits ? lin_bits : 20) - 16);
+    *threshold_q = (uint32_t)t;
+    *knee_q = (uint32_t)floor((t * (double)c->soft_knee + 32768.0) / 65536.0);
+    *intensity_q = (uint32_t)floor(bloom_srgb_to_linear(c->intensity / 65536.0) * 65536.0 + 0.5);
+    if (c->preset == BLOOM_PRESET_GAMEDEV) { /* hard threshold; scene + strength * bloom, linear */
+        *knee_q = 0;
+        *intensity_q = c->p.strength;
+    }
+}
+
 int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_params_t *p)
 {
-    bloom_info_t info;
     const bloom_config_t *c = a ? a->cfg : NULL;
-    if (!c || bloom_query(c, &info) != BLOOM_OK)
+    /* bloom_query only says whether the core takes cfg (the model's own
+     * checks are weaker); none of its numbers is used */
+    if (!c || bloom_query(c, NULL) != BLOOM_OK)
         return -1;
     memset(p, 0, sizeof *p);
     p->width = c->width;
@@ -22,10 +43,8 @@ int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_para
     p->threshold = c->threshold / 65536.0;
     p->soft_knee = c->soft_knee / 65536.0;
     p->intensity = c->intensity / 65536.0;
-    p->threshold_q = info.threshold_q;
-    p->knee_q = info.knee_q;
-    p->intensity_q = info.intensity_q;
     p->lin_bits = BLOOM_LIN_BITS;
+    bloom_model_quantize(c, p->lin_bits, &p->threshold_q, &p->knee_q, &p->intensity_q);
     return 0;
 }
 
@@ -71,7 +90,7 @@ int bloom_model_unity(const bloom_model_preset_args_t *a)
 
 /* Attenuation: D1 scaled by max(lerp(1, d, a), r), d the depth averaged
  * over the half-resolution pixel's 2x2 block (edge rule at odd sizes).
- * Bit-true: the Q16 integer form of src/bloom_preset_attenuation.c. */
+ * Bit-true: the Q24 integer form of src/bloom_preset_attenuation.c. */
 int bloom_model_attenuation(const bloom_model_preset_args_t *a)
 {
     bloom_model_params_t p;
@@ -92,19 +111,17 @@ int bloom_model_attenuation(const bloom_model_preset_args_t *a)
                     const double c = a->aux[(size_t)ys[i] * (size_t)w + (size_t)xs[j]];
                     if (!a->bittrue)
                         sum += c / a->aux_max;
-                    else if (a->aux_max == 65535) /* c * 65536 / 65535, rounded */
-                        sum += c + floor((c + 32768.0) / 65536.0);
-                    else
-                        sum += floor((c * 65536.0 + 127.0) / 255.0);
+                    else /* c * 2^24 / max, rounded (max is odd: no tie) */
+                        sum += floor((c * 16777216.0 + (a->aux_max - 1) / 2) / a->aux_max);
                 }
             double v;
             if (!a->bittrue) {
                 const double d = sum / 4.0;
                 v = fmax(1.0 + att * (d - 1.0), rmin);
-            } else {
+            } else { /* Q24 */
                 const double d = floor((sum + 2.0) / 4.0);
-                v = 65536.0 - floor(((double)a->cfg->p.attenuation * (65536.0 - d) + 32768.0) / 65536.0);
-                v = fmax(v, (double)a->cfg->p.max_reduction);
+                v = 16777216.0 - floor(((double)a->cfg->p.attenuation * (16777216.0 - d) + 32768.0) / 65536.0);
+                v = fmax(v, (double)a->cfg->p.max_reduction * 256.0);
             }
             f[(size_t)y * (size_t)w1 + (size_t)x] = v;
         }

@@ -147,6 +147,7 @@ void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);
 /* Aux sample x of an aux row, scaled to Q16 (0 .. 65536): code * 65536 / max
  * rounded half up (exact for U16: 65535 -> 65536). */
 uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x);
+uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x);
 
 /* ---- shared with the default engine (bloom.c) --------------------------- */
 

@@ -53,13 +53,39 @@ static inline uint64_t bloom_align8(uint64_t n)
         (off) = bloom_align8((off) + sizeof(type) * (uint64_t)(count)); \
     } while (0)
 
-/* Internal -> Q16.16, round half up. */
+/* Rounding without bias (sim/docs/fixed-point.md, "Rounding without
+ * bias"). A rounding point whose ties are frequent (a shift of a sum of
+ * integers) either rounds half to even, or is paired with one that rounds
+ * half the other way: rounding every tie up adds +1/32 LSB per box and
+ * +1/16 per tent pass on average, which the up chain sums.
+ *   box:  sum / 16, half to even;
+ *   tent: vertical pass (x + 4) >> 3 (half up), horizontal pass
+ *         (x + 3) >> 3 (half down): the two ties cancel. */
+#define BLOOM_BOX_RND(sum) (((sum) + 7u + (((sum) >> 4) & 1u)) >> 4)
+#define BLOOM_VT_RND 4u
+#define BLOOM_HT_RND 3u
+/* The knee's epsilons of bloom-model.md in internal units:
+ * soft = x^2 / (4K + 0.00004) is formed as 2x^2 / (8K + KNEE_E8), with
+ * KNEE_E8 = round(0.00008 * 2^F); max(b, 0.00001) is b above
+ * 2^F / 100000 (10.49 at F = 20) and makes the factor num * KNEE_TINY_F
+ * below it (2^24 / (2^F / 100000), an integer for F <= 20). The factor
+ * is Q24 (KNEE_FBITS): at Q16 its step was 8 internal LSB on a sample of
+ * 0.5, and near the knee's lower edge, where most factors are small,
+ * rounding it to the nearest step came out low on average. */
+#define BLOOM_KNEE_E8 ((uint32_t)(((1ull << (BLOOM_LIN_BITS + 3)) + 50000u) / 100000u))
+#define BLOOM_KNEE_FBITS 24
+#define BLOOM_KNEE_TINY_F (100000u << (BLOOM_KNEE_FBITS - BLOOM_LIN_BITS))
+
+/* Internal -> Q16.16, round half to even (the value was rounded before:
+ * half up here would put every tie on the same side). */
 static inline uint32_t bloom_lin_to_q16(uint32_t v)
 {
 #if BLOOM_Q16_SHIFT == 0
     return v;
 #else
-    return (v >> BLOOM_Q16_SHIFT) + ((v >> (BLOOM_Q16_SHIFT - 1)) & 1u);
+    const uint32_t q = v >> BLOOM_Q16_SHIFT, r = v & ((1u << BLOOM_Q16_SHIFT) - 1u);
+    const uint32_t h = 1u << (BLOOM_Q16_SHIFT - 1);
+    return q + (uint32_t)(r > h || (r == h && (q & 1u)));
 #endif
 }
 
@@ -120,8 +146,8 @@ void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t int
  * 32-bit arithmetic that wraps: exact while the values stay below 2^29,
  * which holds for the default pipeline on 8/6/5-bit input (U <= 16 * 2^F).
  * vtent: dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3; returns the OR of every dst[i].
- * htent_eo: e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3 and
- *           o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3 (reads v[-3 .. n+2]);
+ * htent_eo: e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3 and
+ *           o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3 (reads v[-3 .. n+2]);
  *           returns the OR of every e[i] and o[i] (0: the bloom is zero there).
  * scale: x[i] = low 32 bits of (I x[i] + 32768) >> 16. */
 uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);

@@ -8,7 +8,8 @@
  *   B    = up(U_1)               full resolution
  *   out  = S + I * tint * B      (DEBUG_VIEW: I * tint * B)
  * down: 4x4 [1 1 1 1; 1 5 5 1; 1 5 5 1; 1 1 1 1] / 32 over 2x-1 .. 2x+2,
- *       = (4x4 box + 4 * 2x2 centre) / 32, round half up;
+ *       = (4x4 box + 4 * 2x2 centre) / 32, round half to even (a tie in
+ *       32 sums, each up, was +1/64 LSB per level);
  * up:   3x3 per output parity, /192 (arm.md derives it from the 8 taps),
  *       round half up, the /3 as a multiply by 0xAAAAAAAB >> 33.
  * With BLOOM_FLAG_BAKED there is no pyramid: out = S + S * map * strength,
@@ -23,22 +24,25 @@
 
 #if BLOOM_USE_ARM
 
-/* Rec.709 luminance weights, Q16, summing to 65536. */
-#define ARM_WR 13933u
-#define ARM_WG 46871u
-#define ARM_WB 4732u
+/* Rec.709 luminance weights, Q24, summing to 2^24 (grey stays grey): each
+ * within 0.53 of 2^24 times the real weight. (Q16 weights were off by up to
+ * 1.2e-5 of a sample, which an intensity of 224 made 30 RGBQ16 LSB.) */
+#define ARM_WR 3566861u
+#define ARM_WG 11999031u
+#define ARM_WB 1211324u
 
-/* A mask or map code as Q16 (0 .. 65536), = bg_aux_q16: U8 c*65536/255
- * rounded = 257c + (c >= 128); U16 c*65536/65535 rounded. */
-static inline uint32_t aux_q16(const uint8_t *row, int x, bool u16)
+/* A mask or map code as Q24 (0 .. 2^24), = bg_aux_q24: U8 c*2^24/255
+ * rounded = 65793c + (c >= 128); U16 c*2^24/65535 rounded. */
+static inline uint32_t aux_q24(const uint8_t *row, int x, bool u16)
 {
     if (u16) {
         uint16_t c16;
         memcpy(&c16, row + 2 * x, 2);
-        return (uint32_t)c16 + (((uint32_t)c16 + 32768u) >> 16);
+        const uint32_t c = c16;
+        return 256u * c + (256u * c + 32767u) / 65535u;
     }
     const uint32_t c = row[x];
-    return c * 257u + (c >> 7);
+    return 65793u * c + (c >> 7);
 }
 
 /* Pad a column-sum row: p[0] = p[1] (column -1), p[sw+1] = p[sw+2] = p[sw]. */
@@ -51,19 +55,24 @@ static inline void pad(uint32_t *p, int sw)
 
 /* Horizontal half of the dual down filter: c4 = 4-row column sums, c2 =
  * the centre two rows' sums, both padded (column i at index i + 1).
- * D = (S16 + 4 C4 + 16) >> 5 = ((S16 >> 1) + 2 C4 + 8) >> 4 (both sides
- * below 2^32: S16 <= 16M, C4 <= 4M). */
+ * D = (S16 + 4 C4) / 32 rounded half to even, formed on the halved sum
+ * y = (S16 >> 1) + 2 C4 (below 2^32: S16 <= 16M, C4 <= 4M): the quotient
+ * rounds up when y mod 16 > 8, or = 8 with S16 odd (then past the half) or
+ * with y >> 4 odd. */
 static void down_h(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int dw)
 {
     for (int x = 0; x < dw; x++) {
         const uint32_t *a = c4 + 2 * x, *b = c2 + 2 * x;
         const uint32_t s16 = a[0] + a[1] + a[2] + a[3], cc = b[1] + b[2];
-        dst[x] = ((s16 >> 1) + 2u * cc + 8u) >> 4;
+        const uint32_t y = (s16 >> 1) + 2u * cc; /* (s16 + 4 cc) / 32, half to even */
+        dst[x] = (y + 7u + (((y >> 4) | s16) & 1u)) >> 4;
     }
 }
 
 /* The soft knee on one channel, in place: max(soft, b - T), soft =
- * clamp(b - T + K, 0, 2K)^2 / (4K) rounded; 0 below T - K. */
+ * clamp(b - T + K, 0, 2K)^2 / (4K + 0.00004) rounded (as 2x^2 / (8K + E8),
+ * bloom_internal.h); 0 below T - K. Below b = 2^F / 100000 the spec's
+ * max(b, 0.00001) scales it by b / 0.00001 (exact product, rounded). */
 static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
 {
     const uint32_t t = kn->t, k = kn->k, cut = t > k ? t - k : 0u, hi = t + k;
@@ -75,16 +84,19 @@ static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
             row[x] = b - t; /* soft = K <= b - T */
         } else {              /* T - K < b < T + K: K >= 1 */
             const uint64_t xx = (uint64_t)(b - cut);
-            const uint32_t soft = bloom_div_u64_u32(xx * xx + 2u * (uint64_t)k, 4u * k);
+            const uint32_t den = 8u * k + BLOOM_KNEE_E8;
+            const uint32_t soft = bloom_div_u64_u32(2u * xx * xx + den / 2u, den);
             row[x] = b > t && b - t > soft ? b - t : soft;
         }
+        if ((uint64_t)b * 100000u < (1ull << BLOOM_LIN_BITS)) /* tiny b: v * b / 0.00001 */
+            row[x] = (uint32_t)(((uint64_t)row[x] * b * 100000u + (1u << (BLOOM_LIN_BITS - 1))) >> BLOOM_LIN_BITS);
     }
 }
 
 static inline uint32_t lum3(const uint32_t *o)
 {
-    /* Y <= M: 64-bit products (Q16 weights x 2^28) */
-    return (uint32_t)((ARM_WR * (uint64_t)o[0] + ARM_WG * (uint64_t)o[1] + ARM_WB * (uint64_t)o[2] + 32768u) >> 16);
+    /* Y <= M: 64-bit products (Q24 weights x 2^28, their sum < 2^53) */
+    return (uint32_t)((ARM_WR * (uint64_t)o[0] + ARM_WG * (uint64_t)o[1] + ARM_WB * (uint64_t)o[2] + (1u << 23)) >> 24);
 }
 
 /* Y of n source pixels, decoded inline (one loop per format and curve). */
@@ -143,12 +155,12 @@ static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     const bool u16 = g->aux_bpp == 2;
     for (int i = 0; i < 4; i++) {
         lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i], y, w0);
-        if (g->aux_bpp) { /* P = (Y * mask + 2^15) >> 16, 64-bit: 2^28 * 2^16 */
+        if (g->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
             const uint8_t *m = (const uint8_t *)in[1][i];
             for (int x = 0; x < w0; x++) {
-                const uint32_t q = aux_q16(m, x, u16);
-                if (q != 65536u)
-                    y[x] = (uint32_t)(((uint64_t)y[x] * q + 32768u) >> 16);
+                const uint32_t q = aux_q24(m, x, u16);
+                if (q != 1u << 24)
+                    y[x] = (uint32_t)(((uint64_t)y[x] * q + (1u << 23)) >> 24);
             }
         }
         uint32_t *c = c4 + 1, *h = c2 + 1;
@@ -287,9 +299,10 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
 }
 
 /* Baked output. Input 0: the source row; input 1: the map row.
- * f = (map_q16 * strength + 32768) >> 16 (<= 2^20), v = S + ((S f + 2^15) >> 16)
- * computed as (S (65536 + f) + 2^15) >> 16 (S * 65536 is a multiple of
- * 2^16): one multiply-add per channel. Debug view: (S f + 2^15) >> 16. */
+ * f = (map_q24 * strength + 32768) >> 16 (Q24, <= 2^28), v = S + ((S f + 2^23) >> 24)
+ * computed as (S (2^24 + f) + 2^23) >> 24 (S * 2^24 is a multiple of
+ * 2^24; S (2^24 + f) <= 2^56.1): one multiply-add per channel. Debug view:
+ * (S f + 2^23) >> 24. */
 static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
@@ -298,19 +311,19 @@ static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
     uint32_t *v = bg_scratch(g, 0);
     const uint8_t *map = (const uint8_t *)in[1][0];
     const bool u16 = g->aux_bpp == 2;
-    const uint64_t strength = g->cfg.p.strength, one = g->out.debug ? 0u : 65536u;
+    const uint64_t strength = g->cfg.p.strength, one = g->out.debug ? 0u : 1u << 24;
     const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
     for (int x0 = 0; x0 < w; x0 += 256) { /* chunks of 256 pixels stay in the cache */
         const int cn = imin(256, w - x0);
         bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][0] + (size_t)x0 * (size_t)g->src_bpp,
                          v, cn);
         for (int x = 0; x < cn; x++) {
-            const uint64_t f = ((uint64_t)aux_q16(map, x0 + x, u16) * strength + 32768u) >> 16;
+            const uint64_t f = ((uint64_t)aux_q24(map, x0 + x, u16) * strength + 32768u) >> 16;
             const uint64_t m = one + f;
             uint32_t *p = v + 3 * x;
-            p[0] = sat32((p[0] * m + 32768u) >> 16);
-            p[1] = sat32((p[1] * m + 32768u) >> 16);
-            p[2] = sat32((p[2] * m + 32768u) >> 16);
+            p[0] = sat32((p[0] * m + (1u << 23)) >> 24);
+            p[1] = sat32((p[1] * m + (1u << 23)) >> 24);
+            p[2] = sat32((p[2] * m + (1u << 23)) >> 24);
         }
         bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst + (size_t)x0 * obpp, cn);
     }

@@ -3,10 +3,12 @@
  * (aux, 0 = near, max code = far) averaged over the 2x2 block of the
  * half-resolution pixel (sim/docs/presets.md).
  *
- * Integer form: d_q = (sum of the four samples' Q16 values + 2) >> 2,
- * f = 65536 - ((a * (65536 - d_q) + 32768) >> 16), factor = max(f, r),
- * D_1 = (D_1 * factor + 32768) >> 16 (a 64-bit product: D_1 < 2^28,
- * factor <= 2^16). With a = 0 the factor is exactly 1 and the preset
+ * Integer form, in Q24 (a Q16 factor, constant over a flat depth, put the
+ * same rounding on every pixel: a bias of up to 1.2e-5 of each sample):
+ * d_q = (sum of the four samples' Q24 values + 2) >> 2,
+ * f = 2^24 - ((a * (2^24 - d_q) + 32768) >> 16), factor = max(f, r * 2^8),
+ * D_1 = (D_1 * factor + 2^23) >> 24 (a 64-bit product: D_1 < 2^28,
+ * factor <= 2^24). With a = 0 the factor is exactly 1 and the preset
  * computes the default's bits. */
 #include "bloom_graph_rows.h"
 
@@ -21,15 +23,15 @@ static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r, const vo
     const int w0 = g->w[0];
     for (int x = 0; x < n->w; x++) {
         const int x0 = 2 * x, x1 = 2 * x + 1 < w0 ? 2 * x + 1 : w0 - 1;
-        const uint32_t d = (bg_aux_q16(g, in[1][0], x0) + bg_aux_q16(g, in[1][0], x1) +
-                            bg_aux_q16(g, in[1][1], x0) + bg_aux_q16(g, in[1][1], x1) + 2u) >> 2;
-        uint32_t f = 65536u - (uint32_t)(((uint64_t)a * (65536u - d) + 32768u) >> 16);
-        if (f < rmin)
-            f = rmin;
-        if (f == 65536u)
+        const uint32_t d = (bg_aux_q24(g, in[1][0], x0) + bg_aux_q24(g, in[1][0], x1) +
+                            bg_aux_q24(g, in[1][1], x0) + bg_aux_q24(g, in[1][1], x1) + 2u) >> 2;
+        uint32_t f = (1u << 24) - (uint32_t)(((uint64_t)a * ((1u << 24) - d) + 32768u) >> 16);
+        if (f < rmin << 8)
+            f = rmin << 8;
+        if (f == 1u << 24)
             continue;
         for (int c = 0; c < 3; c++)
-            row[3 * x + c] = (uint32_t)(((uint64_t)row[3 * x + c] * f + 32768u) >> 16);
+            row[3 * x + c] = (uint32_t)(((uint64_t)row[3 * x + c] * f + (1u << 23)) >> 24);
     }
 }
 

@@ -24,7 +24,7 @@ void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, in
         colsum4(s, imin(2 * x + 1, sw - 1), c);
         colsum4(s, imin(2 * x + 2, sw - 1), d);
         for (int ch = 0; ch < 3; ch++) {
-            dst[3 * x + ch] = (a[ch] + b[ch] + c[ch] + d[ch] + 8u) >> 4;
+            dst[3 * x + ch] = BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
             a[ch] = c[ch];
             b[ch] = d[ch];
         }
@@ -91,7 +91,7 @@ static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_
         colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp, c);
         colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 2, sw - 1) * bpp, d);
         for (int ch = 0; ch < 3; ch++) {
-            dst[ch] = (a[ch] + b[ch] + c[ch] + d[ch] + 8u) >> 4;
+            dst[ch] = BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
             a[ch] = c[ch];
             b[ch] = d[ch];
         }
@@ -143,7 +143,7 @@ static BLOOM_ALWAYS_INLINE void pair_src(const uint8_t *s0, const uint8_t *s1, c
 }
 
 /* The same sums (the box is exact in 32 bits), grouped by column pairs:
- * P(j) = columns 2j-1 and 2j, clamped; D(x) = (P(x) + P(x+1) + 8) >> 4.
+ * P(j) = columns 2j-1 and 2j, clamped; D(x) = (P(x) + P(x+1)) / 16, half to even.
  * The pairs with no clamp run without bound tests. */
 static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
                                               size_t bpp, uint32_t *dst, int xa, int dw, int sw)
@@ -165,9 +165,9 @@ static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_f
             const uint32_t q0 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 0);
             const uint32_t q1 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 1);
             const uint32_t q2 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 2);
-            dst[0] = (p0 + q0 + 8u) >> 4;
-            dst[1] = (p1 + q1 + 8u) >> 4;
-            dst[2] = (p2 + q2 + 8u) >> 4;
+            dst[0] = BLOOM_BOX_RND(p0 + q0);
+            dst[1] = BLOOM_BOX_RND(p1 + q1);
+            dst[2] = BLOOM_BOX_RND(p2 + q2);
             p0 = q0;
             p1 = q1;
             p2 = q2;
@@ -180,7 +180,7 @@ static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_f
         pair_src(s0, s1, s2, s3, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp,
                  (size_t)imin(2 * x + 2, sw - 1) * bpp, q);
         for (int ch = 0; ch < 3; ch++) {
-            dst[ch] = (p[ch] + q[ch] + 8u) >> 4;
+            dst[ch] = BLOOM_BOX_RND(p[ch] + q[ch]);
             p[ch] = q[ch];
         }
     }
@@ -307,18 +307,25 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
         int64_t xs = (int64_t)bmax - t + k; /* > 0 here */
         if (xs > 2 * k)
             xs = 2 * k;
+        /* soft = x^2 / (4K + 0.00004), rounded: 2x^2 <= 2^59, 8K + E < 2^32 */
         uint32_t soft = 0;
-        if (k > 0)
-            soft = bloom_div_u64_u32((uint64_t)(xs * xs) + (uint64_t)(2 * k), (uint32_t)(4 * k));
+        if (k > 0) {
+            const uint32_t den = (uint32_t)(8 * k) + BLOOM_KNEE_E8;
+            soft = bloom_div_u64_u32(2u * (uint64_t)(xs * xs) + den / 2u, den);
+        }
         int64_t over = (int64_t)bmax - t;
         uint64_t num = over > (int64_t)soft ? (uint64_t)over : soft;
         if (num == 0) {
             p[0] = p[1] = p[2] = 0;
             continue;
         }
-        uint32_t f = bloom_div_u64_u32((num << 16) + (bmax >> 1), bmax);
+        /* f = num / max(bmax, 0.00001) in Q24, rounded (tiny bmax: exact
+         * product); num <= bmax, so f <= 2^24, num << 24 <= 2^53, c f <= 2^52 */
+        const uint32_t f = (uint64_t)bmax * 100000u < (1ull << BLOOM_LIN_BITS)
+                               ? (uint32_t)num * BLOOM_KNEE_TINY_F
+                               : bloom_div_u64_u32((num << BLOOM_KNEE_FBITS) + (bmax >> 1), bmax);
         for (int ch = 0; ch < 3; ch++) {
-            p[ch] = (uint32_t)(((uint64_t)p[ch] * f + 32768u) >> 16);
+            p[ch] = (uint32_t)(((uint64_t)p[ch] * f + (1u << (BLOOM_KNEE_FBITS - 1))) >> BLOOM_KNEE_FBITS);
             any |= p[ch];
         }
     }
@@ -342,13 +349,13 @@ static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, co
 {
     for (int ch = 0; ch < 3; ch++) {
         const uint64_t a = u0[ch], b = u1[ch], c = u2[ch];
-        v[ch] = (uint32_t)(((odd ? a + 4u * b + 3u * c : 3u * a + 4u * b + c) + 4u) >> 3);
+        v[ch] = (uint32_t)(((odd ? a + 4u * b + 3u * c : 3u * a + 4u * b + c) + BLOOM_VT_RND) >> 3);
     }
 }
 
 static BLOOM_ALWAYS_INLINE uint32_t htent(uint64_t a, uint64_t b, uint64_t c)
 {
-    return (uint32_t)((a + 4u * b + c + 4u) >> 3);
+    return (uint32_t)((a + 4u * b + c + BLOOM_HT_RND) >> 3);
 }
 
 static BLOOM_ALWAYS_INLINE void tent_impl(const uint32_t *const u[3], int odd, const uint32_t *add,
@@ -479,7 +486,7 @@ uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t 
 {
     uint32_t any = 0;
     for (int i = 0; i < n; i++) {
-        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + BLOOM_VT_RND) >> 3;
         any |= dst[i];
     }
     return any;
@@ -490,8 +497,8 @@ uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n
     uint32_t any = 0;
     for (int i = 0; i < n; i++) {
         const uint32_t p = v[i - 3], c = v[i], q = v[i + 3];
-        e[i] = (3u * p + 4u * c + q + 4u) >> 3;
-        o[i] = (p + 4u * c + 3u * q + 4u) >> 3;
+        e[i] = (3u * p + 4u * c + q + BLOOM_HT_RND) >> 3;
+        o[i] = (p + 4u * c + 3u * q + BLOOM_HT_RND) >> 3;
         any |= e[i] | o[i];
     }
     return any;

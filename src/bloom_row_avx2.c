@@ -65,7 +65,7 @@ static inline __attribute__((always_inline)) void vtent_vec(const uint32_t *a, c
 {
     const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
     const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
-    const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, _mm256_set1_epi32(4))), 3);
+    const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, _mm256_set1_epi32(BLOOM_VT_RND))), 3);
     ST8(dst + i, s);
     *any = _mm256_or_si256(*any, s);
     if (in_or)
@@ -85,7 +85,7 @@ static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, 
     }
     uint32_t r = or_lanes8(any), ri = or_lanes8(in);
     for (; i < n; i++) { /* n < 8 */
-        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + BLOOM_VT_RND) >> 3;
         r |= dst[i];
         ri |= a[i] | b[i] | c[i];
     }
@@ -99,10 +99,11 @@ uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32
     return vtent8(a, b, c, dst, n, NULL);
 }
 
-/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */
+/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3
+ * (the horizontal pass rounds half down: bloom_internal.h). */
 uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
-    const __m256i k4 = _mm256_set1_epi32(4);
+    const __m256i k4 = _mm256_set1_epi32(BLOOM_HT_RND);
     __m256i any = _mm256_setzero_si256();
     int i = 0;
     for (; i + 8 <= n; i += 8) {

@@ -139,14 +139,14 @@ static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c
     for (; i + 4 <= n; i += 4) {
         const uint32x4_t va = vld1q_u32(a + i), vb = vld1q_u32(b + i), vc = vld1q_u32(c + i);
         const uint32x4_t t = vaddq_u32(vaddq_u32(va, vshlq_n_u32(va, 1)), vshlq_n_u32(vb, 2));
-        const uint32x4_t r = vshrq_n_u32(vaddq_u32(t, vaddq_u32(vc, vdupq_n_u32(4))), 3);
+        const uint32x4_t r = vshrq_n_u32(vaddq_u32(t, vaddq_u32(vc, vdupq_n_u32(BLOOM_VT_RND))), 3);
         vst1q_u32(dst + i, r);
         any = vorrq_u32(any, r);
         in = vorrq_u32(in, vorrq_u32(va, vorrq_u32(vb, vc)));
     }
     uint32_t ri = or_lanes(in), r = or_lanes(any);
     for (; i < n; i++) {
-        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + 4u) >> 3;
+        dst[i] = (3u * a[i] + 4u * b[i] + c[i] + BLOOM_VT_RND) >> 3;
         r |= dst[i];
         ri |= a[i] | b[i] | c[i];
     }

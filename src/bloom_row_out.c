@@ -19,7 +19,7 @@
  * pass, the horizontal tent into the even (e) and odd (od) output columns,
  * the intensity, then the composite and encode per output pixel. Same bits
  * as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
- * for I <= 224.4 and P + S < 2^32. */
+ * for I <= 223.8 and P + S < 2^32. */
 static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {

@@ -31,7 +31,10 @@ static inline int simd_imax(int a, int b)
     return a > b ? a : b;
 }
 
-/* ---- box down: 4x4 of four rows, (sum + 8) >> 4 ------------------------ */
+/* ---- box down: 4x4 of four rows, sum / 16 half to even ------------------ */
+
+/* BLOOM_BOX_RND on four lanes: (s + 7 + ((s >> 4) & 1)) >> 4. */
+#define BOX_RND(s_, k7_, k1_) SHR(ADD(ADD((s_), (k7_)), AND(SHR((s_), 4), (k1_))), 4)
 
 /* Column sum of the four rows at sample index i (lane 3: the next sample). */
 #define COL4(s0, s1, s2, s3, i) ADD(ADD(LD4((s0) + (i)), LD4((s1) + (i))), ADD(LD4((s2) + (i)), LD4((s3) + (i))))
@@ -41,15 +44,15 @@ static inline int simd_imax(int a, int b)
 static void box_pairs(const uint32_t *const s[4], uint32_t *dst, int xa, int np)
 {
     const uint32_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
-    const VT k8 = DUP(8u);
+    const VT k7 = DUP(7u), k1 = DUP(1u);
     size_t c = (size_t)(2 * xa - 1) * 3u;
     uint32_t *d = dst + (size_t)xa * 3u;
     VT a = ADD(COL4(s0, s1, s2, s3, c), COL4(s0, s1, s2, s3, c + 3u)); /* columns 2x-1, 2x */
     for (int i = 0; i < np; i++, c += 12u, d += 6u) {
         const VT b = ADD(COL4(s0, s1, s2, s3, c + 6u), COL4(s0, s1, s2, s3, c + 9u));
-        const VT e = SHR(ADD(ADD(a, b), k8), 4);
+        const VT e = BOX_RND(ADD(a, b), k7, k1);
         a = ADD(COL4(s0, s1, s2, s3, c + 12u), COL4(s0, s1, s2, s3, c + 15u));
-        const VT o = SHR(ADD(ADD(b, a), k8), 4);
+        const VT o = BOX_RND(ADD(b, a), k7, k1);
         ST4(d, PACK_LO(e, o));
         ST2(d + 4, PACK_HI(o));
     }
@@ -78,10 +81,11 @@ static void box_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
 
 /* ---- tent up ------------------------------------------------------------- */
 
-/* (3a + 4b + c + 4) >> 3 exactly (see the top of the file). */
+/* (3a + 4b + c + 4) >> 3 exactly (see the top of the file): the vertical
+ * pass, half up. */
 static inline VT tent3(VT a, VT b, VT c)
 {
-    const VT k7 = DUP(7u), k4 = DUP(4u);
+    const VT k7 = DUP(7u), k4 = DUP(BLOOM_VT_RND);
     const VT ha = SHR(a, 3), hb = SHR(b, 3), hc = SHR(c, 3);
     const VT la = AND(a, k7), lb = AND(b, k7), lc = AND(c, k7);
     const VT hi = ADD(ADD(ADD(ha, SHL(ha, 1)), SHL(hb, 2)), hc);
@@ -97,7 +101,7 @@ static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add,
                        int ma, int np)
 {
     const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
-    const VT k7 = DUP(7u), k4 = DUP(4u);
+    const VT k7 = DUP(7u), kh = DUP(BLOOM_HT_RND);
     size_t i = (size_t)(ma - 1) * 3u;
     const VT vp = tent3(LD4(a + i), LD4(b + i), LD4(c + i));
     i += 3u;
@@ -109,7 +113,7 @@ static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add,
         const VT hn = SHR(vn, 3), ln = AND(vn, k7);
         /* even: 3 vp + 4 vc + vn; odd: vp + 4 vc + 3 vn; split as in tent3 */
         const VT q = ADD(SHL(hc, 2), ADD(hp, hn));
-        const VT ql = ADD(ADD(SHL(lc, 2), ADD(lp, ln)), k4);
+        const VT ql = ADD(ADD(SHL(lc, 2), ADD(lp, ln)), kh); /* horizontal: half down */
         const VT e = ADD_SHR3(ADD(q, SHL(hp, 1)), ADD(ql, SHL(lp, 1)));
         const VT o = ADD_SHR3(ADD(q, SHL(hn, 1)), ADD(ql, SHL(ln, 1)));
         VT lo4 = PACK_LO(e, o), hi2 = PACK_HI(o);
@@ -133,7 +137,7 @@ static void tent_pairs_small(const uint32_t *const u[3], int odd, const uint32_t
                              int ma, int np)
 {
     const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
-    const VT k4 = DUP(4u);
+    const VT k4 = DUP(BLOOM_VT_RND), kh = DUP(BLOOM_HT_RND);
     size_t i = (size_t)(ma - 1) * 3u;
 #define TENT3S(a_, b_, c_) SHR(ADD(ADD(ADD((a_), SHL((a_), 1)), SHL((b_), 2)), ADD((c_), k4)), 3)
     VT vp = TENT3S(LD4(a + i), LD4(b + i), LD4(c + i));
@@ -142,7 +146,7 @@ static void tent_pairs_small(const uint32_t *const u[3], int odd, const uint32_t
     for (int j = 0; j < np; j++, dst += 6) {
         i += 3u;
         const VT vn = TENT3S(LD4(a + i), LD4(b + i), LD4(c + i));
-        const VT q = ADD(ADD(SHL(vc, 2), k4), ADD(vp, vn));
+        const VT q = ADD(ADD(SHL(vc, 2), kh), ADD(vp, vn));
         const VT e = SHR(ADD(q, SHL(vp, 1)), 3), o = SHR(ADD(q, SHL(vn, 1)), 3);
         VT lo4 = PACK_LO(e, o), hi2 = PACK_HI(o);
         if (add) {
@@ -208,7 +212,7 @@ static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, u
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3, 32-bit lanes (as the C twin). */
 static uint32_t vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n)
 {
-    const VT k4 = DUP(4u);
+    const VT k4 = DUP(BLOOM_VT_RND);
     VT any = DUP(0u);
     int i = 0;
     for (; i + 4 <= n; i += 4) {
@@ -230,10 +234,10 @@ static uint32_t vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t 
     return r;
 }
 
-/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 4) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 4) >> 3. */
+/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3. */
 static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
-    const VT k4 = DUP(4u);
+    const VT k4 = DUP(BLOOM_HT_RND);
     VT any = DUP(0u);
     int i = 0;
     for (; i + 4 <= n; i += 4) {

@@ -253,39 +253,42 @@ static void test_knee(void)
 
     /* bit-true, the same case worked by hand in Q12.20: T_q = 0.5 = 524288,
      * K_q = (524288*32768 + 32768) >> 16 = 262144, bmax = 0.75 = 786432:
-     * x = 524288 = 2K_q, soft = (2^38 + 2^19) / 2^20 = 262144 = bmax - T_q,
-     * num = 262144, f = (262144*65536 + 393216) / 786432 = 21845 (Q16, 1/3),
-     * r = (786432*21845 + 32768) >> 16 = 12*21845 = 262140,
-     * g = (262144*21845 + 32768) >> 16 = 4*21845 = 87380: the Q16 factor,
-     * not the samples, limits the precision here (exact: 262144, 87381.3) */
+     * x = 524288 = 2K_q, D = 8K_q + 84 = 2097236 (the epsilon 0.00004 *
+     * 2^20 = 41.9, doubled and rounded), soft = (2x^2 + D/2) / D = 262134 <
+     * bmax - T_q = 262144 = num, f = (262144 * 2^24 + 393216) / 786432 =
+     * 5592405 (Q24, 1/3), r = (786432 f + 2^23) >> 24 = 262144,
+     * g = (262144 f + 2^23) >> 24 = 87381 (exact: 262144, 87381.3) */
     p = params(1, 1, 1, 1);
     p.threshold_q = 524288;
     p.knee_q = 262144;
     bloom_model_knee(&p, q);
-    CHECKF(q[0] == 262140 && q[1] == 87380 && q[2] == 0, "%g %g %g", q[0], q[1], q[2]);
-    /* soft rounds half up: bmax = T_q - 4032 = 520256, x = 258112 = 64*4033,
-     * x^2/2^20 = 4033^2/256 = 63535.504, soft = 63536 (floor: 63535);
-     * num = soft (bmax - T_q < 0); f = (63536*65536 + 260128) / 520256 = 8004
-     * (8003 from 63535); r = (520256*8004 + 32768) >> 16 = 63540 (not 63532) */
+    CHECKF(q[0] == 262144 && q[1] == 87381 && q[2] == 0, "%g %g %g", q[0], q[1], q[2]);
+    /* the soft part with its epsilon: bmax = T_q - 4032 = 520256, x = 258112,
+     * x^2 / (4K_q + 41.94) = 63532.96, soft = (2x^2 + D/2) / D = 63533 (without
+     * the epsilon it was 63536); num = soft (bmax - T_q < 0), f = 2048812,
+     * r = (520256 f + 2^23) >> 24 = 63533 */
     q[0] = 520256;
     q[1] = q[2] = 0;
     bloom_model_knee(&p, q);
-    CHECKF(q[0] == 63540, "%.17g", q[0]);
-    /* K_q = 0, T_q = 0: f = 65536, the identity */
+    CHECKF(q[0] == 63533, "%.17g", q[0]);
+    /* K_q = 0, T_q = 0 and b below 0.00001 (10.49 LSB): the model's
+     * max(b, 0.00001) is the epsilon, contribution b / 0.00001 = 0.668 for
+     * b = 7: f = 7 * 1600000 (exact), r = (7 f + 2^23) >> 24 = 5 (4.67),
+     * g = (3 f + 2^23) >> 24 = 2 (2.00) */
     p.threshold_q = p.knee_q = 0;
     q[0] = 7;
     q[1] = 3;
     q[2] = 0;
     bloom_model_knee(&p, q);
-    CHECK(q[0] == 7 && q[1] == 3 && q[2] == 0);
+    CHECKF(q[0] == 5 && q[1] == 2 && q[2] == 0, "%g %g %g", q[0], q[1], q[2]);
     /* f rounds half up: T_q = 64.0 = 2^26, K_q = 0, bmax = 192.0 = 3*2^26:
-     * num = 2^27, f = (2^27*65536 + 3*2^25) / (3*2^26) = 43691 (not 43690),
-     * and r = (3*2^26 * 43691 + 32768) >> 16 = 3072*43691 = 134218752 */
+     * num = 2^27, f = (2^27 * 2^24 + 3*2^25) / (3*2^26) = 11184811 (not
+     * 11184810), and r = (3*2^26 f + 2^23) >> 24 = 12 f = 134217732 */
     p.threshold_q = 1u << 26;
     q[0] = 3 << 26;
     q[1] = q[2] = 0;
     bloom_model_knee(&p, q);
-    CHECKF(q[0] == 134218752, "%.17g", q[0]);
+    CHECKF(q[0] == 134217732, "%.17g", q[0]);
 }
 
 /* Bit-true decode of every code (fixed-point.md step 1), seen in S. */

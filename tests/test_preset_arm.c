@@ -120,9 +120,9 @@ static void grid_bloom(void)
     CHECKF(t.c565.peak <= 1, "arm: RGB565 peak %d LSB against the float model", t.c565.peak);
     CHECKF(t.c8_hi.peak <= 1, "arm: 8-bit peak %d LSB at intensity 10", t.c8_hi.peak);
     /* RGBQ16 words (2^-16 steps): the bound of arm.md with inputs <= 4.0,
-     * L <= 8, a mask, I <= 4.95 (intensity 2) and I = 224.4 (intensity 10) */
-    const double b_lo = q16_bound(4.95, 4.0, 8, 1), b_hi = q16_bound(224.4, 4.0, 8, 1);
-    printf("arm RGBQ16 bounds: %.0f words (I <= 4.95), %.0f words (I = 224.4)\n", b_lo, b_hi);
+     * L <= 8, a mask, I <= 4.95 (intensity 2) and I = 223.8 (intensity 10) */
+    const double b_lo = q16_bound(4.95, 4.0, 8, 1), b_hi = q16_bound(223.8, 4.0, 8, 1);
+    printf("arm RGBQ16 bounds: %.0f words (I <= 4.95), %.0f words (I = 223.8)\n", b_lo, b_hi);
     CHECKF(t.q16.peak <= b_lo, "arm: RGBQ16 peak %d (2^-16) against the float model", t.q16.peak);
     CHECKF(t.q16_hi.peak <= b_hi, "arm: RGBQ16 peak %d (2^-16) at intensity 10", t.q16_hi.peak);
 }

@@ -149,7 +149,7 @@ static void grid(void)
 }
 
 /* Small lights on black at high intensity: the bloom's rounding errors are
- * multiplied by I (up to 224.4) and land on the steep start of the sRGB
+ * multiplied by I (up to 223.8) and land on the steep start of the sRGB
  * curve, as in the default pipeline. Measured per intensity; the bound
  * asserted is the measured one (documented). */
 static void lights_on_black(void)

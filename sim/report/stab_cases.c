@@ -349,7 +349,7 @@ void stab_stress(FILE *md)
     fprintf(f, "F,input,width,height,levels,levels_built,peak,mean,exact_pct,db,bound,worst_case_bound\n");
     stab_table("The stiffest case: a light on black at the largest intensity",
                "A 3x3 light (1.0 in RGB888, 255.99998 in RGBQ16) on black and the 24 lights on "
-               "the Hubble field, intensity 10.0 (linear I = 224.4), threshold 0.6, soft knee "
+               "the Hubble field, intensity 10.0 (linear I = 223.8), threshold 0.6, soft knee "
                "0.5, every level the frame builds (N above the last row builds the same "
                "pyramid). Notes: `dB` is the largest error of the bloom term B where the "
                "output is below the top code, in units of 2^-F (bit-true against exact "
