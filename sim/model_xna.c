@@ -57,11 +57,15 @@ static int kawase(const xna_units_t *u, const bloom_model_image_t *src, bloom_mo
                         sum += at(src, x + off[b], y + off[a], c);
                 double v;
                 if (u->bt) {
-                    if (first) { /* (sum f + 2^19) >> 20, the product up to 2^64 */
-                        const uint64_t p = ((uint64_t)sum * f_q + (1u << 19)) >> 20;
+                    if (first && f_q != 1u << 24) { /* sum f / 2^28 split at bit 16 (f Q24); f = 1: as the other passes */
+                        const uint64_t sh = (uint64_t)sum >> 16, sl = (uint64_t)sum & 0xFFFFu;
+                        const uint64_t p = (sh * f_q + ((sl * f_q) >> 16) + (1u << 11)) >> 12;
                         v = p > (uint64_t)u->lin_max ? u->lin_max : (double)p;
                     } else {
-                        v = bloom_model_fdiv(sum + 8.0, 16.0);
+                        { /* sum / 16, half to even */
+                            const double q = bloom_model_fdiv(sum, 16.0), r = sum - 16.0 * q;
+                            v = q + (r > 8.0 || (r == 8.0 && fmod(q, 2.0) == 1.0));
+                        }
                     }
                     if (last) {
                         const uint64_t p = ((uint64_t)v * I_q + 32768u) >> 16;
@@ -94,9 +98,9 @@ int bloom_model_xna(const bloom_model_preset_args_t *a)
     u.one = u.bt ? ldexp(1.0, F) : 1.0;
     u.lin_max = u.bt ? (double)((1u << 24) - 1u) * ldexp(1.0, F - 16) : ((1u << 24) - 1u) / 65536.0;
     const double t = u.bt ? (double)p.threshold_q : c->threshold / 65536.0;
-    /* range restore: f = round(2^32 / (2^16 - threshold)) in Q16 (bit-true), 1 / (1 - t) (float) */
+    /* range restore: f = round(2^40 / (2^16 - threshold)) in Q24 (bit-true), 1 / (1 - t) (float) */
     const uint64_t d = 65536u - c->threshold;
-    const uint64_t f_q = ((1ull << 32) + d / 2u) / d;
+    const uint64_t f_q = ((1ull << 40) + d / 2u) / d;
     const double f_real = 1.0 / (1.0 - c->threshold / 65536.0);
     const double I_real = bloom_srgb_to_linear(c->intensity / 65536.0);
 

@@ -13,8 +13,10 @@
  * Integer form (Q(32-F).F samples, F = BLOOM_LIN_BITS):
  *   Q  = max(0, D - T_q), T_q = threshold << (F - 16)      (exact)
  *   a Kawase pass sums its 16 samples exactly (< 2^32), then
- *     first pass:  v = min((sum * f + 2^19) >> 20, LIN_MAX), f = round(2^32 / (2^16 - t)) (Q16, u64)
- *     other pass:  v = (sum + 8) >> 4
+ *     first pass:  v = min((sh f + ((sl f) >> 16) + 2^11) >> 12, LIN_MAX), sum = sh 2^16 + sl,
+ *                  f = round(2^40 / (2^16 - t)) (Q24, u64; a Q16 f was a fixed error of up
+ *                  to 5e-6 of the whole glow, one-sided for a given threshold)
+ *     other pass:  v = sum / 16, rounded half to even
  *     last pass:   v = min((v * I_q + 2^15) >> 16, LIN_MAX)
  *     SATURATE:    v = min(v, 2^F)
  *   screen: b = min(B, 2^F); v = b + ((S (2^F - b) + 2^(F-1)) >> F)  (u64 product). */
@@ -76,7 +78,7 @@ static void kawase_h(const uint32_t *cs, uint32_t *dst, int xa, int xb, int i, i
 /* Kawase pass i = k[0] at quarter resolution. Input 0: rows r-i-1 .. r+i+1
  * of the previous pass (or Q); the pass reads the first two and the last
  * two of them. k[1]: XNA_FIRST/LAST/SAT; k[2], k[3]: low and high word of
- * the range-restore factor f (Q16, up to 2^32). */
+ * the range-restore factor f (Q24, up to 2^40). */
 static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                       void *dst)
 {
@@ -99,14 +101,18 @@ static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r, const v
     kawase_h(cs, row, xb, w, i, w);
     const uint32_t flags = n->k[1];
     const uint64_t f = (uint64_t)n->k[2] | ((uint64_t)n->k[3] << 32);
-    if ((flags & XNA_FIRST) && f != 65536u) {
+    if ((flags & XNA_FIRST) && f != 1u << 24) {
         for (int j = 0; j < cnt; j++) {
-            const uint64_t v = ((uint64_t)row[j] * f + (1u << 19)) >> 20; /* < 2^64: sum < 2^32, f <= 2^32 */
+            /* sum f / 2^28 with f <= 2^40: the sum split at bit 16 keeps both
+             * products below 2^56 (the low one's 16 dropped bits are below
+             * 1/16 LSB of the result) */
+            const uint64_t sh = row[j] >> 16, sl = row[j] & 0xFFFFu;
+            const uint64_t v = (sh * f + ((sl * f) >> 16) + (1u << 11)) >> 12;
             row[j] = v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)v;
         }
     } else {
         for (int j = 0; j < cnt; j++)
-            row[j] = (row[j] + 8u) >> 4;
+            row[j] = BLOOM_BOX_RND(row[j]); /* sum / 16, half to even (bloom_internal.h) */
     }
     if ((flags & XNA_LAST) && g->out.intensity != 65536u) {
         const uint64_t I = g->out.intensity;
@@ -189,9 +195,13 @@ static bloom_status_t build(bloom_graph_t *g)
         g->w[k] = (g->w[k - 1] + 1) / 2;
         g->h[k] = (g->h[k - 1] + 1) / 2;
     }
-    /* range restore 1 / (1 - t), t = threshold / 2^16 < 1: f = round(2^32 / d), d = 2^16 - threshold */
+    /* range restore 1 / (1 - t), t = threshold / 2^16 < 1: f = round(2^40 / d) (Q24),
+     * d = 2^16 - threshold; f <= 2^40, the quotient can pass 32 bits: two divisions */
     const uint32_t d = BLOOM_ONE - g->cfg.threshold;
-    const uint64_t f = d == 1u ? (uint64_t)1 << 32 : bloom_div_u64_u32(((uint64_t)1 << 32) + (d >> 1), d);
+    const uint32_t qh = 256u / d, rh = 256u % d; /* 2^40 = 256 * 2^32, divided in two steps */
+    const uint32_t ql = bloom_div_u64_u32((uint64_t)rh << 32, d); /* no 64-bit divide on Cortex-M */
+    const uint64_t fr = ((uint64_t)rh << 32) - (uint64_t)ql * d;
+    const uint64_t f = ((uint64_t)qh << 32) + ql + (fr >= (d + 1u) / 2u);
 
     const int hn = bg_node(g, fn_half, g->w[1], g->h[1], 3, 1);
     bg_input(g, hn, BG_SRC, BG_DOWN, -1, 2);
