@@ -205,7 +205,9 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
  * bloom_rows_out() (before the call) to dst_row. Output row y never needs
  * source rows above y, so dst may alias src (in place) when the formats
  * and strides match; a destination row that overlaps a source row still
- * needed, or source row y in another format, is refused (BLOOM_E_ALIAS). */
+ * needed, or source row y in another format, is refused (BLOOM_E_ALIAS).
+ * BLOOM_SMALL builds (the size build) refuse only the same rows in another
+ * format or stride; the other overlaps are then the caller's to avoid. */
 bloom_status_t bloom_begin(bloom_t *b);
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row);
 /* The same with the aux plane's row (presets that read one). */

@@ -186,9 +186,9 @@ typedef struct {
     double *times;
     size_t cap;
     double pixels;
-    unsigned long long samples, exact, bt_samples, bt_diff;
+    unsigned long long samples, exact, above, below, bt_samples, bt_diff;
     uint32_t peak;
-    double err_sum;
+    double err_sum, err_signed; /* |error| and signed error: a bias hides in the first */
 } stats_t;
 
 static int cmp_double(const void *a, const void *b)
@@ -286,21 +286,27 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
         if (run_model(e, 0, e->fl_codes))
             return sim_errf(err, errlen, "frame %ld: the float model failed", gi);
         uint32_t peak = 0;
-        unsigned long long exact = 0;
-        double sum = 0;
+        unsigned long long exact = 0, above = 0, below = 0;
+        double sum = 0, sgn = 0;
         for (size_t i = 0; i < 3 * n; i++) {
             uint32_t a = e->out_codes[i], b = e->fl_codes[i], d = a > b ? a - b : b - a;
             peak = d > peak ? d : peak;
             exact += d == 0;
+            above += a > b;
+            below += a < b;
             sum += d;
+            sgn += (double)a - (double)b;
         }
         st->peak = peak > st->peak ? peak : st->peak;
         st->exact += exact;
+        st->above += above;
+        st->below += below;
         st->err_sum += sum;
+        st->err_signed += sgn;
         st->samples += 3 * n;
         len += snprintf(line + len, sizeof line - (size_t)len,
-                        ", vs float: peak %u LSB, mean %.5f LSB, exact %.3f%%", peak,
-                        sum / (double)(3 * n), 100.0 * (double)exact / (double)(3 * n));
+                        ", vs float: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu below)",
+                        peak, 100.0 * (double)exact / (double)(3 * n), sgn / (double)(3 * n), above, below);
     }
     if (o->bittrue) {
         if (run_model(e, 1, e->bt_codes))
@@ -370,9 +376,10 @@ static void print_summary(const run_t *r)
            1e3 * t[0], 1e3 * t[st->frames - 1], sum > 0 ? st->pixels / sum / 1e6 : 0.0);
     free(t);
     if (r->o->compare && st->samples)
-        printf("summary vs float model: peak %u LSB, mean %.5f LSB, exact %.3f%% of %llu samples\n",
-               st->peak, st->err_sum / (double)st->samples,
-               100.0 * (double)st->exact / (double)st->samples, st->samples);
+        printf("summary vs float model: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu below), "
+               "mean |e| %.5f LSB, %llu samples\n",
+               st->peak, 100.0 * (double)st->exact / (double)st->samples, st->err_signed / (double)st->samples,
+               st->above, st->below, st->err_sum / (double)st->samples, st->samples);
     if (r->o->bittrue)
         printf("summary vs bit-true model: %llu of %llu samples differ\n", st->bt_diff,
                st->bt_samples);

@@ -658,23 +658,35 @@ bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
     return BLOOM_OK;
 }
 
+#if !BLOOM_SMALL
+/* Whether byte ranges [a, a + an) and [c, c + cn) meet. */
+static bool ranges_meet(uintptr_t a, size_t an, uintptr_t c, size_t cn)
+{
+    return a < c + cn && c < a + an;
+}
+#endif
+
 /* Whether output row y written at d would overwrite a source row the engine
  * still reads (pointer mode): any held row after y, or row y itself unless
  * d is that row and the formats are the same (in place). Rows before y are
- * never read again once y is out. */
+ * never read again once y is out; empty slots (tag -1) are skipped. */
 static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap, size_t src_bytes,
                          size_t dst_bytes, bool same, int y, const uint8_t *d)
 {
+#if BLOOM_SMALL /* the size build: only d over row y itself in another format */
+    const int s = y % cap;
+    (void)src_bytes;
+    (void)dst_bytes;
+    return (tag[s] & ~ZBIT) == y && ptr[s] == d && !same;
+#else
     for (int s = 0; s < cap; s++) {
-        const int r = tag[s] & ~ZBIT;
-        const uint8_t *p = ptr[s];
-        if (tag[s] < 0 || r < y || (uintptr_t)d >= (uintptr_t)p + src_bytes ||
-            (uintptr_t)p >= (uintptr_t)d + dst_bytes)
-            continue;
-        if (r > y || p != d || !same)
+        const int32_t r = tag[s] & ~ZBIT;
+        if (r >= y && ranges_meet((uintptr_t)d, dst_bytes, (uintptr_t)ptr[s], src_bytes) &&
+            (r != y || ptr[s] != d || !same))
             return true;
     }
     return false;
+#endif
 }
 
 bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
@@ -716,15 +728,16 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
     return BLOOM_OK;
 }
 
+#if !BLOOM_SMALL
 /* The byte span of rows r0 .. r1 - 1 of a frame (row 0 at p), for either
  * sign of the stride. */
-static void span(const uint8_t *p, ptrdiff_t stride, size_t row_bytes, int r0, int r1, uintptr_t *lo,
-                 uintptr_t *hi)
+static void span(const uint8_t *p, ptrdiff_t stride, int r0, int r1, uintptr_t *lo, uintptr_t *hi)
 {
     const uintptr_t a = (uintptr_t)(p + (ptrdiff_t)r0 * stride), z = (uintptr_t)(p + (ptrdiff_t)(r1 - 1) * stride);
     *lo = a < z ? a : z;
-    *hi = (a < z ? z : a) + row_bytes;
+    *hi = a < z ? z : a;
 }
+#endif
 
 /* A band's source and destination rows may overlap only as the same frame
  * (same rows, stride and format: in place): a destination row written over
@@ -733,15 +746,19 @@ static void span(const uint8_t *p, ptrdiff_t stride, size_t row_bytes, int r0, i
 static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, const uint8_t *d, ptrdiff_t ds,
                            int r0, int r1)
 {
-    if (r1 <= r0)
+    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt) || r1 <= r0)
         return false;
+#if BLOOM_SMALL /* the size build: the same buffer in another format or stride only */
+    (void)ds;
+    return s == d;
+#else
     uintptr_t slo, shi, dlo, dhi;
     const size_t w = (size_t)b->cfg.width;
-    span(s, ss, w * (size_t)bloom_format_bpp(b->cfg.in_fmt), r0, r1, &slo, &shi);
-    span(d, ds, w * (size_t)bloom_format_bpp(b->cfg.out_fmt), r0, r1, &dlo, &dhi);
-    if (dlo >= shi || slo >= dhi)
-        return false;
-    return !(s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt);
+    span(s, ss, r0, r1, &slo, &shi);
+    span(d, ds, r0, r1, &dlo, &dhi);
+    return ranges_meet(slo, shi - slo + w * (size_t)bloom_format_bpp(b->cfg.in_fmt), dlo,
+                       dhi - dlo + w * (size_t)bloom_format_bpp(b->cfg.out_fmt));
+#endif
 }
 
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows,

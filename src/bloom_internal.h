@@ -75,6 +75,8 @@ static inline uint64_t bloom_align8(uint64_t n)
 #define BLOOM_KNEE_E8 ((uint32_t)(((1ull << (BLOOM_LIN_BITS + 3)) + 50000u) / 100000u))
 #define BLOOM_KNEE_FBITS 24
 #define BLOOM_KNEE_TINY_F (100000u << (BLOOM_KNEE_FBITS - BLOOM_LIN_BITS))
+/* b * 100000 < 2^F <=> b < ceil(2^F / 100000) (never an integer) */
+#define BLOOM_KNEE_TINY_B ((uint32_t)(((1ull << BLOOM_LIN_BITS) + 99999u) / 100000u))
 
 /* Internal -> Q16.16, round half to even (the value was rounded before:
  * half up here would put every tie on the same side). */

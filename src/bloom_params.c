@@ -52,7 +52,7 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
     case BLOOM_E_PRESET: return "preset unknown or compiled out";
     case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
-    case BLOOM_E_ALIAS: return "destination overlaps source rows still needed (in place needs the same format and stride)";
+    case BLOOM_E_ALIAS: return "dst overlaps src rows still needed (in place: same format, stride)";
 #if BLOOM_USE_GRAPH /* only presets other than the default return these */
     case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
     case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";

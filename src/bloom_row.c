@@ -321,7 +321,7 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
         }
         /* f = num / max(bmax, 0.00001) in Q24, rounded (tiny bmax: exact
          * product); num <= bmax, so f <= 2^24, num << 24 <= 2^53, c f <= 2^52 */
-        const uint32_t f = (uint64_t)bmax * 100000u < (1ull << BLOOM_LIN_BITS)
+        const uint32_t f = bmax < BLOOM_KNEE_TINY_B
                                ? (uint32_t)num * BLOOM_KNEE_TINY_F
                                : bloom_div_u64_u32((num << BLOOM_KNEE_FBITS) + (bmax >> 1), bmax);
         for (int ch = 0; ch < 3; ch++) {

@@ -82,19 +82,27 @@ static row_t *new_row(int w, int h, const char *group, const char *name)
     return r;
 }
 
-/* Max absolute difference and % of equal bytes. */
-static void agreement(const uint8_t *a, const uint8_t *b, size_t n, int *max, double *exact)
+/* Row r against the engine's output a (r's output b): max absolute
+ * difference, % of equal bytes, mean of a - b and the bytes above / below. */
+static void agreement(const uint8_t *a, const uint8_t *b, size_t n, row_t *r)
 {
     size_t same = 0;
+    long long sum = 0, above = 0, below = 0;
     int m = 0;
     for (size_t i = 0; i < n; i++) {
-        const int d = a[i] > b[i] ? a[i] - b[i] : b[i] - a[i];
+        const int s = a[i] - b[i], d = s < 0 ? -s : s;
         if (d > m)
             m = d;
         same += d == 0;
+        sum += s;
+        above += s > 0;
+        below += s < 0;
     }
-    *max = m;
-    *exact = n ? 100.0 * (double)same / (double)n : 100.0;
+    r->agree_max = m;
+    r->agree_exact = n ? 100.0 * (double)same / (double)n : 100.0;
+    r->agree_signed = n ? (double)sum / (double)n : 0.0;
+    r->agree_above = above;
+    r->agree_below = below;
 }
 
 /* ---- the cold ring -------------------------------------------------------
@@ -465,7 +473,7 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
             exit(1);
         if (run_cv(&cc, scene, out))
             exit(1);
-        agreement(ref, out, rgb_bytes, &r->agree_max, &r->agree_exact);
+        agreement(ref, out, rgb_bytes, r);
         printf("   %-66s %2d thr %9.3f ms\n", r->name, r->threads, r->median_ms);
         fflush(stdout);
     }
@@ -543,7 +551,7 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         r->runs = 1;
         for (size_t i = 0; i < rgb_bytes; i++)
             out[i] = (uint8_t)oc[i];
-        agreement(ref, out, rgb_bytes, &r->agree_max, &r->agree_exact);
+        agreement(ref, out, rgb_bytes, r);
         snprintf(r->note, sizeof r->note, "one run, no warm-up");
         free(codes);
         free(oc);
@@ -574,8 +582,8 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         if (q->threads == 1 && enr && enr->cpu_ms > 0.0)
             q->xc_engine = q->cpu_ms / enr->cpu_ms;
     }
-    printf("   %-44s %3s %4s %10s %9s %9s %9s %8s %8s\n", "variant", "thr", "runs", "median ms",
-           "CPU ms", "x memcpy", "x engine", "max LSB", "exact %");
+    printf("   %-44s %3s %4s %10s %9s %9s %9s %8s %8s %9s %17s\n", "variant", "thr", "runs",
+           "median ms", "CPU ms", "x memcpy", "x engine", "max LSB", "exact %", "signed", "above / below");
     for (int i = first_row; i < nrows; i++) {
         const row_t *q = &rows[i];
         char nm[45];
@@ -587,9 +595,10 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         printf("   %-44s %3d %4d %10.3f %9.3f %9.2f %9.3f", nm, q->threads, q->runs, q->median_ms,
                q->cpu_ms, q->x_memcpy, q->x_engine);
         if (q->agree_max >= 0)
-            printf(" %8d %8.3f\n", q->agree_max, q->agree_exact);
+            printf(" %8d %8.3f %+9.5f %8lld/%-8lld\n", q->agree_max, q->agree_exact, q->agree_signed,
+                   q->agree_above, q->agree_below);
         else
-            printf(" %8s %8s\n", "-", "-");
+            printf(" %8s %8s %9s %17s\n", "-", "-", "-", "-");
     }
     fflush(stdout);
     free(ref);

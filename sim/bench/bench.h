@@ -30,6 +30,10 @@ typedef struct {
     double xc_memcpy, xc_engine; /* CPU-time ratios, single-threaded rows; -1 otherwise */
     int agree_max; /* -1: not compared */
     double agree_exact;
+    /* engine - this row, per byte: mean, and the bytes with engine > this
+     * row, engine < this row (a bias hides in the two figures above) */
+    double agree_signed;
+    long long agree_above, agree_below;
     char note[96];
 } row_t;
 

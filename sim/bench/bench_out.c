@@ -34,7 +34,8 @@ void write_csv(const char *path)
     char tmp[1024];
     FILE *f = open_tmp(path, tmp, sizeof tmp);
     fprintf(f, "date,cpu,width,height,group,variant,threads,runs,median_ms,min_ms,cpu_ms,"
-               "x_memcpy,x_engine,x_memcpy_cpu,x_engine_cpu,agree_max_lsb,agree_exact_pct,note\n");
+               "x_memcpy,x_engine,x_memcpy_cpu,x_engine_cpu,agree_max_lsb,agree_exact_pct,note,"
+               "agree_signed_mean_lsb,agree_n_above,agree_n_below\n");
     for (int i = 0; i < nrows; i++) {
         const row_t *r = &rows[i];
         fprintf(f, "%s,\"%s\",%d,%d,%s,\"%s\",%d,%d,", date_utc, cpu_model, r->w, r->h, r->group,
@@ -54,7 +55,12 @@ void write_csv(const char *path)
             fprintf(f, "%d,%.4f,", r->agree_max, r->agree_exact);
         else
             fprintf(f, ",,");
-        fprintf(f, "\"%s\"\n", r->note);
+        fprintf(f, "\"%s\"", r->note);
+        /* after the note: the columns before it keep their index */
+        if (r->agree_max >= 0)
+            fprintf(f, ",%.6f,%lld,%lld\n", r->agree_signed, r->agree_above, r->agree_below);
+        else
+            fprintf(f, ",,,\n");
     }
     close_tmp(f, tmp, path);
 }
@@ -132,8 +138,10 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
                       "the multi-threaded OpenCV rows most of all)"
                     : "");
     fprintf(f, "- Agreement: the output bytes of each OpenCV variant and of the float model "
-               "against the engine's RGB888 output, same input: largest difference in LSB and "
-               "%% of equal bytes\n\n");
+               "against the engine's RGB888 output, same input: largest difference in LSB, "
+               "%% of equal bytes, the signed mean of engine - variant in LSB and the bytes "
+               "where the engine is above / below the variant (a bias hides in a largest or "
+               "mean absolute difference)\n\n");
 
     for (int s = 0; s < nsizes; s++) {
         const int w = sw[s], h = sh[s];
@@ -144,14 +152,14 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
                 size_info[s].changed_out_pct);
         fprintf(f, "| group | variant | threads | runs | median ms | CPU ms | x cold memcpy | "
                    "x engine | x cold memcpy, CPU | x engine, CPU | max LSB vs engine | "
-                   "exact %% |\n");
-        fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                   "exact %% | signed mean LSB, engine - variant | engine above / below |\n");
+        fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (int i = 0; i < nrows; i++) {
             const row_t *r = &rows[i];
             if (r->w != w || r->h != h)
                 continue;
             if (!r->runs) {
-                fprintf(f, "| %s | %s | | | %s | | | | | | | |\n", r->group, r->name, r->note);
+                fprintf(f, "| %s | %s | | | %s | | | | | | | | | |\n", r->group, r->name, r->note);
                 continue;
             }
             char xm[32], xe[32], cm[32] = "-", ce[32] = "-";
@@ -167,9 +175,10 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
             fprintf(f, "| %s | %s | %d | %d | %.3f | %s | %s | %s | %s | %s | ", r->group, r->name,
                     r->threads, r->runs, r->median_ms, cpu, xm, xe, cm, ce);
             if (r->agree_max >= 0)
-                fprintf(f, "%d | %.3f |\n", r->agree_max, r->agree_exact);
+                fprintf(f, "%d | %.3f | %+.5f | %lld / %lld |\n", r->agree_max, r->agree_exact,
+                        r->agree_signed, r->agree_above, r->agree_below);
             else
-                fprintf(f, "- | - |\n");
+                fprintf(f, "- | - | - | - |\n");
         }
         fprintf(f, "\n");
     }

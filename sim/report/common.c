@@ -75,6 +75,9 @@ void rstat_add(rstat_t *s, long long eng, long long ref, long long top)
         s->peak = d;
     s->sum_abs += (double)d;
     s->sum_sq += (double)d * (double)d;
+    s->sum_signed += (double)(eng - ref);
+    s->above += eng > ref;
+    s->below += eng < ref;
     s->sat_eng += eng >= top;
     s->sat_ref += ref >= top;
     if (d > 0 && ref > 0 && ref >= s->rel_floor && (double)d / (double)ref > s->peak_rel)
@@ -91,6 +94,9 @@ void rstat_merge(rstat_t *into, const rstat_t *s)
     into->sat_ref += s->sat_ref;
     into->sum_abs += s->sum_abs;
     into->sum_sq += s->sum_sq;
+    into->sum_signed += s->sum_signed;
+    into->above += s->above;
+    into->below += s->below;
     if (s->peak_rel > into->peak_rel)
         into->peak_rel = s->peak_rel;
 }
@@ -98,6 +104,11 @@ void rstat_merge(rstat_t *into, const rstat_t *s)
 double rstat_mean(const rstat_t *s)
 {
     return s->n ? s->sum_abs / (double)s->n : 0.0;
+}
+
+double rstat_signed_mean(const rstat_t *s)
+{
+    return s->n ? s->sum_signed / (double)s->n : 0.0;
 }
 
 double rstat_mse(const rstat_t *s)

@@ -55,17 +55,22 @@ int rmodel_run(const bloom_config_t *c, const uint32_t *codes, int src_max, uint
 
 /* ---- error statistics ----------------------------------------------------- */
 
+/* eng - ref per sample. The signed sum and the counts above (eng > ref)
+ * and below (eng < ref) are kept beside the absolute one: a bias hides in
+ * a mean of absolute errors. */
 typedef struct {
     long long n, exact, peak;
+    long long above, below;     /* samples with eng > ref, eng < ref */
     long long sat_eng, sat_ref; /* samples at the top code */
-    double sum_abs, sum_sq;
+    double sum_abs, sum_sq, sum_signed;
     double peak_rel;            /* largest |eng - ref| / ref over ref >= rel_floor */
     long long rel_floor;        /* set before adding; 0 counts as 1 */
 } rstat_t;
 
 void rstat_add(rstat_t *s, long long eng, long long ref, long long top);
 void rstat_merge(rstat_t *into, const rstat_t *s);
-double rstat_mean(const rstat_t *s);
+double rstat_mean(const rstat_t *s);        /* mean |eng - ref| */
+double rstat_signed_mean(const rstat_t *s); /* mean (eng - ref) */
 double rstat_mse(const rstat_t *s);
 double rstat_exact(const rstat_t *s);   /* percent */
 double rstat_psnr(const rstat_t *s);    /* dB for 8-bit codes; INFINITY when exact */

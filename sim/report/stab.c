@@ -21,8 +21,8 @@ const char *stab_data_dir = "tests/data", *stab_out_dir = ".";
 /* Over every case run (RGB888 output; RGBQ16 output by relative error). */
 static struct {
     long long ok, refused, worst8, sat_rows, sat_diff;
-    double worst_rel;
-    char worst8_case[240], worst_rel_case[240], over1[4096];
+    double worst_rel, worst_bias; /* worst_bias: signed mean of largest magnitude */
+    char worst8_case[240], worst_rel_case[240], worst_bias_case[240], over1[4096];
 } tr;
 
 static void track(const char *cas, const rin_t *in, const bloom_config_t *c, const res_t *r)
@@ -41,6 +41,10 @@ static void track(const char *cas, const rin_t *in, const bloom_config_t *c, con
             snprintf(tr.worst_rel_case, sizeof tr.worst_rel_case, "%s", what);
         }
         return;
+    }
+    if (fabs(rstat_signed_mean(&r->s)) > fabs(tr.worst_bias)) {
+        tr.worst_bias = rstat_signed_mean(&r->s);
+        snprintf(tr.worst_bias_case, sizeof tr.worst_bias_case, "%s", what);
     }
     if (r->s.peak > tr.worst8) {
         tr.worst8 = r->s.peak;
@@ -66,6 +70,11 @@ static void summary(FILE *f)
         fprintf(f, "Cases above 1 LSB: %s. ", tr.over1);
     else
         fprintf(f, "No case exceeds 1 LSB. ");
+    if (tr.worst_bias_case[0])
+        fprintf(f, "Largest bias (signed mean of the largest magnitude) with RGB888 output: "
+                   "%+.5f LSB (%s). ", tr.worst_bias, tr.worst_bias_case);
+    else
+        fprintf(f, "No RGB888 case has a bias (every signed mean is 0). ");
     fprintf(f, "Largest relative error with RGBQ16 output: %.2g (%s). ", tr.worst_rel,
             tr.worst_rel_case);
     if (tr.sat_rows)
@@ -153,16 +162,26 @@ void stab_emit(const char *section, const char *cas, const rin_t *in, const bloo
         fprintf(csv, ",%lld,%.6f,%lld", r->raw.peak, rstat_mean(&r->raw), r->raw.sat_ref);
     else
         fprintf(csv, ",,,");
-    fprintf(csv, ",%lld,\"%s\"\n", r->changed, note ? note : "");
+    fprintf(csv, ",%lld,\"%s\"", r->changed, note ? note : "");
+    /* the bias fields after the note: columns before it keep their index */
+    if (r->st == BLOOM_OK)
+        fprintf(csv, ",%.6f,%lld,%lld", rstat_signed_mean(&r->s), r->s.above, r->s.below);
+    else
+        fprintf(csv, ",,,");
+    if (r->has_raw)
+        fprintf(csv, ",%.6f,%lld,%lld\n", rstat_signed_mean(&r->raw), r->raw.above, r->raw.below);
+    else
+        fprintf(csv, ",,,\n");
 
     fprintf(md, "| %s | %s | %dx%d %s | %s (%d) | %s | ", cas, in->name, in->w, in->h,
             fmt_name(in->fmt), levels, r->built, fmt_name(c->out_fmt));
     if (r->st != BLOOM_OK) {
-        fprintf(md, "refused: %s | | | | %s |\n", bloom_status_str(r->st), note ? note : "");
+        fprintf(md, "refused: %s | | | | | | %s |\n", bloom_status_str(r->st), note ? note : "");
         return;
     }
-    fprintf(md, "%lld | %.5f | %.3f | %lld / %lld | ", r->s.peak, rstat_mean(&r->s),
-            rstat_exact(&r->s), r->s.sat_eng, r->s.sat_ref);
+    fprintf(md, "%lld | %.5f | %.3f | %+.5f | %lld / %lld | %lld / %lld | ", r->s.peak,
+            rstat_mean(&r->s), rstat_exact(&r->s), rstat_signed_mean(&r->s), r->s.above, r->s.below,
+            r->s.sat_eng, r->s.sat_ref);
     char notes[512] = "";
     size_t nk = 0;
     if (c->out_fmt == BLOOM_FMT_RGBQ16)
@@ -170,8 +189,10 @@ void stab_emit(const char *section, const char *cas, const rin_t *in, const bloo
                               r->s.peak_rel);
     if (r->has_raw && nk < sizeof notes)
         nk += (size_t)snprintf(notes + nk, sizeof notes - nk,
-                              "; vs unclamped words: peak %lld, mean %.3f, model top %lld",
-                              r->raw.peak, rstat_mean(&r->raw), r->raw.sat_ref);
+                              "; vs unclamped words: peak %lld, mean \\|e\\| %.3f, signed mean %+.3f "
+                              "(%lld above, %lld below), model top %lld",
+                              r->raw.peak, rstat_mean(&r->raw), rstat_signed_mean(&r->raw),
+                              r->raw.above, r->raw.below, r->raw.sat_ref);
     if (r->changed >= 0 && nk < sizeof notes)
         nk += r->changed ? (size_t)snprintf(notes + nk, sizeof notes - nk,
                                            "; %lld samples differ from the input", r->changed)
@@ -184,8 +205,9 @@ void stab_emit(const char *section, const char *cas, const rin_t *in, const bloo
 void stab_table(const char *title, const char *intro)
 {
     fprintf(md, "\n### %s\n\n%s\n\n", title, intro);
-    fprintf(md, "| case | input | frame | N (L built) | out | peak LSB | mean LSB | exact %% | "
-                "top code: engine / model | notes |\n|---|---|---|---|---|---:|---:|---:|---|---|\n");
+    fprintf(md, "| case | input | frame | N (L built) | out | peak LSB | mean \\|e\\| LSB | exact %% | "
+                "signed mean LSB | above / below | top code: engine / model | notes |\n"
+                "|---|---|---|---|---|---:|---:|---:|---:|---:|---|---|\n");
 }
 
 void stab_config(bloom_config_t *c, const rin_t *in, int levels, double t, double k, double i,
@@ -213,11 +235,15 @@ static const char *curve_inputs[] = {"rocket", "hubble", "scene-hubble", "studio
                                      "hall",   "point",  "hdr-point"};
 #define N_CURVE ((int)(sizeof curve_inputs / sizeof curve_inputs[0]))
 
+/* all: every point of the curve pooled (equal sample counts), for its bias. */
 static void summary_line(const char *what, const char *input, const rstat_t *lo, const rstat_t *hi,
-                         long long peak_all, double mean_max)
+                         long long peak_all, double mean_max, const rstat_t *all)
 {
-    fprintf(md, "| %s | %s | %lld / %.5f | %lld / %.5f | %lld | %.5f |\n", what, input, lo->peak,
-            rstat_mean(lo), hi->peak, rstat_mean(hi), peak_all, mean_max);
+    fprintf(md, "| %s | %s | %lld / %.5f / %+.5f | %lld / %.5f / %+.5f | %lld | %.5f | %+.5f | "
+                "%lld / %lld |\n",
+            what, input, lo->peak, rstat_mean(lo), rstat_signed_mean(lo), hi->peak, rstat_mean(hi),
+            rstat_signed_mean(hi), peak_all, mean_max, rstat_signed_mean(all), all->above,
+            all->below);
 }
 
 static void curves(const char *dir, int with_md)
@@ -225,7 +251,9 @@ static void curves(const char *dir, int with_md)
     char path[1024], tmp[1100];
     snprintf(path, sizeof path, "%s/levels_f%d.csv", dir, BLOOM_LIN_BITS);
     FILE *f = ropen(path, tmp, sizeof tmp);
-    fprintf(f, "F,input,width,height,levels,levels_built,peak,mean,mse,exact_pct\n");
+    /* new fields go last in both curves: plots.gp reads columns 1, 2, 5, 7, 8 */
+    fprintf(f, "F,input,width,height,levels,levels_built,peak,mean,mse,exact_pct,signed_mean,n_above,"
+               "n_below\n");
     if (with_md) {
         fprintf(md, "\n### Error against level count and intensity (the curves)\n\n"
                     "Level curve: every level count N = 1..16 at 1024x768 (L built stops at 9: "
@@ -234,13 +262,18 @@ static void curves(const char *dir, int with_md)
                     "320x240, 5 levels, threshold 0.6. Both RGB888 output. "
                     "`report_levels.png`, `report_intensity.png`; data in "
                     "`report_levels.csv`, `report_intensity.csv`.\n\n"
-                    "| curve | input | at the low end: peak / mean | at the high end: peak / mean | "
-                    "largest peak | largest mean |\n|---|---|---|---|---:|---:|\n");
+                    "Peak and mean \\|e\\| in LSB; the signed mean (engine - model) and the samples "
+                    "above / below (engine > / < model) show a bias the mean \\|e\\| hides.\n\n"
+                    "| curve | input | at the low end: peak / mean \\|e\\| / signed mean | at the high "
+                    "end: peak / mean \\|e\\| / signed mean | largest peak | largest mean \\|e\\| | "
+                    "signed mean, whole curve | above / below, whole curve |\n"
+                    "|---|---|---|---|---:|---:|---:|---:|\n");
     }
     for (int ii = 0; ii < N_CURVE; ii++) {
         rin_t in;
         stab_input(&in, curve_inputs[ii], 1024, 768);
-        rstat_t first, last;
+        rstat_t first, last, all;
+        memset(&all, 0, sizeof all);
         long long pk = 0;
         double mx = 0.0;
         for (int n = 1; n <= BLOOM_MAX_LEVELS; n++) {
@@ -250,16 +283,18 @@ static void curves(const char *dir, int with_md)
             if (r.st != BLOOM_OK)
                 rdie("level curve: %s", bloom_status_str(r.st));
             track("level curve", &in, &c, &r);
-            fprintf(f, "%d,%s,%d,%d,%d,%d,%lld,%.6f,%.6f,%.4f\n", BLOOM_LIN_BITS, in.name, in.w,
-                    in.h, n, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s), rstat_exact(&r.s));
+            fprintf(f, "%d,%s,%d,%d,%d,%d,%lld,%.6f,%.6f,%.4f,%.6f,%lld,%lld\n", BLOOM_LIN_BITS,
+                    in.name, in.w, in.h, n, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s),
+                    rstat_exact(&r.s), rstat_signed_mean(&r.s), r.s.above, r.s.below);
             if (n == 1)
                 first = r.s;
             last = r.s;
+            rstat_merge(&all, &r.s);
             pk = r.s.peak > pk ? r.s.peak : pk;
             mx = rstat_mean(&r.s) > mx ? rstat_mean(&r.s) : mx;
         }
         if (with_md)
-            summary_line("levels N = 1 .. 16", in.name, &first, &last, pk, mx);
+            summary_line("levels N = 1 .. 16", in.name, &first, &last, pk, mx, &all);
         rin_free(&in);
     }
     rclose(f, tmp, path);
@@ -267,11 +302,12 @@ static void curves(const char *dir, int with_md)
     snprintf(path, sizeof path, "%s/intensity_f%d.csv", dir, BLOOM_LIN_BITS);
     f = ropen(path, tmp, sizeof tmp);
     fprintf(f, "F,input,width,height,intensity,levels_built,peak,mean,mse,exact_pct,top_engine,"
-               "top_model\n");
+               "top_model,signed_mean,n_above,n_below\n");
     for (int ii = 0; ii < N_CURVE; ii++) {
         rin_t in;
         stab_input(&in, curve_inputs[ii], 320, 240);
-        rstat_t first, last;
+        rstat_t first, last, all;
+        memset(&all, 0, sizeof all);
         long long pk = 0;
         double mx = 0.0;
         for (int s = 0; s <= 20; s++) {
@@ -281,17 +317,19 @@ static void curves(const char *dir, int with_md)
             if (r.st != BLOOM_OK)
                 rdie("intensity curve: %s", bloom_status_str(r.st));
             track("intensity curve", &in, &c, &r);
-            fprintf(f, "%d,%s,%d,%d,%.2f,%d,%lld,%.6f,%.6f,%.4f,%lld,%lld\n", BLOOM_LIN_BITS,
-                    in.name, in.w, in.h, s * 0.5, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s),
-                    rstat_exact(&r.s), r.s.sat_eng, r.s.sat_ref);
+            fprintf(f, "%d,%s,%d,%d,%.2f,%d,%lld,%.6f,%.6f,%.4f,%lld,%lld,%.6f,%lld,%lld\n",
+                    BLOOM_LIN_BITS, in.name, in.w, in.h, s * 0.5, r.built, r.s.peak, rstat_mean(&r.s),
+                    rstat_mse(&r.s), rstat_exact(&r.s), r.s.sat_eng, r.s.sat_ref,
+                    rstat_signed_mean(&r.s), r.s.above, r.s.below);
             if (s == 0)
                 first = r.s;
             last = r.s;
+            rstat_merge(&all, &r.s);
             pk = r.s.peak > pk ? r.s.peak : pk;
             mx = rstat_mean(&r.s) > mx ? rstat_mean(&r.s) : mx;
         }
         if (with_md)
-            summary_line("intensity 0 .. 10", in.name, &first, &last, pk, mx);
+            summary_line("intensity 0 .. 10", in.name, &first, &last, pk, mx, &all);
         rin_free(&in);
     }
     rclose(f, tmp, path);
@@ -326,7 +364,8 @@ int main(int argc, char **argv)
     csv = ropen(cpath, ctmp, sizeof ctmp);
     fprintf(csv, "section,case,input,width,height,in_fmt,out_fmt,levels,levels_built,threshold,knee,"
                  "intensity,status,peak,mean,mse,exact_pct,top_engine,top_model,peak_rel,raw_peak,"
-                 "raw_mean,raw_top_model,changed_vs_input,note\n");
+                 "raw_mean,raw_top_model,changed_vs_input,note,signed_mean,n_above,n_below,"
+                 "raw_signed_mean,raw_n_above,raw_n_below\n");
     stab_params(md);
     stab_hdr(md);
     stab_float(md);

@@ -4,7 +4,8 @@
 # ICOUNT.tsv: "F L Ir fnv" of one bloom_process at 640x480 (callgrind).
 # Writes DIR/sweep_table.md, DIR/sweep_default.md, DIR/pareto_WxH.dat,
 # DIR/front_WxH.dat. x = CPU-time ratio to the cold memcpy of the same rounds;
-# y = MSE in 8-bit LSB^2 against the float model.
+# y = MSE in 8-bit LSB^2 against the float model. CSV fields 21-23: signed
+# mean (engine - model), samples above and below (engine > / < model).
 FNR == 1 { file++ }
 file == 1 { split($0, q, /[ \t]+/); ic[q[1], q[2]] = q[3]; next }
 FNR == 1 { next }
@@ -14,6 +15,7 @@ FNR == 1 { next }
     cnt[k]++; LBk[k] = $5; msk[k] += $10; xck[k] += $14; xwk[k] += $13
     if ($15 > pkk[k]) pkk[k] = $15
     meank[k] += $16; msek[k] += $17; exk[k] += $19; wsk[k] = $20
+    sgk[k] += $21; abk[k] += $22; blk[k] += $23
     sz = $2 "x" $3
     if (!(sz in seen)) { seen[sz] = 1; sizes[++ns] = sz }
 }
@@ -23,6 +25,7 @@ function pool(    j, k, c) {
         F[n] = kF[k]; S[n] = kS[k]; L[n] = kL[k]; LB[n] = LBk[k]
         ms[n] = msk[k] / c; xc[n] = xck[k] / c; xw[n] = xwk[k] / c; pk[n] = pkk[k]
         mean[n] = meank[k] / c; mse[n] = msek[k] / c; ex[n] = exk[k] / c; ws[n] = wsk[k]
+        sg[n] = sgk[k] / c; ab[n] = abk[k]; bl[n] = blk[k]
         psnr[n] = mse[n] > 0 ? sprintf("%.2f", 10 * log(255 * 255 / mse[n]) / log(10)) : "inf"
         cntS[S[n]]++
     }
@@ -40,8 +43,9 @@ END {
     pool()
     t = out "/sweep_table.md"
     print "| frame | F | N (L) | engine ms, CPU | x cold memcpy, CPU (wall) | instr/px at 640x480 | " \
-          "peak LSB | mean LSB | MSE | PSNR dB | exact % | workspace bytes | Pareto: all / within N |" > t
-    print "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|" > t
+          "peak LSB | mean \\|e\\| LSB | MSE | PSNR dB | exact % | signed mean LSB | above / below | " \
+          "workspace bytes | Pareto: all / within N |" > t
+    print "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|" > t
     for (s = 1; s <= ns; s++) {
         dat = out "/pareto_" sizes[s] ".dat"; fr = out "/front_" sizes[s] ".dat"
         print "# x_cpu mse F L front default" > dat
@@ -51,9 +55,10 @@ END {
             g = !dominated(i, 0, 0); w = !dominated(i, 1, 0)
             front[i] = g; lfront[i] = w
             ipx = (sizes[s] == "640x480" && (F[i], L[i]) in ic) ? sprintf("%.1f", ic[F[i], L[i]] / 307200) : "-"
-            printf "| %s | %d | %d (%d) | %.3f | %.2f (%.2f) | %s | %d | %.5f | %.6f | %s | %.3f | %d | %s%s |\n",
+            printf "| %s | %d | %d (%d) | %.3f | %.2f (%.2f) | %s | %d | %.5f | %.6f | %s | %.3f | %+.5f | " \
+                "%d / %d | %d | %s%s |\n",
                 sizes[s], F[i], L[i], LB[i], ms[i], xc[i], xw[i], ipx, pk[i], mean[i], mse[i], psnr[i],
-                ex[i], ws[i], g ? "**front**" : "-", w ? " / front" : " / -" > t
+                ex[i], sg[i], ab[i], bl[i], ws[i], g ? "**front**" : "-", w ? " / front" : " / -" > t
             printf "%.4f %.4g %d %d %d %d\n", xc[i], (mse[i] > 0 ? mse[i] : 1e-7), F[i], L[i], g,
                 (F[i] == 20 && L[i] == 5) > dat
             if (g) { fx[++nf] = xc[i]; fy[nf] = (mse[i] > 0 ? mse[i] : 1e-7); fl[nf] = F[i] "/" L[i] }
@@ -102,11 +107,12 @@ END {
             if (xc[k] > xc[top]) top = k
         }
         printf "- **%s**: the default (F 20, N 5) runs at %.2fx the cold memcpy (CPU; %.2fx wall), " \
-               "MSE %.6f, peak %d LSB, %.3f %% exact; %s the Pareto front of all %d configurations " \
+               "MSE %.6f, peak %d LSB, %.3f %% exact, signed mean %+.5f LSB (%d above, %d below); " \
+               "%s the Pareto front of all %d configurations " \
                "(front: %s) and %s the front of the five F at N = 5 (lowest MSE at N = 5: F %d). " \
                "The five F at N = 5 measured %.2fx to %.2fx, a %.0f %% spread for the same instructions " \
                "(below): that spread is this run's timing noise.", sizes[s], xc[i], xw[i], mse[i], pk[i],
-               ex[i], front[i] ? "**on**" : "not on", cntS[sizes[s]], frontlist[s],
+               ex[i], sg[i], ab[i], bl[i], front[i] ? "**on**" : "not on", cntS[sizes[s]], frontlist[s],
                lfront[i] ? "**on**" : "not on", F[hi], xc[lo], xc[top], 100 * (xc[top] / xc[lo] - 1) > d
         split(sizes[s], wh, "x")
         printf " Workspace %d bytes, 1/%.0f of one RGB888 frame.", ws[i], wh[1] * wh[2] * 3 / ws[i] > d

@@ -9,7 +9,9 @@
  * in DIR: it does not depend on F, so one run of the model serves every F;
  * --model-only only fills the cache), then rounds of {cold memcpy of the
  * RGB888 frame, engine}, medians of both, and the engine's output of the
- * last round against the model; one CSV row each (run.sh pools the inputs).
+ * last round against the model (peak, mean |e|, signed mean with the samples
+ * above and below it, MSE, % exact); one CSV row each (run.sh pools the
+ * inputs).
  * Measures and prints; asserts nothing. */
 #include <stdlib.h>
 #include <string.h>
@@ -80,11 +82,13 @@ static void csv_row(FILE *f, int w, int h, int lv, const char *input, const char
                     const row_t *a)
 {
     char ps[32];
-    fprintf(f, "%d,%d,%d,%d,%d,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%lld,%.6f,%.6f,%s,%.4f,%zu\n",
+    /* the bias fields last: sweep.awk reads the columns by index */
+    fprintf(f, "%d,%d,%d,%d,%d,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%lld,%.6f,%.6f,%s,%.4f,%zu,"
+               "%.6f,%lld,%lld\n",
             BLOOM_LIN_BITS, w, h, lv, a->built, input, fmt, a->runs, a->eng_ms, a->eng_cpu,
             a->mc_ms, a->mc_cpu, a->x_wall, a->x_cpu, a->st.peak,
             rstat_mean(&a->st), rstat_mse(&a->st), rpsnr_str(rstat_psnr(&a->st), ps, sizeof ps),
-            rstat_exact(&a->st), a->ws);
+            rstat_exact(&a->st), a->ws, rstat_signed_mean(&a->st), a->st.above, a->st.below);
 }
 
 static void sweep_size(const opts_t *o, int w, int h, rring_t *ring, FILE *csv)
@@ -134,9 +138,11 @@ static void sweep_size(const opts_t *o, int w, int h, rring_t *ring, FILE *csv)
             c8.in_fmt = BLOOM_FMT_RGB888;
             one.ws = bloom_workspace_size(&c8);
             csv_row(csv, w, h, lv, in.name, in.fmt == BLOOM_FMT_RGBQ16 ? "RGBQ16" : "RGB888", &one);
-            printf("F%d %dx%d L%d %-12s x memcpy %7.2f (CPU %7.2f)  peak %lld mean %.5f exact %.3f%%\n",
+            printf("F%d %dx%d L%d %-12s x memcpy %7.2f (CPU %7.2f)  peak %lld exact %.3f%% "
+                   "signed mean %+.5f (%lld above, %lld below) mean |e| %.5f\n",
                    BLOOM_LIN_BITS, w, h, lv, in.name, one.x_wall, one.x_cpu, one.st.peak,
-                   rstat_mean(&one.st), rstat_exact(&one.st));
+                   rstat_exact(&one.st), rstat_signed_mean(&one.st), one.st.above, one.st.below,
+                   rstat_mean(&one.st));
             fflush(stdout);
             free(ws);
             free(ref);
@@ -215,7 +221,7 @@ int main(int argc, char **argv)
         csv = ropen(o.csv, tmp, sizeof tmp);
         fprintf(csv, "F,width,height,levels,levels_built,input,format,runs,engine_ms,engine_cpu_ms,"
                      "memcpy_ms,memcpy_cpu_ms,x_memcpy,x_memcpy_cpu,peak_lsb,mean_lsb,mse,psnr_db,"
-                     "exact_pct,workspace\n");
+                     "exact_pct,workspace,signed_mean_lsb,n_above,n_below\n");
     }
     for (int s = 0; s < o.nsizes; s++)
         sweep_size(&o, o.sw[s], o.sh[s], &ring, csv);

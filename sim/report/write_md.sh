@@ -73,7 +73,9 @@ pixels); soft knee 0.5, intensity 1.0, RGB888 output.
 Per configuration and input: the float model (\`bloom_model_run\`, double
 precision, computed once per input, size and N: it does not depend on F)
 against the engine's output, per output sample in 8-bit LSB: peak, mean
-|error|, MSE, PSNR = 10 log10(255^2 / MSE), % exact. Time: 1 warm-up and
+|error|, MSE, PSNR = 10 log10(255^2 / MSE), % exact, and the signed mean
+(engine - model) with the samples above and below (engine > model, engine <
+model): a bias hides in a mean of absolute errors. Time: 1 warm-up and
 $runs rounds ($runs_big above one megapixel) of {cold \`memcpy\` of the RGB888
 frame (w * h * 3 bytes), engine}, each call on the next slot of two rings
 (input, output) of max(128 MiB, 8 frames of 12 bytes per pixel) each (last-level
@@ -119,8 +121,11 @@ cat <<EOF
 
 All on the default build (F 20) unless marked; every case runs the engine and
 the float model on the same input and compares every output sample; no time
-is involved, so these figures are exact and repeatable. "top code" counts
-output samples at 255 (RGB888) or 2^24 - 1 (RGBQ16), engine / model.
+is involved, so these figures are exact and repeatable. "mean |e|" is the
+mean absolute error; "signed mean" the mean of engine - model, and "above /
+below" the samples where the engine is above / below the model (a bias hides
+in a mean of absolute errors). "top code" counts output samples at 255
+(RGB888) or 2^24 - 1 (RGBQ16), engine / model.
 
 **Summary.** $(cat "$out/stability_summary.md")
 
