@@ -191,7 +191,7 @@ int bloom_model_arm(const bloom_model_preset_args_t *a)
                     y *= auxv(a, a->aux[i]);
             } else {
                 /* Q24 weights summing to 2^24; sums below 2^53 */
-                y = floor((3566861.0 * s[0] + 11999031.0 * s[1] + 1211324.0 * s[2] + 8388608.0) / 16777216.0);
+                y = floor((3566836.0 * s[0] + 11999065.0 * s[1] + 1211315.0 * s[2] + 8388608.0) / 16777216.0);
                 if (has_aux)
                     y = floor((y * auxv(a, a->aux[i]) + 8388608.0) / 16777216.0);
             }

@@ -24,12 +24,13 @@
 
 #if BLOOM_USE_ARM
 
-/* Rec.709 luminance weights, Q24, summing to 2^24 (grey stays grey): each
- * within 0.53 of 2^24 times the real weight. (Q16 weights were off by up to
- * 1.2e-5 of a sample, which an intensity of 224 made 30 RGBQ16 LSB.) */
-#define ARM_WR 3566861u
-#define ARM_WG 11999031u
-#define ARM_WB 1211324u
+/* Rec.709 luminance weights, Q24: each the nearest integer to 2^24 times
+ * the real weight (3566836.1, 11999064.9, 1211315.0), and they sum to 2^24
+ * (grey stays grey). Q16 weights were off by up to 5.3e-6 of a sample,
+ * which an intensity of 224 made tens of RGBQ16 LSB, one-sided. */
+#define ARM_WR 3566836u
+#define ARM_WG 11999065u
+#define ARM_WB 1211315u
 
 /* A mask or map code as Q24 (0 .. 2^24), = bg_aux_q24: U8 c*2^24/255
  * rounded = 65793c + (c >= 128); U16 c*2^24/65535 rounded. */
@@ -81,7 +82,7 @@ static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
         if (b <= cut) {
             row[x] = 0;
         } else if (b >= hi) {
-            row[x] = b - t; /* soft = K <= b - T */
+            row[x] = b - t; /* soft < K <= b - T */
         } else {              /* T - K < b < T + K: K >= 1 */
             const uint64_t xx = (uint64_t)(b - cut);
             const uint32_t den = 8u * k + BLOOM_KNEE_E8;

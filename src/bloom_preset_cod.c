@@ -22,7 +22,7 @@
 /* Reach of L = 1 .. 10 levels in tenths of a pixel: the RMS radius of the
  * bloom of a point light with Bevy's NATURAL weights, measured through the
  * engine (sim/docs/presets/cod.md; COD_REACH_MAX=10 build/.../test_preset_cod). */
-static const uint16_t cod_reach[10] = {26, 58, 107, 187, 325, 560, 962, 1647, 2814, 4792};
+static const uint16_t cod_reach[10] = {26, 58, 107, 187, 324, 560, 960, 1644, 2805, 4771};
 
 int bloom_levels_for_radius(int radius_px)
 {

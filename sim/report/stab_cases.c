@@ -328,15 +328,15 @@ static double bloom_error(const rin_t *in, const bloom_config_t *c)
  * derivation): e1 = 3.625 at level 1, + 1/2 per box level, + 1 per tent. */
 static double db_worst(int L, double I)
 {
-    return 3.625 * L + L * (L - 1) / 4.0 + L + ldexp(1.0, BLOOM_LIN_BITS - 17) / (I > 0.0 ? I : 1.0);
+    return 3.625 * L + L * (L - 1) / 4.0 + L + ldexp(1.0, BLOOM_LIN_BITS - 25) / (I > 0.0 ? I : 1.0);
 }
 
 /* 8-bit output bound: dB times I, + 1 for the roundings of S and P, + the
- * intensity's own quantization (1 Q16 LSB times B < 1/I), through the
+ * intensity's own quantization (half a Q16 LSB times B < 1/I), through the
  * steepest slope of the sRGB encoder. */
 static int code_bound(double db, double I)
 {
-    const double dv = (I * db + 1.0) / ldexp(1.0, BLOOM_LIN_BITS) + (I > 0.0 ? 1.0 / 65536.0 / I : 0.0);
+    const double dv = (I * db + 1.0) / ldexp(1.0, BLOOM_LIN_BITS) + (I > 0.0 ? 0.5 / 65536.0 / I : 0.0);
     return 1 + (int)floor(255.0 * 12.92 * dv);
 }
 
@@ -355,9 +355,9 @@ void stab_stress(FILE *md)
                "pyramid). Notes: `dB` is the largest error of the bloom term B where the "
                "output is below the top code, in units of 2^-F (bit-true against exact "
                "pyramid of the model); `bound` is 1 + floor(3295 * ((I * dB + 1) * 2^-F + "
-               "2^-16 / I)): 3295 = 255 * 12.92 codes per unit of linear light is the steepest "
+               "2^-17 / I)): 3295 = 255 * 12.92 codes per unit of linear light is the steepest "
                "slope of the sRGB encoder (at black), + 1 covers the roundings of S and P, "
-               "2^-16 / I the quantized intensity times B < 1 / I.");
+               "2^-17 / I the quantized intensity (correctly rounded: within half a Q16 LSB) times B < 1 / I.");
     static const struct {
         const char *input;
         int w, h;

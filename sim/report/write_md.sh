@@ -54,8 +54,10 @@ binary per F built with that F's tables: \`build/gen_tables F\`, or
 $(echo "$sizes" | sed 's/,/, /g'): every combination, at every size, on every input.
 The **row-buffer sample width** named in the issue is not a knob of this
 engine: rows are \`uint32_t\` at every F (only the fraction bits vary), so it is
-not swept. **Filter presets** do not exist yet (a later issue); when they
-do, they are one more loop here. The SIMD row kernels are on, as by
+not swept. **The presets** are not swept here: this section measures the
+default pipeline's knobs; every preset's error against its own float model,
+in every output format, is asserted by \`tests/test_budget.c\` (\`make
+test\`). The SIMD row kernels are on, as by
 default (SSE2 on x86-64); \`BLOOM_FLAG_NO_SIMD\` gives bit-identical output, so
 it is a speed switch with no place on an error axis.
 
@@ -136,15 +138,15 @@ stage adds its own: at most 1 at level 1 from decoding and the 4x4 box, which
 the knee passes on at most twice (its output moves by at most the sum of the
 moves of the channel and of the largest channel), plus 1 from the soft
 knee's floor division, 1/8 from the quantized knee K_q, 1/2 from the
-channel rounding and 2^-17 of the value from the Q16 knee factor; then 1/2
+channel rounding and 2^-25 of the value from the Q24 knee factor; then 1/2
 per box level and 1 per tent (two roundings). Summed over the up chain:
-|dB| <= 3.625 L + L(L-1)/4 + L (+ 2^(F-17)/I where the output is below the
+|dB| <= 3.625 L + L(L-1)/4 + L (+ 2^(F-25)/I where the output is below the
 top code) in units of 2^-F. The composite multiplies dB by the linear
-intensity I (1.0 at intensity 1, 224.4 at the largest, 10.0), and the sRGB
+intensity I (1.0 at intensity 1, 223.8 at the largest, 10.0), and the sRGB
 encoder turns linear error into codes at up to 255 * 12.92 = 3295 codes per
 unit at black. Hence the 8-bit output error is at most
-1 + floor(3295 ((I |dB| + 1) 2^-F + 2^-16 / I)) LSB (the last term: I_q is
-within one Q16 LSB of I, times B < 1/I). At the default intensity (1.0) this is
+1 + floor(3295 ((I |dB| + 1) 2^-F + 2^-17 / I)) LSB (the last term: I_q is
+correctly rounded, within half a Q16 LSB of I, times B < 1/I). At the default intensity (1.0) this is
 **1 LSB for every level count up to 16**: the README's 1-LSB figure is
 guaranteed there, not only observed. It grows linearly with I and about
 quadratically in L (the table in the stiffest-case section), and the
