@@ -689,24 +689,13 @@ static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap,
 #endif
 }
 
-bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
+/* The pull itself, dst_row known not to alias a needed source row. */
+static bloom_status_t pull_row(bloom_t *b, void *dst_row)
 {
-    if (!b || !dst_row)
-        return BLOOM_E_NULL;
-    const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
-    const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
 #if BLOOM_USE_GRAPH
-    if (b->graph) {
-        const struct bloom_graph *g = b->graph;
-        if (!g->src_copy && dst_overlaps(g->src_ptr, g->src_tag, g->src_cap, g->src_row_bytes, out_bytes,
-                                         same, g->node[g->out_node].next, (const uint8_t *)dst_row))
-            return BLOOM_E_ALIAS;
+    if (b->graph)
         return bloom_graph_pull(b->graph, dst_row);
-    }
 #endif
-    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes,
-                                     same, b->out_n, (const uint8_t *)dst_row))
-        return BLOOM_E_ALIAS;
     const int y = b->out_n;
     if (y >= b->h[0])
         return BLOOM_DONE;
@@ -726,6 +715,30 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
         return BLOOM_E_INTERNAL;
     b->out_n++;
     return BLOOM_OK;
+}
+
+/* The row call checks dst_row against every source row still held (a scan
+ * of the source ring per row); the band and frame calls check their whole
+ * span once instead (frames_overlap) and pull without it. */
+bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
+{
+    if (!b || !dst_row)
+        return BLOOM_E_NULL;
+    const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
+    const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
+#if BLOOM_USE_GRAPH
+    if (b->graph) {
+        const struct bloom_graph *g = b->graph;
+        if (!g->src_copy && dst_overlaps(g->src_ptr, g->src_tag, g->src_cap, g->src_row_bytes, out_bytes,
+                                         same, g->node[g->out_node].next, (const uint8_t *)dst_row))
+            return BLOOM_E_ALIAS;
+        return pull_row(b, dst_row);
+    }
+#endif
+    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes,
+                                     same, b->out_n, (const uint8_t *)dst_row))
+        return BLOOM_E_ALIAS;
+    return pull_row(b, dst_row);
 }
 
 #if !BLOOM_SMALL
@@ -786,7 +799,7 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
     for (;;) {
         bloom_status_t st;
         do
-            st = bloom_pull_row(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride);
+            st = pull_row(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride); /* span checked above */
         while (st == BLOOM_OK);
         if (st < 0)
             return st;
