@@ -17,6 +17,13 @@ command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 [ -d /usr/include/OpenEXR ] || need="$need libopenexr-dev"
 # the Linux camera tool's GPIO module (libgpiod v1 on bookworm)
 [ -f /usr/include/gpiod.h ] || need="$need libgpiod-dev"
+# the GStreamer element (port/gstreamer, make test-gst): headers, gstcheck,
+# gst-inspect-1.0, and appsrc/appsink/videotestsrc/videoconvert
+[ -f /usr/include/gstreamer-1.0/gst/check/gstcheck.h ] || need="$need libgstreamer1.0-dev"
+[ -f /usr/include/gstreamer-1.0/gst/app/app.h ] || need="$need libgstreamer-plugins-base1.0-dev"
+command -v gst-inspect-1.0 >/dev/null 2>&1 || need="$need gstreamer1.0-tools"
+ls /usr/lib/*/gstreamer-1.0/libgstapp.so /usr/lib/*/gstreamer-1.0/libgstvideoconvertscale.so \
+    >/dev/null 2>&1 || need="$need gstreamer1.0-plugins-base"
 [ -z "$need" ] && exit 0
 echo "deps: installing$need"
 SUDO=""
