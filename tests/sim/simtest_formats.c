@@ -371,21 +371,22 @@ void test_compare(void)
     CHECK(bloom_model_run(&p, codes, mx, fl, mx, NULL) > 0);
     int ow, oh;
     uint8_t *out = st_read_rgb8(st_path("cmp_out.ppm"), &ow, &oh);
-    unsigned peak = 0, exact = 0;
-    double sum = 0;
+    unsigned peak = 0, exact = 0, above = 0, below = 0;
+    double sgn = 0;
     for (int i = 0; out && i < w * h * 3; i++) {
-        unsigned d = (unsigned)abs((int)out[i] - (int)fl[i]);
-        peak = d > peak ? d : peak, exact += d == 0, sum += d;
+        const int e = (int)out[i] - (int)fl[i];
+        const unsigned d = (unsigned)abs(e);
+        peak = d > peak ? d : peak, exact += d == 0, sgn += e, above += e > 0, below += e < 0;
     }
-    unsigned gp = 9999;
+    unsigned gp = 9999, ga = 0, gb = 0;
     double gm = -1, ge = -1;
     const char *l = strstr(R.out, "frame 0:");
-    CHECKF(l && sscanf(strstr(l, "vs float:"), "vs float: peak %u LSB, mean %lf LSB, exact %lf%%",
-                       &gp, &gm, &ge) == 3, "stats line: %s", R.out);
-    CHECKF(gp == peak && fabs(gm - sum / (w * h * 3)) < 1e-5 &&
-               fabs(ge - 100.0 * exact / (w * h * 3)) < 1e-3,
-           "printed peak %u mean %g exact %g, expected %u %g %g", gp, gm, ge, peak, sum / (w * h * 3),
-           100.0 * exact / (w * h * 3));
+    CHECKF(l && sscanf(strstr(l, "vs float:"), "vs float: peak %u LSB, exact %lf%%, signed mean %lf LSB (%u above, %u below)",
+                       &gp, &ge, &gm, &ga, &gb) == 5, "stats line: %s", R.out);
+    CHECKF(gp == peak && fabs(gm - sgn / (w * h * 3)) < 1e-5 && fabs(ge - 100.0 * exact / (w * h * 3)) < 1e-3 &&
+               ga == above && gb == below,
+           "printed peak %u signed mean %g exact %g (%u / %u), expected %u %g %g (%u / %u)", gp, gm, ge, ga, gb,
+           peak, sgn / (w * h * 3), 100.0 * exact / (w * h * 3), above, below);
     CHECK(peak <= 1);
     CHECK(strstr(R.out, "bit-true: 0 differ") != NULL);
     CHECK(strstr(R.out, "summary vs float model: peak") != NULL);
