@@ -86,6 +86,7 @@ typedef struct {
     const char *path;
     char *err;
     size_t errlen;
+    int maxdim;      /* largest width or height taken */
 } rd_t;
 
 #define rfail(r, ...) set_err((r)->err, (r)->errlen, (r)->path, __VA_ARGS__)
@@ -172,6 +173,8 @@ static int read_field(rd_t *r, bool comments, const char *what, bool last, long 
         return -1;
     if (v == 0)
         return rfail(r, "bad header: %s is 0 (must be 1..%ld)", what, limit);
+    if (v > limit && limit < IMG_MAXDIM) /* a caller's own side limit (maxval's is 65535) */
+        return rfail(r, "bad header: %s %s exceeds the limit of %ld per side", what, digits, limit);
     if (v > limit)
         return rfail(r, "bad header: %s %s exceeds %ld", what, digits, limit);
     *out = (int)v;
@@ -211,36 +214,61 @@ static int truncated(rd_t *r, uint64_t expected, uint64_t got)
                  (unsigned long long)expected, (unsigned long long)got);
 }
 
+/* Bytes from the current position to the end of a regular file; -1 when
+ * that cannot be known (a pipe). */
+static long long bytes_left(FILE *f)
+{
+    struct stat st;
+    off_t pos = ftello(f);
+    if (pos < 0 || fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode))
+        return -1;
+    return st.st_size > pos ? (long long)(st.st_size - pos) : 0;
+}
+
 /* maxval 0 means float samples (4 bytes, rows stored bottom to top). */
 static int read_pixels(rd_t *r, img_t *img, int w, int h, int ch, int maxval, bool little)
 {
     size_t bps = maxval == 0 ? 4 : maxval > 255 ? 2 : 1;
     size_t per_row = (size_t)w * (size_t)ch, rowbytes = per_row * bps;
+    size_t elem = maxval ? sizeof(uint16_t) : sizeof(float), row_elems = per_row * elem;
     uint64_t expected = (uint64_t)rowbytes * (uint64_t)h;
 
     /* Check the size first when we can, so a lying header cannot make us
-     * allocate gigabytes just to find out the file is short. */
-    struct stat st;
-    off_t pos = ftello(r->f);
-    if (pos >= 0 && fstat(fileno(r->f), &st) == 0 && S_ISREG(st.st_mode)) {
-        uint64_t avail = st.st_size > pos ? (uint64_t)(st.st_size - pos) : 0;
-        if (avail < expected)
-            return truncated(r, expected, avail);
-    }
-    if (expected > SIZE_MAX || img_alloc(img, w, h, ch, maxval) != 0)
+     * allocate gigabytes just to find out the file is short. From a pipe
+     * the samples grow with the rows that arrive (doubling), so there too
+     * memory follows the data, not the header's claim. */
+    long long avail = bytes_left(r->f);
+    if (avail >= 0 && (uint64_t)avail < expected)
+        return truncated(r, expected, (uint64_t)avail);
+    if (expected > SIZE_MAX || (uint64_t)row_elems * (uint64_t)h > SIZE_MAX)
         return rfail(r, "out of memory for a %dx%dx%d image", w, h, ch);
+    int cap = avail >= 0 || h < 64 ? h : 64; /* rows allocated */
+    unsigned char *buf = malloc(row_elems * (size_t)cap);
     unsigned char *row = malloc(rowbytes);
-    if (!row)
-        return rfail(r, "out of memory");
+    if (!buf || !row) {
+        free(buf);
+        free(row);
+        return rfail(r, "out of memory for a %dx%dx%d image", w, h, ch);
+    }
     int rc = 0;
     for (int y = 0; y < h && rc == 0; y++) {
+        if (y == cap) {
+            int ncap = cap > h / 2 ? h : 2 * cap;
+            unsigned char *nb = realloc(buf, row_elems * (size_t)ncap);
+            if (!nb) {
+                rc = rfail(r, "out of memory for a %dx%dx%d image", w, h, ch);
+                break;
+            }
+            buf = nb;
+            cap = ncap;
+        }
         size_t got = fread(row, 1, rowbytes, r->f);
         if (got != rowbytes) {
             int e = errno;
             rc = ferror(r->f) ? rfail(r, "read error: %s", strerror(e))
                               : truncated(r, expected, (uint64_t)rowbytes * (uint64_t)y + got);
         } else if (maxval == 0) {
-            float *out = img->f32 + (size_t)(h - 1 - y) * per_row;
+            float *out = (float *)(void *)(buf + (size_t)y * row_elems); /* file order: flipped below */
             for (size_t i = 0; i < per_row; i++) {
                 uint32_t u = 0;
                 for (unsigned k = 0; k < 4; k++)
@@ -249,7 +277,7 @@ static int read_pixels(rd_t *r, img_t *img, int w, int h, int ch, int maxval, bo
                 memcpy(&out[i], &u, sizeof u);
             }
         } else {
-            uint16_t *out = img->u16 + (size_t)y * per_row;
+            uint16_t *out = (uint16_t *)(void *)(buf + (size_t)y * row_elems);
             for (size_t i = 0; i < per_row && rc == 0; i++) {
                 unsigned v = bps == 2 ? (unsigned)row[2 * i] << 8 | row[2 * i + 1] : row[i];
                 if (v > (unsigned)maxval)
@@ -259,8 +287,29 @@ static int read_pixels(rd_t *r, img_t *img, int w, int h, int ch, int maxval, bo
             }
         }
     }
+    if (rc == 0 && maxval == 0) /* PFM stores the bottom row first */
+        for (int y = 0; y < h / 2; y++) {
+            unsigned char *a = buf + (size_t)y * row_elems, *b = buf + (size_t)(h - 1 - y) * row_elems;
+            for (size_t i = 0; i < row_elems; i++) {
+                unsigned char t = a[i];
+                a[i] = b[i];
+                b[i] = t;
+            }
+        }
     free(row);
-    return rc;
+    if (rc != 0) {
+        free(buf);
+        return rc;
+    }
+    img->width = w;
+    img->height = h;
+    img->channels = ch;
+    img->maxval = maxval;
+    if (maxval)
+        img->u16 = (uint16_t *)(void *)buf;
+    else
+        img->f32 = (float *)(void *)buf;
+    return 0;
 }
 
 static int read_file(rd_t *r, img_t *img)
@@ -284,31 +333,50 @@ static int read_file(rd_t *r, img_t *img)
         return -1;
     int w, h, maxval = 0, ch = (m1 == '6' || m1 == 'F') ? 3 : 1;
     bool little = false;
-    if (read_field(r, pnm, "width", false, IMG_MAXDIM, &w) != 0 ||
-        read_field(r, pnm, "height", false, IMG_MAXDIM, &h) != 0 ||
+    if (read_field(r, pnm, "width", false, r->maxdim, &w) != 0 ||
+        read_field(r, pnm, "height", false, r->maxdim, &h) != 0 ||
         (pnm ? read_field(r, true, "maxval", true, IMG_MAXVAL, &maxval)
              : read_scale(r, &little)) != 0)
         return -1;
     return read_pixels(r, img, w, h, ch, maxval, little);
 }
 
-int img_read(const char *path, img_t *img, char *err, size_t errlen)
+int img_fread(FILE *f, const char *name, img_t *img, int maxdim, char *err, size_t errlen)
+{
+    if (!name)
+        name = "(stream)";
+    if (!img || !f)
+        return set_err(err, errlen, name, "no image to read into");
+    memset(img, 0, sizeof *img);
+    if (err && errlen)
+        err[0] = '\0';
+    if (maxdim < 1 || maxdim > IMG_MAXDIM)
+        maxdim = IMG_MAXDIM;
+    rd_t r = {f, name, err, errlen, maxdim};
+    int rc = read_file(&r, img);
+    if (rc != 0)
+        img_free(img);
+    return rc;
+}
+
+int img_read_max(const char *path, img_t *img, int maxdim, char *err, size_t errlen)
 {
     if (!path)
         path = "(null path)";
     if (!img)
         return set_err(err, errlen, path, "no image to read into");
     memset(img, 0, sizeof *img);
-    if (err && errlen)
-        err[0] = '\0';
-    rd_t r = {fopen(path, "rb"), path, err, errlen};
-    if (!r.f)
+    FILE *f = fopen(path, "rb");
+    if (!f)
         return set_err(err, errlen, path, "cannot open: %s", strerror(errno));
-    int rc = read_file(&r, img);
-    fclose(r.f); /* read-only: nothing to lose if close fails */
-    if (rc != 0)
-        img_free(img);
+    int rc = img_fread(f, path, img, maxdim, err, errlen);
+    fclose(f); /* read-only: nothing to lose if close fails */
     return rc;
+}
+
+int img_read(const char *path, img_t *img, char *err, size_t errlen)
+{
+    return img_read_max(path, img, IMG_MAXDIM, err, errlen);
 }
 
 /* ---- writing ---- */

@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 typedef struct {
     int width, height, channels;   /* channels 1 or 3 */
@@ -27,6 +28,17 @@ typedef struct {
  * negative) are returned as stored. Trailing bytes after the pixels are
  * ignored. */
 int img_read(const char *path, img_t *img, char *err, size_t errlen);
+
+/* The same with width and height at most maxdim (1..65535; the simulator
+ * passes the engine's BLOOM_MAX_DIM), refused as the header is read:
+ * "bad header: width 20000 exceeds the limit of 16384 per side". Neither
+ * allocates more than the file backs: a regular file's size is checked
+ * against the header before any allocation, and from a pipe the samples
+ * grow with the rows that arrive. */
+int img_read_max(const char *path, img_t *img, int maxdim, char *err, size_t errlen);
+/* The same from an open stream, from its current position; name is what
+ * messages call it. The stream is left open. */
+int img_fread(FILE *f, const char *name, img_t *img, int maxdim, char *err, size_t errlen);
 
 /* Writes P5 (channels 1) or P6 (channels 3), 16-bit when maxval > 255.
  * Writers go through "path.tmp-XXXXXX" and rename() over path only when

@@ -45,6 +45,23 @@ typedef struct {
 int sim_frame_alloc(sim_frame_t *f, int w, int h); /* px zeroed; -1 out of memory */
 void sim_frame_free(sim_frame_t *f);
 
+/* ---- what a header may cost ---------------------------------------------
+ * A header is refused as soon as it declares more than BLOOM_MAX_DIM per
+ * side, and no reader allocates the frame a header declares before the
+ * data is there to back it: sizes are checked against the file where that
+ * can be known, else the samples grow with the data that arrives. */
+/* Bytes from f's position to its end (a regular file or a seekable
+ * stream), -1 when that cannot be known (a pipe). */
+long long sim_stream_left(FILE *f);
+/* The rest of f copied into an unnamed temporary file, rewound (the
+ * caller closes it): how a reader that must look ahead or know the size
+ * reads a pipe. NULL with a message in err on failure. */
+FILE *sim_spool(FILE *f, char *err, size_t errlen);
+/* Room for rows 0 .. rows-1 of img's samples (width, height, channels and
+ * maxval set; u16, or f32 when maxval is 0), grown by doubling up to
+ * height; *cap holds the rows allocated (0 at first). -1 out of memory. */
+int sim_img_rows(img_t *img, int rows, int *cap);
+
 /* ---- inputs ------------------------------------------------------------ */
 typedef enum { SIM_RAW_NONE = 0, SIM_RAW_YUYV, SIM_RAW_RGB24, SIM_RAW_GREY, SIM_RAW_RGB565 } sim_raw_fmt_t;
 

@@ -7,6 +7,10 @@
  * maxval < 255) or 16-bit (maxval > 255: BLOOM_AUX_U16, V4L2 Z16 style,
  * rescaled to 0..65535 as round(c * 65535 / maxval) when maxval < 65535).
  * Anything else (RGB, PFM, JPEG, ...) is refused with the file's name. */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* fseeko */
+#endif
+
 #include "sim.h"
 
 #include <errno.h>
@@ -26,20 +30,31 @@ int sim_aux_load(sim_aux_t *a, const char *path, char *err, size_t errlen)
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return sim_errf(err, errlen, "%s: --aux: cannot open: %s", path, strerror(errno));
+    char why[SIM_ERRLEN];
+    /* the magic is looked at and then read again: a pipe is spooled first */
+    if (sim_stream_left(fp) < 0) {
+        FILE *t = sim_spool(fp, why, sizeof why);
+        fclose(fp);
+        if (!t)
+            return sim_errf(err, errlen, "%s: --aux: %s", path, why);
+        fp = t;
+    }
     unsigned char m[8];
     size_t n = fread(m, 1, sizeof m, fp);
     img_t im;
-    char why[SIM_ERRLEN];
     int rc;
     memset(&im, 0, sizeof im);
-    if (n >= 2 && m[0] == 'P' && (m[1] == '5' || m[1] == '6' || m[1] == 'f' || m[1] == 'F')) {
+    if (fseeko(fp, 0, SEEK_SET) != 0) {
         fclose(fp);
-        rc = img_read(path, &im, why, sizeof why);
+        return sim_errf(err, errlen, "%s: --aux: cannot read: %s", path, strerror(errno));
+    }
+    if (n >= 2 && m[0] == 'P' && (m[1] == '5' || m[1] == '6' || m[1] == 'f' || m[1] == 'F')) {
+        rc = img_fread(fp, path, &im, BLOOM_MAX_DIM, why, sizeof why);
+        fclose(fp);
         size_t pl = strlen(path); /* imgio names the path itself: keep what is wrong */
         if (rc && !strncmp(why, path, pl) && !strncmp(why + pl, ": ", 2))
             memmove(why, why + pl + 2, strlen(why + pl + 2) + 1);
     } else if (n == 8 && !memcmp(m, "\x89PNG\r\n\x1a\n", 8)) {
-        rewind(fp);
         rc = sim_png_read(fp, &im, why, sizeof why);
         fclose(fp);
     } else {

@@ -1,13 +1,18 @@
 /* bloom_sim pixel rules: decoded images to frames, frames to engine formats,
  * engine output to display codes, BT.601 Y'CbCr. The rules are documented in
- * sim/docs/simulator.md; every integer rounding is round half up. */
+ * sim/docs/simulator.md; every integer rounding is round half up. Also the
+ * readers' shared guards on what a header may cost (sizes, pipes, rows
+ * that grow with the data). */
 #include "sim.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 
 #include "bloom_model.h"
 
@@ -49,6 +54,70 @@ void sim_frame_free(sim_frame_t *f)
         free(f->px);
         memset(f, 0, sizeof *f);
     }
+}
+
+/* ---- what a header may cost ------------------------------------------- */
+
+long long sim_stream_left(FILE *f)
+{
+    struct stat st;
+    off_t pos = ftello(f), end;
+    if (pos < 0)
+        return -1;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode))
+        return st.st_size > pos ? (long long)(st.st_size - pos) : 0;
+    /* not a file descriptor (fmemopen): seekable streams tell their end */
+    if (fseeko(f, 0, SEEK_END) != 0 || (end = ftello(f)) < 0 || fseeko(f, pos, SEEK_SET) != 0)
+        return -1;
+    return end > pos ? (long long)(end - pos) : 0;
+}
+
+FILE *sim_spool(FILE *f, char *err, size_t errlen)
+{
+    FILE *t = tmpfile();
+    char buf[16384];
+    size_t n;
+    if (!t) {
+        sim_errf(err, errlen, "cannot create a temporary file: %s", strerror(errno));
+        return NULL;
+    }
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        if (fwrite(buf, 1, n, t) != n) {
+            sim_errf(err, errlen, "cannot write a temporary file: %s", strerror(errno));
+            fclose(t);
+            return NULL;
+        }
+    if (ferror(f) || fflush(t) != 0 || fseeko(t, 0, SEEK_SET) != 0) {
+        sim_errf(err, errlen, "read error: %s", strerror(errno));
+        fclose(t);
+        return NULL;
+    }
+    return t;
+}
+
+int sim_img_rows(img_t *img, int rows, int *cap)
+{
+    if (rows <= *cap)
+        return 0;
+    if (rows > img->height)
+        return -1;
+    const size_t row = (size_t)img->width * (size_t)img->channels *
+                       (img->maxval ? sizeof(uint16_t) : sizeof(float));
+    int n = *cap < 16 ? 16 : *cap;
+    while (n < rows)
+        n = n > img->height / 2 ? img->height : 2 * n;
+    if (n > img->height)
+        n = img->height;
+    void *p = realloc(img->maxval ? (void *)img->u16 : (void *)img->f32, row * (size_t)n);
+    if (!p)
+        return -1;
+    memset((char *)p + row * (size_t)*cap, 0, row * (size_t)(n - *cap));
+    if (img->maxval)
+        img->u16 = p;
+    else
+        img->f32 = p;
+    *cap = n;
+    return 0;
 }
 
 /* ---- one sample between ranges ---------------------------------------- */

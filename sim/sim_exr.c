@@ -48,6 +48,7 @@ typedef struct {
     exr_decode_pipeline_t dec;
     int started;       /* dec initialized */
     int nch, w, h;
+    int cap;           /* image rows allocated so far */
     img_t *img;
 } exr_rd_t;
 
@@ -62,9 +63,12 @@ static int slot_of(const exr_rd_t *r, const char *name)
 static int decode_chunk(exr_rd_t *r, const exr_chunk_info_t *ci, int px, int py, char *err,
                         size_t errlen)
 {
-    if (px < 0 || py < 0 || ci->width < 1 || ci->height < 1 || px + ci->width > r->w ||
-        py + ci->height > r->h)
+    if (px < 0 || py < 0 || ci->width < 1 || ci->height < 1 || (int64_t)px + ci->width > r->w ||
+        (int64_t)py + ci->height > r->h)
         return sim_errf(err, errlen, "OpenEXR chunk %d lies outside the data window", ci->idx);
+    /* chunks come top to bottom: the image grows with the rows they cover */
+    if (sim_img_rows(r->img, py + ci->height, &r->cap))
+        return sim_errf(err, errlen, "out of memory for a %dx%d image", r->w, r->h);
     exr_result_t rv = r->started ? exr_decoding_update(r->ctx, 0, ci, &r->dec)
                                  : exr_decoding_initialize(r->ctx, 0, ci, &r->dec);
     if (rv != EXR_ERR_SUCCESS)
@@ -104,9 +108,13 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
     if (st != EXR_STORAGE_SCANLINE && st != EXR_STORAGE_TILED)
         return sim_errf(err, errlen, "deep OpenEXR data not supported");
     const int64_t w = (int64_t)dw.max.x - dw.min.x + 1, h = (int64_t)dw.max.y - dw.min.y + 1;
-    if (w < 1 || h < 1 || w > 65535 || h > 65535)
-        return sim_errf(err, errlen, "OpenEXR data window %lldx%lld not supported (1..65535)",
-                        (long long)w, (long long)h);
+    if (w < 1 || h < 1)
+        return sim_errf(err, errlen, "OpenEXR data window %lldx%lld is empty", (long long)w,
+                        (long long)h);
+    if (w > BLOOM_MAX_DIM || h > BLOOM_MAX_DIM)
+        return sim_errf(err, errlen,
+                        "OpenEXR data window %lldx%lld is larger than the engine's limit of %d per side",
+                        (long long)w, (long long)h, BLOOM_MAX_DIM);
     int has[4] = {0, 0, 0, 0}; /* R G B Y */
     char names[256] = "";
     for (int i = 0; i < cl->num_channels; i++) {
@@ -127,8 +135,10 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
                         names[0] ? names : "none");
     r->w = (int)w;
     r->h = (int)h;
-    if (img_alloc(r->img, r->w, r->h, r->nch, 0))
-        return sim_errf(err, errlen, "out of memory for a %dx%d image", r->w, r->h);
+    r->img->width = r->w;
+    r->img->height = r->h;
+    r->img->channels = r->nch;
+    r->img->maxval = 0; /* floats; the samples come with the chunks (decode_chunk) */
     exr_chunk_info_t ci;
     if (st == EXR_STORAGE_SCANLINE) {
         int32_t lines;
@@ -137,7 +147,10 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
         for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
             if ((rv = exr_read_scanline_chunk_info(r->ctx, 0, (int)y, &ci)))
                 return fail(rv, "chunk read", err, errlen);
-            if (decode_chunk(r, &ci, ci.start_x - dw.min.x, ci.start_y - dw.min.y, err, errlen))
+            /* the chunk's corner in the image, refused (-1) when outside */
+            const int64_t dx = (int64_t)ci.start_x - dw.min.x, dy = (int64_t)ci.start_y - dw.min.y;
+            if (decode_chunk(r, &ci, dx < 0 || dx > r->w ? -1 : (int)dx, dy < 0 || dy > r->h ? -1 : (int)dy,
+                             err, errlen))
                 return -1;
         }
         return 0;
@@ -145,11 +158,13 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
     int32_t tw, th;
     if ((rv = exr_get_tile_sizes(r->ctx, 0, 0, 0, &tw, &th)) || tw < 1 || th < 1)
         return fail(rv, "tile header", err, errlen);
-    for (int ty = 0; ty < (r->h + th - 1) / th; ty++)
-        for (int tx = 0; tx < (r->w + tw - 1) / tw; tx++) {
+    /* in 64 bits: the library bounds tile sizes, this loop need not trust it */
+    const int64_t ntx = ((int64_t)r->w + tw - 1) / tw, nty = ((int64_t)r->h + th - 1) / th;
+    for (int ty = 0; ty < nty; ty++)
+        for (int tx = 0; tx < ntx; tx++) {
             if ((rv = exr_read_tile_chunk_info(r->ctx, 0, tx, ty, 0, 0, &ci)))
                 return fail(rv, "tile read", err, errlen);
-            if (decode_chunk(r, &ci, tx * tw, ty * th, err, errlen))
+            if (decode_chunk(r, &ci, (int)((int64_t)tx * tw), (int)((int64_t)ty * th), err, errlen))
                 return -1;
         }
     return 0;

@@ -50,21 +50,39 @@ static int read_body(struct jpeg_decompress_struct *ci, jerr_t *e, FILE *f, img_
     ci->client_data = e;
     jpeg_stdio_src(ci, f);
     (void)jpeg_read_header(ci, TRUE);
+    /* Refused before jpeg_start_decompress, which sizes libjpeg's buffers
+     * (for a progressive file the whole image's coefficients) by the header. */
+    if (ci->image_width > BLOOM_MAX_DIM || ci->image_height > BLOOM_MAX_DIM)
+        return sim_errf(e->err, e->errlen, "JPEG is %ux%u: larger than the engine's limit of %d per side",
+                        (unsigned)ci->image_width, (unsigned)ci->image_height, BLOOM_MAX_DIM);
     if (ci->jpeg_color_space == JCS_CMYK || ci->jpeg_color_space == JCS_YCCK)
         return sim_errf(e->err, e->errlen, "CMYK JPEG not supported");
+    if (ci->num_components != 1 && ci->num_components != 3)
+        return sim_errf(e->err, e->errlen, "JPEG with %d components not supported (1 or 3 are)",
+                        ci->num_components);
     ci->out_color_space = ci->num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
     (void)jpeg_start_decompress(ci);
     const JDIMENSION w = ci->output_width, h = ci->output_height;
     const int ch = ci->output_components;
-    if (w > 65535 || h > 65535 || (ch != 1 && ch != 3))
+    if (w < 1 || h < 1 || w > BLOOM_MAX_DIM || h > BLOOM_MAX_DIM || (ch != 1 && ch != 3))
         return sim_errf(e->err, e->errlen, "JPEG layout not supported (%ux%u, %d components)",
                         (unsigned)w, (unsigned)h, ch);
-    if (!(*row = malloc((size_t)w * (size_t)ch)) || img_alloc(img, (int)w, (int)h, ch, 255))
+    img->width = (int)w;
+    img->height = (int)h;
+    img->channels = ch;
+    img->maxval = 255;
+    if (!(*row = malloc((size_t)w * (size_t)ch)))
         return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w,
                         (unsigned)h);
+    /* the samples grow with the rows decoded: a short file that claims a
+     * large image fails at its end having allocated what it delivered */
+    int cap = 0;
     while (ci->output_scanline < h) {
         JSAMPROW r = *row;
         const size_t y = ci->output_scanline;
+        if (sim_img_rows(img, (int)y + 1, &cap))
+            return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w,
+                            (unsigned)h);
         if (jpeg_read_scanlines(ci, &r, 1) != 1)
             return sim_errf(e->err, e->errlen, "JPEG decode failed at row %zu", y);
         for (size_t i = 0; i < (size_t)w * (size_t)ch; i++)

@@ -30,6 +30,7 @@ struct sim_source {
     size_t frame_bytes;     /* Y4M payload or raw frame, bytes */
     size_t stride;          /* raw row bytes */
     unsigned char *buf;
+    size_t cap;             /* bytes allocated at buf */
     size_t errlen;          /* of the caller's err buffer */
     char desc[160];
 };
@@ -244,6 +245,9 @@ static int raw_setup(sim_source_t *s, off_t size, int regular, char *err)
     const int bpp = s->o.raw_fmt == SIM_RAW_RGB24 ? 3 : s->o.raw_fmt == SIM_RAW_GREY ? 1 : 2;
     s->w = s->o.raw_w;
     s->h = s->o.raw_h;
+    if (s->w < 1 || s->h < 1 || s->w > BLOOM_MAX_DIM || s->h > BLOOM_MAX_DIM)
+        return src_err(s, 0, err, "raw frames of %dx%d: each side must be 1..%d (the engine's limit)",
+                       s->w, s->h, BLOOM_MAX_DIM);
     if (s->o.raw_fmt == SIM_RAW_YUYV && s->w % 2)
         return src_err(s, 0, err, "YUYV needs an even width (got %d)", s->w);
     s->stride = s->o.raw_stride ? (size_t)s->o.raw_stride : (size_t)s->w * (size_t)bpp;
@@ -382,9 +386,15 @@ int sim_source_open(sim_source_t **out, const char *path, const sim_input_opts_t
             s->f = NULL;
         }
     }
-    if (rc == 0 && (s->kind == K_Y4M || s->kind == K_RAW) &&
-        !(s->buf = malloc(s->frame_bytes ? s->frame_bytes : 1)))
-        rc = src_err(s, 0, err, "out of memory");
+    /* A regular file's frames are checked against its size above: the
+     * frame buffer is allocated now. From a pipe it grows as the data comes
+     * (read_frame), so a header that claims a huge frame costs nothing the
+     * stream does not deliver. */
+    if (rc == 0 && regular && (s->kind == K_Y4M || s->kind == K_RAW)) {
+        s->cap = s->frame_bytes ? s->frame_bytes : 1;
+        if (!(s->buf = malloc(s->cap)))
+            rc = src_err(s, 0, err, "out of memory");
+    }
     if (rc) {
         sim_source_close(s);
         return -1;
@@ -406,7 +416,7 @@ static int read_image(sim_source_t *s, sim_frame_t *f, char *err)
     char why[SIM_ERRLEN];
     int rc;
     if (s->kind == K_PNM) {
-        rc = img_read(s->path, &im, why, sizeof why);
+        rc = img_read_max(s->path, &im, BLOOM_MAX_DIM, why, sizeof why);
         /* imgio's message starts with the path: keep only what is wrong */
         size_t pl = strlen(s->path);
         if (rc && !strncmp(why, s->path, pl) && !strncmp(why + pl, ": ", 2))
@@ -421,14 +431,8 @@ static int read_image(sim_source_t *s, sim_frame_t *f, char *err)
                               : sim_jpeg_read(fp, &im, why, sizeof why);
         fclose(fp);
     }
-    if (rc)
+    if (rc) /* each decoder refuses a side above BLOOM_MAX_DIM as it reads the header */
         return src_err(s, 0, err, "%s", why);
-    if (im.width > BLOOM_MAX_DIM || im.height > BLOOM_MAX_DIM) {
-        src_err(s, 0, err, "%dx%d is larger than the engine's limit of %d per side", im.width,
-                im.height, BLOOM_MAX_DIM);
-        img_free(&im);
-        return -1;
-    }
     const char *what = s->kind == K_PNM ? (im.f32 ? "PFM" : im.channels == 1 ? "PGM" : "PPM")
                                         : kind_name(s->kind);
     if (im.f32)
@@ -444,6 +448,32 @@ static int read_image(sim_source_t *s, sim_frame_t *f, char *err)
     if (rc)
         return src_err(s, 0, err, "out of memory");
     return 0;
+}
+
+/* Reads up to one frame's bytes into s->buf, growing it (doubling, from
+ * 64 KiB) while the stream delivers; returns the bytes read, or -1 out of
+ * memory. */
+static long long read_frame(sim_source_t *s)
+{
+    size_t got = 0;
+    while (got < s->frame_bytes) {
+        if (got == s->cap) {
+            size_t n = s->cap < 65536 ? 65536 : s->cap * 2;
+            if (n > s->frame_bytes || n < s->cap)
+                n = s->frame_bytes;
+            unsigned char *b = realloc(s->buf, n);
+            if (!b)
+                return -1;
+            s->buf = b;
+            s->cap = n;
+        }
+        size_t want = (s->cap < s->frame_bytes ? s->cap : s->frame_bytes) - got;
+        size_t n = fread(s->buf + got, 1, want, s->f);
+        got += n;
+        if (n < want)
+            break; /* end of the stream or an error: the caller tells which */
+    }
+    return (long long)got;
 }
 
 int sim_source_read(sim_source_t *s, sim_frame_t *f, char *err, size_t errlen)
@@ -465,7 +495,10 @@ int sim_source_read(sim_source_t *s, sim_frame_t *f, char *err, size_t errlen)
             return r;
         }
     }
-    size_t got = fread(s->buf, 1, s->frame_bytes, s->f);
+    const long long rd = read_frame(s);
+    if (rd < 0)
+        return src_err(s, s->next, err, "out of memory for a frame of %zu bytes", s->frame_bytes);
+    const size_t got = (size_t)rd;
     if (got != s->frame_bytes) {
         if (ferror(s->f))
             return src_err(s, s->next, err, "read error: %s", strerror(errno));

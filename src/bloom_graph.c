@@ -361,6 +361,8 @@ bloom_status_t bloom_graph_push(bloom_graph_t *g, const void *src_row, const voi
 {
     if (!src_row || (g->aux_bpp && !aux_row))
         return g->aux_bpp && !aux_row ? BLOOM_E_AUX : BLOOM_E_NULL;
+    if (!g->aux_bpp && aux_row) /* as the default pipeline: a plane the preset does not read */
+        return BLOOM_E_AUX;
     if (g->src_n >= g->h[0])
         return BLOOM_E_STATE;
     const int r = g->src_n, slot = r % g->src_cap;

@@ -67,7 +67,7 @@ bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
     if (cfg->levels >= 1 && cfg->levels <= BLOOM_MAX_LEVELS)
         d.levels = cfg->levels; /* cod's default weights follow the depth */
     d.flags = cfg->flags & (uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                                      BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD);
+                                      BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2);
     d.preset = p;
 #if BLOOM_USE_GRAPH
     if (p != BLOOM_PRESET_UNITY)

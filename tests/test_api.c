@@ -199,9 +199,35 @@ static void test_latency(void)
            "the bound met by some row in each of %d frames taller than it\n", checked, tight);
 }
 
+/* bloom_config_preset keeps the flags other than the preset's own (the
+ * fuzzing found BLOOM_FLAG_NO_AVX2 dropped), and a preset that reads no
+ * plane refuses an aux row, as the default pipeline does. */
+static void test_preset_flags(void)
+{
+    const uint32_t keep = BLOOM_FLAG_NO_AVX2 | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_LINEAR | BLOOM_FLAG_NO_SKIP |
+                          BLOOM_FLAG_COPY_SOURCE | BLOOM_FLAG_DEBUG_VIEW;
+    uint8_t row[16 * 3] = {0};
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        bloom_config_t c;
+        bloom_config_default(&c, 16, 8);
+        c.flags = keep;
+        if (bloom_config_preset(&c, (bloom_preset_t)p) != BLOOM_OK)
+            continue;
+        CHECKF((c.flags & keep) == keep, "%s: flags %#x", bloom_preset_name((bloom_preset_t)p), (unsigned)c.flags);
+        if (bloom_preset_params((bloom_preset_t)p) & BLOOM_PARAM_AUX)
+            continue;
+        c.flags &= ~(uint32_t)BLOOM_FLAG_COPY_SOURCE;
+        bloom_t *b = make(&c);
+        if (b)
+            CHECKF(bloom_push_row_aux(b, row, row) == BLOOM_E_AUX, "%s: aux row taken",
+                   bloom_preset_name((bloom_preset_t)p));
+    }
+}
+
 int main(void)
 {
     test_null();
+    test_preset_flags();
     test_alias();
     test_latency();
     return harness_finish();

@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 
 #include "cam.h"
 
@@ -19,28 +21,34 @@ static int fail(char *err, size_t errlen, const char *fmt, ...)
     return -1;
 }
 
-/* The next header number (whitespace and # comments skipped); -1 if none. */
-static long header_num(FILE *f)
+static int is_space(int c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
+
+/* The next header number, by the rules of the simulator's reader
+ * (sim/imgio.c), so that both tools take the same files: whitespace and
+ * '#' comments (to CR or LF) before it; after it one whitespace byte, or a
+ * comment unless it is the last (maxval: the samples follow one
+ * whitespace byte). -1 if none. */
+static long header_num(FILE *f, int last)
 {
     int ch = fgetc(f);
-    for (;;) {
+    while (is_space(ch) || ch == '#') {
         if (ch == '#')
-            while (ch != EOF && ch != '\n')
+            while (ch != EOF && ch != '\n' && ch != '\r')
                 ch = fgetc(f);
-        else if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n')
-            ch = fgetc(f);
-        else
-            break;
+        ch = ch == EOF ? EOF : fgetc(f);
     }
     long v = 0;
     int digits = 0;
-    while (ch >= '0' && ch <= '9' && v < 1000000) {
-        v = v * 10 + (ch - '0');
-        digits++;
-        ch = fgetc(f);
-    }
-    if (!digits || !(ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n'))
-        return -1; /* one whitespace byte ends each number (the last one before the data) */
+    for (; ch >= '0' && ch <= '9'; ch = fgetc(f), digits++)
+        if ((v = v * 10 + (ch - '0')) > 1000000)
+            v = 1000000; /* saturate: larger than any size or maxval taken */
+    if (ch == '#' && !last && digits)
+        ungetc(ch, f);
+    else if (!digits || !is_space(ch))
+        return -1;
     return v;
 }
 
@@ -53,8 +61,15 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
         return fail(err, errlen, "--aux %s: %s", path, strerror(errno));
     char m[2];
     long pw = -1, ph = -1, mv = -1;
-    if (fread(m, 1, 2, f) != 2 || m[0] != 'P' || m[1] != '5' || (pw = header_num(f)) < 1 ||
-        (ph = header_num(f)) < 1 || (mv = header_num(f)) < 1 || mv > 65535) {
+    /* the magic, then whitespace or a comment */
+    int ok = fread(m, 1, 2, f) == 2 && m[0] == 'P' && m[1] == '5';
+    if (ok) {
+        const int c = fgetc(f);
+        ok = is_space(c) || (c == '#' && ungetc(c, f) != EOF);
+    }
+    ok = ok && (pw = header_num(f, 0)) >= 1 && (ph = header_num(f, 0)) >= 1 &&
+         (mv = header_num(f, 1)) >= 1 && mv <= 65535;
+    if (!ok) {
         fclose(f);
         return fail(err, errlen,
                     "--aux %s: not a binary PGM (P5, maxval 1..65535): bloom_cam reads the aux "
@@ -70,6 +85,17 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
     }
     const int wide = mv > 255, in_bps = wide ? 2 : 1;
     const size_t n = (size_t)w * (size_t)h;
+    /* a regular file too short for the plane is refused before allocating it */
+    struct stat st;
+    const off_t at = ftello(f);
+    const unsigned long long need = (unsigned long long)n * (unsigned)in_bps;
+    if (at >= 0 && fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) &&
+        (st.st_size < at || (unsigned long long)(st.st_size - at) < need)) {
+        const unsigned long long have =
+            st.st_size > at ? (unsigned long long)(st.st_size - at) / (unsigned)in_bps : 0;
+        fclose(f);
+        return fail(err, errlen, "--aux %s: truncated: %llu of %zu samples", path, have, n);
+    }
     uint8_t *raw = malloc(n * (size_t)in_bps), *out = malloc(n * (size_t)in_bps);
     if (!raw || !out) {
         free(raw);

@@ -1,10 +1,13 @@
 /* bloom_sim tests: the command line (usage errors, several inputs, the
  * progress line on a terminal) and malformed inputs: each must exit 1 with
  * a message naming the file and the frame, and leave an existing output
- * file untouched and no temp file behind. */
+ * file untouched and no temp file behind. Headers that claim more than the
+ * engine takes, or than the file holds, must be refused before the frame
+ * is allocated (test_limits). */
 #include "harness.h"
 #include "simtest_cases.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -54,6 +57,135 @@ static unsigned char *slurp(const char *name, size_t *len)
     unsigned char *b = st_read_file(st_path(name), len);
     CHECK(b != NULL);
     return b;
+}
+
+/* ---- what a header may cost ------------------------------------------------ */
+
+static void be32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24), p[1] = (unsigned char)(v >> 16), p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+}
+
+static uint32_t crc32_of(const unsigned char *p, size_t n)
+{
+    uint32_t c = 0xFFFFFFFFu;
+    for (size_t i = 0; i < n; i++) {
+        c ^= p[i];
+        for (int k = 0; k < 8; k++)
+            c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return ~c;
+}
+
+/* Runs the (sanitized) tool on path with every allocation above 64 MiB
+ * fatal (ASan exits 86 then): a header that claims a huge frame must be
+ * refused with status 1 and "frame 0: " and what, having allocated no
+ * more than the data backs. */
+static void expect_refused(const char *label, const char *in, const char *path, const char *what,
+                           const char *const *extra)
+{
+    const char *old = getenv("ASAN_OPTIONS");
+    char *keep = old ? strdup(old) : NULL, opts[512];
+    snprintf(opts, sizeof opts, "%s%smax_allocation_size_mb=64:allocator_may_return_null=0:exitcode=86",
+             old ? old : "", old && *old ? ":" : "");
+    setenv("ASAN_OPTIONS", opts, 1);
+    const char *args[12] = {in ? "-" : path, "-o", st_path("keep.ppm")};
+    for (int i = 0; extra && extra[i] && i < 8; i++)
+        args[3 + i] = extra[i];
+    st_run(&R, tool, in, args);
+    if (keep)
+        setenv("ASAN_OPTIONS", keep, 1);
+    else
+        unsetenv("ASAN_OPTIONS");
+    free(keep);
+    expect_failure(label, in ? "(stdin)" : path, 0, what, "keep.ppm", NULL);
+}
+
+static void test_limits(const uint8_t *px, int w, int h)
+{
+    size_t len;
+    unsigned char *b;
+    plant("keep.ppm", NULL);
+    /* the known finding: a 368-byte JPEG that claims 13362 x 64831 made
+     * bloom_sim allocate about 5 GB before anything else */
+    CHECK(st_write_jpeg(st_path("l.jpg"), px, w, h, 3, 90) == 0);
+    b = st_read_file(st_path("l.jpg"), &len);
+    unsigned char *sof = b ? find(b, len, "\xFF\xC0", 2) : NULL;
+    CHECK(sof != NULL);
+    if (sof) {
+        sof[5] = 64831 >> 8, sof[6] = 64831 & 255, sof[7] = 13362 >> 8, sof[8] = 13362 & 255;
+        CHECK(st_write_file(st_path("huge.jpg"), b, len) == 0);
+        expect_refused("JPEG 13362x64831", NULL, st_path("huge.jpg"),
+                       "JPEG is 13362x64831: larger than the engine's limit of 16384 per side", NULL);
+        sof[5] = sof[7] = 16384 >> 8, sof[6] = sof[8] = 0; /* what the engine takes, the data short */
+        CHECK(st_write_file(st_path("short.jpg"), b, len) == 0);
+        expect_refused("JPEG 16384x16384, data short", NULL, st_path("short.jpg"), "JPEG", NULL);
+    }
+    free(b);
+    /* PNG: above the limit, and a 16384 x 16384 header over a few hundred bytes */
+    CHECK(st_write_png(st_path("l.png"), px, w, h, 3, 0) == 0);
+    b = st_read_file(st_path("l.png"), &len);
+    CHECK(b && len > 33 && !memcmp(b + 12, "IHDR", 4));
+    if (b && len > 33) {
+        be32(b + 16, 20000), be32(b + 20, 8), be32(b + 29, crc32_of(b + 12, 17));
+        CHECK(st_write_file(st_path("huge.png"), b, len) == 0);
+        expect_refused("PNG 20000x8", NULL, st_path("huge.png"),
+                       "PNG is 20000x8: larger than the engine's limit of 16384 per side", NULL);
+        be32(b + 16, 16384), be32(b + 20, 16384), be32(b + 29, crc32_of(b + 12, 17));
+        CHECK(st_write_file(st_path("short.png"), b, len) == 0);
+        expect_refused("PNG 16384x16384, data short", NULL, st_path("short.png"), "truncated", NULL);
+    }
+    free(b);
+    /* PPM/PGM/PFM: above the limit, and a short body */
+    static const struct {
+        const char *name, *data, *what;
+    } pnm[] = {{"huge.ppm", "P6\n16385 2\n255\n......", "width 16385 exceeds the limit of 16384"},
+               {"huge.pgm", "P5\n2 20000\n255\n....", "height 20000 exceeds the limit of 16384"},
+               {"short.ppm", "P6\n16384 16384\n255\n........", "truncated"},
+               {"short.pfm", "PF\n16384 16384\n-1.0\n............", "truncated"}};
+    for (size_t i = 0; i < sizeof pnm / sizeof pnm[0]; i++) {
+        CHECK(st_write_file(st_path(pnm[i].name), pnm[i].data, strlen(pnm[i].data)) == 0);
+        expect_refused(pnm[i].name, NULL, st_path(pnm[i].name), pnm[i].what, NULL);
+    }
+    /* OpenEXR: the data window above the limit, and 16384 x 16384 over a small file */
+    if (st_exr_built()) {
+        float f[8 * 8 * 3] = {0};
+        CHECK(st_write_exr(st_path("l.exr"), f, 8, 8, 1) == 0);
+        b = st_read_file(st_path("l.exr"), &len);
+        unsigned char *dw = b ? find(b, len, "dataWindow\0box2i\0", 17) : NULL;
+        CHECK(dw != NULL);
+        if (dw) {
+            unsigned char *v = dw + 17 + 4 + 8; /* xMax, yMax: little-endian */
+            v[0] = 0x1F, v[1] = 0x4E, v[2] = v[3] = 0; /* 19999: 20000 wide */
+            CHECK(st_write_file(st_path("huge.exr"), b, len) == 0);
+            expect_refused("EXR 20000x8", NULL, st_path("huge.exr"),
+                           "OpenEXR data window 20000x8 is larger than the engine's limit", NULL);
+            v[0] = v[4] = 0xFF, v[1] = v[5] = 0x3F; /* 16383, 16383 */
+            CHECK(st_write_file(st_path("short.exr"), b, len) == 0);
+            expect_refused("EXR 16384x16384, data short", NULL, st_path("short.exr"), "OpenEXR", NULL);
+        }
+        free(b);
+    }
+    /* streams: a Y4M header claiming 16384 x 16384 4:4:4 (805 MB frames),
+     * and raw frames of 16384 rows of 1 MiB, with a few hundred bytes */
+    static const char y4m[] = "YUV4MPEG2 W16384 H16384 C444\nFRAME\n................................";
+    CHECK(st_write_file(st_path("huge.y4m"), y4m, sizeof y4m - 1) == 0);
+    expect_refused("Y4M 16384x16384 on stdin", st_path("huge.y4m"), NULL, "truncated", NULL);
+    expect_refused("Y4M 16384x16384", NULL, st_path("huge.y4m"), "truncated", NULL);
+    expect_refused("raw stride 1 MiB x 16384 on stdin", st_path("huge.y4m"), NULL, "partial frame",
+                   ARGS("--raw-size", "16384x16384", "--raw-format", "grey", "--raw-stride", "1048576"));
+    /* the aux plane */
+    CHECK(write_ppm8(st_path("in.ppm"), px, w, h, 3) == 0);
+    CHECK(st_write_file(st_path("huge_aux.pgm"), "P5\n16384 16384\n255\n....", 24) == 0);
+    RUN(NULL, st_path("in.ppm"), "--preset", "attenuation", "--aux", st_path("huge_aux.pgm"), "-o",
+        st_path("keep.ppm"));
+    CHECKF(R.status == 1 && strstr(R.err, "--aux: truncated"), "huge aux: %d %s", R.status, R.err);
+    CHECK(st_write_file(st_path("wide_aux.pgm"), "P5\n20000 1\n255\n....", 19) == 0);
+    RUN(NULL, st_path("in.ppm"), "--preset", "attenuation", "--aux", st_path("wide_aux.pgm"), "-o",
+        st_path("keep.ppm"));
+    CHECKF(R.status == 1 && strstr(R.err, "--aux: bad header: width 20000 exceeds the limit of 16384"),
+           "wide aux: %d %s", R.status, R.err);
 }
 
 void test_errors(void)
@@ -179,6 +311,8 @@ void test_errors(void)
         RUN(NULL, st_path("cut.exr"), "-o", st_path("keep.ppm"));
         expect_failure("truncated EXR", st_path("cut.exr"), 0, "OpenEXR", "keep.ppm", NULL);
     }
+
+    test_limits(px, w, h);
 
     /* in a sequence, the frame of the sequence is named too */
     CHECK(write_ppm8(st_path("ok.ppm"), px, w, h, 3) == 0);
