@@ -18,12 +18,12 @@ extern "C" {
 #endif
 
 #define BLOOM_FRAC_BITS 16
-#define BLOOM_ONE (1u << BLOOM_FRAC_BITS)         /* linear 1.0 in Q16.16 */
-#define BLOOM_MAX_LINEAR ((1u << 24) - 1u)        /* largest linear sample, 255.99998 */
-#define BLOOM_Q16(x) ((uint32_t)((x) * 65536.0 + 0.5)) /* for constants */
+#define BLOOM_ONE (1u << BLOOM_FRAC_BITS)            /* linear 1.0 in Q16.16 */
+#define BLOOM_MAX_LINEAR ((1u << 24) - 1u)           /* largest linear sample, 255.99998 */
+#define BLOOM_Q16(x) ((uint32_t)((x)*65536.0 + 0.5)) /* for constants */
 #define BLOOM_MAX_LEVELS 16
 #define BLOOM_MAX_DIM 16384
-#define BLOOM_MAX_THRESHOLD (1u << 24)            /* 256.0 */
+#define BLOOM_MAX_THRESHOLD (1u << 24)               /* 256.0 */
 #define BLOOM_MAX_INTENSITY (10u << BLOOM_FRAC_BITS) /* gamma-space 10.0 */
 #define BLOOM_WORKSPACE_ALIGN 8
 
@@ -44,8 +44,8 @@ typedef enum {
  * the arm preset. Rows are (pointer, stride) like the frame's. */
 typedef enum {
     BLOOM_AUX_NONE = 0,
-    BLOOM_AUX_U8,   /* one byte per pixel (R8 / GREY) */
-    BLOOM_AUX_U16   /* one native uint16_t per pixel (V4L2 Z16) */
+    BLOOM_AUX_U8, /* one byte per pixel (R8 / GREY) */
+    BLOOM_AUX_U16 /* one native uint16_t per pixel (V4L2 Z16) */
 } bloom_aux_format_t;
 
 typedef enum {
@@ -90,55 +90,55 @@ typedef enum {
     BLOOM_E_STATE = -12,
     BLOOM_E_INTERNAL = -13,
     BLOOM_E_TOO_BIG = -14,
-    BLOOM_E_PRESET = -15,    /* unknown preset, or compiled out */
+    BLOOM_E_PRESET = -15, /* unknown preset, or compiled out */
     BLOOM_E_STRENGTH = -16,
     BLOOM_E_PASSES = -17,
     BLOOM_E_ATTENUATION = -18,
     BLOOM_E_WEIGHT = -19,
     BLOOM_E_TINT = -20,
-    BLOOM_E_AUX = -21,       /* aux plane missing, unexpected or of an unknown format */
-    BLOOM_E_ALIAS = -22      /* destination overlaps source rows still needed: in place
+    BLOOM_E_AUX = -21,  /* aux plane missing, unexpected or of an unknown format */
+    BLOOM_E_ALIAS = -22 /* destination overlaps source rows still needed: in place
                                 needs the same format and stride */
 } bloom_status_t;
 
 /* Parameters of the presets other than the default; a preset ignores the
  * ones it does not name. All Q16.16. */
 typedef struct {
-    uint32_t strength;       /* gamedev: scene + strength*bloom, 0 .. 16.0;
+    uint32_t strength;                       /* gamedev: scene + strength*bloom, 0 .. 16.0;
                                 arm with BLOOM_FLAG_BAKED: map strength 0 .. 16.0 */
-    int passes;              /* xna: Kawase passes P, 1 .. 8 */
-    uint32_t attenuation;    /* attenuation: a, 0 .. 1.0 */
-    uint32_t max_reduction;  /* attenuation: r, 0 .. 1.0 */
+    int passes;                              /* xna: Kawase passes P, 1 .. 8 */
+    uint32_t attenuation;                    /* attenuation: a, 0 .. 1.0 */
+    uint32_t max_reduction;                  /* attenuation: r, 0 .. 1.0 */
     uint32_t level_weight[BLOOM_MAX_LEVELS]; /* cod: blend factor c_k, 0 .. 1.0, of the
                                 upsample into level k (k = 0: the final composite) */
-    uint32_t tint[3];        /* cod and arm: glow colour R, G, B, 0 .. 1.0 */
+    uint32_t tint[3];                        /* cod and arm: glow colour R, G, B, 0 .. 1.0 */
 } bloom_preset_params_t;
 
 typedef struct {
-    int width, height;        /* 1 .. BLOOM_MAX_DIM */
+    int width, height; /* 1 .. BLOOM_MAX_DIM */
     bloom_format_t in_fmt, out_fmt;
-    int levels;               /* requested pyramid depth N, 1 .. 16 */
-    uint32_t threshold;       /* linear, Q16.16, 0 .. BLOOM_MAX_THRESHOLD */
-    uint32_t soft_knee;       /* Q16.16, 0 .. 1.0 (0 = hard knee) */
-    uint32_t intensity;       /* gamma space, Q16.16, 0 .. 10.0 */
-    uint32_t flags;           /* BLOOM_FLAG_* */
-    bloom_preset_t preset;    /* BLOOM_PRESET_UNITY (0) unless set */
+    int levels;                 /* requested pyramid depth N, 1 .. 16 */
+    uint32_t threshold;         /* linear, Q16.16, 0 .. BLOOM_MAX_THRESHOLD */
+    uint32_t soft_knee;         /* Q16.16, 0 .. 1.0 (0 = hard knee) */
+    uint32_t intensity;         /* gamma space, Q16.16, 0 .. 10.0 */
+    uint32_t flags;             /* BLOOM_FLAG_* */
+    bloom_preset_t preset;      /* BLOOM_PRESET_UNITY (0) unless set */
     bloom_aux_format_t aux_fmt; /* BLOOM_AUX_NONE unless the preset reads a plane */
-    bloom_preset_params_t p;  /* the preset's own parameters */
+    bloom_preset_params_t p;    /* the preset's own parameters */
 } bloom_config_t;
 
 typedef struct {
-    size_t workspace_bytes;   /* what bloom_init needs */
-    int levels;               /* L: levels actually built (level-count rule) */
+    size_t workspace_bytes; /* what bloom_init needs */
+    int levels;             /* L: levels actually built (level-count rule) */
     int level_w[BLOOM_MAX_LEVELS + 1], level_h[BLOOM_MAX_LEVELS + 1];
-    int latency_rows;         /* output row y is ready once source row
+    int latency_rows;                        /* output row y is ready once source row
                                  min(y + latency_rows, height - 1) is in */
-    int source_rows;          /* source rows the engine reads back: the last
+    int source_rows;                         /* source rows the engine reads back: the last
                                  source_rows pushed rows must stay readable
                                  (pointer mode) or are copied (COPY_SOURCE) */
     size_t ring_bytes[BLOOM_MAX_LEVELS + 1]; /* row memory per level; [0] = source copy */
-    uint32_t threshold_q, knee_q; /* quantized threshold and knee, Q12.20 */
-    uint32_t intensity_q;         /* linear intensity I_q, Q16.16 */
+    uint32_t threshold_q, knee_q;            /* quantized threshold and knee, Q12.20 */
+    uint32_t intensity_q;                    /* linear intensity I_q, Q16.16 */
 } bloom_info_t;
 
 typedef struct bloom bloom_t;
@@ -223,8 +223,8 @@ int bloom_rows_out(const bloom_t *b);
 /* Band interface: push source rows rows_in .. rows_in + nrows - 1 (src is
  * the frame's row 0, src_stride bytes apart) and write every output row that
  * becomes ready to dst (frame row 0, dst_stride bytes apart). */
-bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows,
-                              void *dst, ptrdiff_t dst_stride);
+bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
+                              ptrdiff_t dst_stride);
 
 /* Whole frame: bloom_begin + bloom_run_rows(height) + drain. */
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
@@ -246,13 +246,11 @@ const char *bloom_status_str(bloom_status_t st);
  * (pointers, or copies). Computed in unsigned long long: a configuration
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
-#define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                   \
-    (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + 100u) + (64ull << (levels)) + \
-     64ull * (unsigned long long)(levels) +                                                \
-     ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) \
-             : 0ull))
-#define BLOOM_WORKSPACE_DEFINE(name, bytes) \
-    static uint64_t name[((bytes) + 7u) / 8u]
+#define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
+    (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + 100u) + (64ull << (levels)) +                 \
+     64ull * (unsigned long long)(levels) +                                                                  \
+     ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
+#define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]
 
 #ifdef __cplusplus
 }

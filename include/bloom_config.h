@@ -38,7 +38,7 @@
 #ifndef BLOOM_USE_COD
 #define BLOOM_USE_COD 1
 #endif
-#define BLOOM_USE_GRAPH \
+#define BLOOM_USE_GRAPH                                                                                      \
     (BLOOM_USE_GAMEDEV || BLOOM_USE_XNA || BLOOM_USE_ATTENUATION || BLOOM_USE_ARM || BLOOM_USE_COD)
 
 /* Skip what a scene does not need: dark source rows, all-zero rows of every

@@ -76,8 +76,9 @@ static uint8_t *to_engine(const img_t *im, bloom_format_t *fmt, uint32_t *codes)
     for (size_t i = 0; i < n; i++)
         for (int ch = 0; ch < 3; ch++) {
             size_t s = i * (size_t)im->channels + (size_t)(im->channels == 3 ? ch : 0);
-            uint32_t v = im->f32 ? img_float_to_q16(im->f32[s])
-                                 : (uint32_t)((im->u16[s] * 255u + (unsigned)im->maxval / 2u) / (unsigned)im->maxval);
+            uint32_t v =
+                im->f32 ? img_float_to_q16(im->f32[s])
+                        : (uint32_t)((im->u16[s] * 255u + (unsigned)im->maxval / 2u) / (unsigned)im->maxval);
             codes[3 * i + (size_t)ch] = v;
             if (im->f32)
                 memcpy(buf + 12 * i + 4 * (size_t)ch, &v, 4);
@@ -226,7 +227,8 @@ int main(int argc, char **argv)
     uint8_t *side = xcalloc(n * 6);
     for (int y = 0; y < h; y++) {
         memcpy(side + (size_t)y * (size_t)w * 6, before + (size_t)y * (size_t)w * 3, (size_t)w * 3);
-        memcpy(side + (size_t)y * (size_t)w * 6 + (size_t)w * 3, after + (size_t)y * (size_t)w * 3, (size_t)w * 3);
+        memcpy(side + (size_t)y * (size_t)w * 6 + (size_t)w * 3, after + (size_t)y * (size_t)w * 3,
+               (size_t)w * 3);
     }
     write_rgb(outdir, "before.ppm", before, w, h);
     write_rgb(outdir, "after.ppm", after, w, h);

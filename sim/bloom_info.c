@@ -12,11 +12,15 @@ int main(void)
         bloom_format_t fmt;
         unsigned flags;
     } rows[] = {
-        {160, 120, 5, BLOOM_FMT_RGB565, 0},    {320, 240, 5, BLOOM_FMT_RGB565, 0},
+        {160, 120, 5, BLOOM_FMT_RGB565, 0},
+        {320, 240, 5, BLOOM_FMT_RGB565, 0},
         {320, 240, 5, BLOOM_FMT_RGB565, BLOOM_FLAG_COPY_SOURCE},
-        {640, 480, 5, BLOOM_FMT_RGB888, 0},    {1280, 720, 5, BLOOM_FMT_RGB888, 0},
-        {1920, 1080, 5, BLOOM_FMT_RGB888, 0},  {1920, 1080, 5, BLOOM_FMT_RGB888, BLOOM_FLAG_COPY_SOURCE},
-        {1920, 1080, 3, BLOOM_FMT_RGB888, 0},  {1920, 1080, 8, BLOOM_FMT_RGB888, 0},
+        {640, 480, 5, BLOOM_FMT_RGB888, 0},
+        {1280, 720, 5, BLOOM_FMT_RGB888, 0},
+        {1920, 1080, 5, BLOOM_FMT_RGB888, 0},
+        {1920, 1080, 5, BLOOM_FMT_RGB888, BLOOM_FLAG_COPY_SOURCE},
+        {1920, 1080, 3, BLOOM_FMT_RGB888, 0},
+        {1920, 1080, 8, BLOOM_FMT_RGB888, 0},
         {3840, 2160, 5, BLOOM_FMT_XRGB8888, 0},
     };
     static const char *names[] = {"", "RGB888", "XRGB8888", "RGB565", "RGBQ16"};
@@ -31,15 +35,16 @@ int main(void)
         c.flags = rows[i].flags;
         if (bloom_query(&c, &info) != BLOOM_OK)
             return 1;
-        printf("| %dx%d | %s | %d | %s | %zu | %.2f %% (1/%.0f) | %d |\n", c.width, c.height,
-               names[c.in_fmt], info.levels, (c.flags & BLOOM_FLAG_COPY_SOURCE) ? "copied" : "pointers",
-               info.workspace_bytes, 100.0 * (double)info.workspace_bytes / (3.0 * c.width * c.height),
+        printf("| %dx%d | %s | %d | %s | %zu | %.2f %% (1/%.0f) | %d |\n", c.width, c.height, names[c.in_fmt],
+               info.levels, (c.flags & BLOOM_FLAG_COPY_SOURCE) ? "copied" : "pointers", info.workspace_bytes,
+               100.0 * (double)info.workspace_bytes / (3.0 * c.width * c.height),
                3.0 * c.width * c.height / (double)info.workspace_bytes, info.latency_rows);
     }
     /* Every preset at its own defaults (levels, aux plane), RGB888 in and
      * out, source rows kept by pointer; the row memory by level. */
-    printf("\n| preset | levels | 1920x1080 workspace | of one frame | latency | 320x240 workspace | latency |\n"
-           "|---|---|---|---|---|---|---|\n");
+    printf(
+        "\n| preset | levels | 1920x1080 workspace | of one frame | latency | 320x240 workspace | latency |\n"
+        "|---|---|---|---|---|---|---|\n");
     for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
         if (!bloom_preset_available((bloom_preset_t)p))
             continue;
@@ -53,9 +58,9 @@ int main(void)
         bloom_config_preset(&c, (bloom_preset_t)p);
         if (bloom_query(&c, &small) != BLOOM_OK)
             return 1;
-        printf("| %s | %d | %zu | 1/%.0f | %d | %zu | %d |\n", bloom_preset_name((bloom_preset_t)p), big.levels,
-               big.workspace_bytes, 3.0 * 1920 * 1080 / (double)big.workspace_bytes, big.latency_rows,
-               small.workspace_bytes, small.latency_rows);
+        printf("| %s | %d | %zu | 1/%.0f | %d | %zu | %d |\n", bloom_preset_name((bloom_preset_t)p),
+               big.levels, big.workspace_bytes, 3.0 * 1920 * 1080 / (double)big.workspace_bytes,
+               big.latency_rows, small.workspace_bytes, small.latency_rows);
     }
     return 0;
 }

@@ -20,12 +20,12 @@
 
 /* The pipeline's parameters in the units of the mode. */
 typedef struct {
-    int bt;   /* bit-true */
-    double t; /* threshold: real, or T_q */
-    double k; /* knee = t*s: real, or K_q */
-    double i; /* linear intensity: real, or I_q */
-    double one;   /* bit-true: 1.0 in internal units, 2^F */
-    double q16;   /* bit-true: 2^(F-16), Q16.16 -> internal */
+    int bt;     /* bit-true */
+    double t;   /* threshold: real, or T_q */
+    double k;   /* knee = t*s: real, or K_q */
+    double i;   /* linear intensity: real, or I_q */
+    double one; /* bit-true: 1.0 in internal units, 2^F */
+    double q16; /* bit-true: 2^(F-16), Q16.16 -> internal */
 } model_t;
 
 /* ---- curves --------------------------------------------------------- */
@@ -222,8 +222,8 @@ static void knee(const model_t *m, double rgb[3])
     /* Integer form, the epsilons in internal units (fixed-point.md step 3):
      * soft = 2x^2 / (8K + E8), rounded, E8 = round(0.00008 * 2^F); the
      * factor num / max(b, 2^F / 100000) in Q16. x^2 reaches 2^58: integers. */
-    x = clampd(b - m->t + m->k, 0.0, 2.0 * m->k);     /* signed before the clamp */
-    if (m->k == 0) { /* then x = 0 */
+    x = clampd(b - m->t + m->k, 0.0, 2.0 * m->k); /* signed before the clamp */
+    if (m->k == 0) {                              /* then x = 0 */
         soft = 0.0;
     } else {
         const uint64_t xi = (uint64_t)x, den = 8u * (uint64_t)m->k + (uint64_t)floor(m->one * 0.00008 + 0.5);
@@ -278,8 +278,7 @@ int bloom_model_box_down(const bloom_model_image_t *src, bloom_model_image_t *ds
 /* Weights of taps m-1, m, m+1 (m = d >> 1) for destination index d. */
 static const double tent_w[2][3] = {{3.0, 4.0, 1.0}, {1.0, 4.0, 3.0}};
 
-int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_model_image_t *dst,
-                        int bittrue)
+int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_model_image_t *dst, int bittrue)
 {
     bloom_model_image_t v; /* vertical pass: low->w columns by h rows */
     int x, y, c, i;
@@ -335,12 +334,10 @@ static int bad_args(const bloom_model_params_t *p, const uint32_t *src, const in
         return 1;
     if (p->bittrue) {
         /* these bounds keep every intermediate below 2^53 (fixed-point.md) */
-        if (p->threshold_q > (1u << 28) || p->knee_q > p->threshold_q ||
-            p->intensity_q > (1u << 24))
+        if (p->threshold_q > (1u << 28) || p->knee_q > p->threshold_q || p->intensity_q > (1u << 24))
             return 1;
     } else {
-        if (!(p->threshold >= 0 && isfinite(p->threshold)) ||
-            !(p->soft_knee >= 0 && p->soft_knee <= 1) ||
+        if (!(p->threshold >= 0 && isfinite(p->threshold)) || !(p->soft_knee >= 0 && p->soft_knee <= 1) ||
             !(p->intensity >= 0 && isfinite(p->intensity)))
             return 1;
     }
@@ -462,8 +459,8 @@ int bloom_model_run(const bloom_model_params_t *p, const uint32_t *src, const in
     for (i = 0; i < count; i++) {
         /* 6. composite: P = (I_q*B + 2^15) >> 16 in bit-true mode (Q16 x Q20
          * -> Q20; the product reaches 2^56, so in integers) */
-        double P = m.bt ? (double)(((uint64_t)m.i * (uint64_t)pyr.B.px[i] + 32768u) >> 16)
-                        : m.i * pyr.B.px[i];
+        double P =
+            m.bt ? (double)(((uint64_t)m.i * (uint64_t)pyr.B.px[i] + 32768u) >> 16) : m.i * pyr.B.px[i];
         double v = p->debug_view ? P : pyr.S.px[i] + P;
         if (dst_value)
             dst_value[i] = m.bt ? v / m.one : v;

@@ -12,11 +12,11 @@
 #define BLOOM_MODEL_MAX_LEVELS 16
 
 typedef struct {
-    int width, height;        /* source size, >= 1 each */
-    int levels;               /* requested N, 1..16; the level-count rule of bloom-model.md decides L */
-    int linear;               /* 1: no sRGB curves (linear input decode and linear output encode) */
-    int debug_view;           /* 1: out = I*B instead of S + I*B */
-    int bittrue;              /* 0: float model; 1: bit-true model */
+    int width, height; /* source size, >= 1 each */
+    int levels;        /* requested N, 1..16; the level-count rule of bloom-model.md decides L */
+    int linear;        /* 1: no sRGB curves (linear input decode and linear output encode) */
+    int debug_view;    /* 1: out = I*B instead of S + I*B */
+    int bittrue;       /* 0: float model; 1: bit-true model */
     /* float model parameters (real values; intensity in gamma space as the user gives it) */
     double threshold, soft_knee, intensity;
     /* bit-true parameters: the quantized values (fixed-point.md, "Parameters
@@ -60,9 +60,9 @@ double bloom_model_decode(int bittrue, int linear, uint32_t code, int n, int lin
 uint32_t bloom_model_encode(int bittrue, int linear, double v, int n, int lin_bits);
 /* floor(a / b) for integers a < 2^53, b >= 1 held in doubles, exactly. */
 double bloom_model_fdiv(double a, double b);
-double bloom_srgb_to_linear(double x);   /* the sRGB curve of bloom-model.md, extended unchanged above 1 */
-double bloom_linear_to_srgb(double x);   /* its inverse, for x >= 0 */
-int bloom_model_levels(int w, int h, int requested);  /* L by the level-count rule; -1 on bad arguments */
+double bloom_srgb_to_linear(double x); /* the sRGB curve of bloom-model.md, extended unchanged above 1 */
+double bloom_linear_to_srgb(double x); /* its inverse, for x >= 0 */
+int bloom_model_levels(int w, int h, int requested); /* L by the level-count rule; -1 on bad arguments */
 
 /* ---- Inspection hooks (tests, debugging) --------------------------------
  * Values are in model units: real linear light in float mode, Q12.20
@@ -70,15 +70,15 @@ int bloom_model_levels(int w, int h, int requested);  /* L by the level-count ru
 
 typedef struct {
     int w, h;
-    double *px;               /* w*h*3 values (R,G,B), row-major */
+    double *px; /* w*h*3 values (R,G,B), row-major */
 } bloom_model_image_t;
 
 typedef struct {
-    int levels;                                   /* L */
-    bloom_model_image_t S;                        /* decoded source, level 0 */
+    int levels;                                        /* L */
+    bloom_model_image_t S;                             /* decoded source, level 0 */
     bloom_model_image_t D[BLOOM_MODEL_MAX_LEVELS + 1]; /* D[1..L]; D[1] after the knee */
     bloom_model_image_t U[BLOOM_MODEL_MAX_LEVELS + 1]; /* U[1..L]; U[L] = D[L] */
-    bloom_model_image_t B;                        /* tentup(U[1]), full resolution */
+    bloom_model_image_t B;                             /* tentup(U[1]), full resolution */
 } bloom_model_pyramid_t;
 
 /* Runs decode, down chain, knee and up chain (everything before the
@@ -93,8 +93,7 @@ void bloom_model_pyramid_free(bloom_model_pyramid_t *pyr);
  * ceil(w/2) x ceil(h/2) == low's size. Both return 0, or -1 on bad size or
  * out of memory. */
 int bloom_model_box_down(const bloom_model_image_t *src, bloom_model_image_t *dst, int bittrue);
-int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_model_image_t *dst,
-                        int bittrue);
+int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_model_image_t *dst, int bittrue);
 void bloom_model_image_free(bloom_model_image_t *im);
 
 /* The prefilter (soft knee) on one pixel in place, with p's mode and
@@ -117,7 +116,7 @@ typedef struct {
     int aux_max;         /* 255 (BLOOM_AUX_U8) or 65535 (BLOOM_AUX_U16) */
     uint32_t *dst_codes; /* w*h*3, or NULL */
     int dst_max[3];
-    double *dst_value;   /* w*h*3 linear values before the encode, or NULL */
+    double *dst_value; /* w*h*3 linear values before the encode, or NULL */
 } bloom_model_preset_args_t;
 
 /* Returns the number of levels used (>= 1), or -1 on bad arguments. */

@@ -69,8 +69,7 @@ static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf,
         ADD(", %d passes%s", p->passes, (c->flags & BLOOM_FLAG_SATURATE) ? ", saturate" : "");
         break;
     case BLOOM_PRESET_ATTENUATION:
-        ADD(", attenuation %.5g, max reduction %.5g", p->attenuation / 65536.0,
-            p->max_reduction / 65536.0);
+        ADD(", attenuation %.5g, max reduction %.5g", p->attenuation / 65536.0, p->max_reduction / 65536.0);
         break;
     case BLOOM_PRESET_ARM:
         if (c->flags & BLOOM_FLAG_BAKED)
@@ -81,8 +80,8 @@ static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf,
         ADD(", weights");
         for (int k = 0; k < c->levels && k < BLOOM_MAX_LEVELS; k++)
             ADD("%s%.5g", k ? "," : " ", p->level_weight[k] / 65536.0);
-        ADD(", tint %.5g,%.5g,%.5g%s", p->tint[0] / 65536.0, p->tint[1] / 65536.0,
-            p->tint[2] / 65536.0, (c->flags & BLOOM_FLAG_ADDITIVE) ? ", additive" : "");
+        ADD(", tint %.5g,%.5g,%.5g%s", p->tint[0] / 65536.0, p->tint[1] / 65536.0, p->tint[2] / 65536.0,
+            (c->flags & BLOOM_FLAG_ADDITIVE) ? ", additive" : "");
         break;
     default:
         break;
@@ -95,8 +94,8 @@ static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf,
         snprintf(buf + n, len - (size_t)n, " (%s)", more + 2);
 }
 
-static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
-                        const sim_frame_t *f, char *err, size_t errlen)
+static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux, const sim_frame_t *f,
+                        char *err, size_t errlen)
 {
     bloom_config_t c;
     if (sim_opts_config(o, f->w, f->h, &c, err, errlen))
@@ -120,8 +119,7 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
                         o->aux_path, sim_preset_aux_name(&c), aux->w, aux->h, f->w, f->h);
     bloom_status_t st = bloom_query(&c, &e->info);
     if (st != BLOOM_OK)
-        return sim_errf(err, errlen, "engine configuration for %dx%d: %s", f->w, f->h,
-                        bloom_status_str(st));
+        return sim_errf(err, errlen, "engine configuration for %dx%d: %s", f->w, f->h, bloom_status_str(st));
     const size_t n = (size_t)f->w * (size_t)f->h;
     e->w = f->w;
     e->h = f->h;
@@ -136,8 +134,8 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
     e->rgb = malloc(n * 3);
     e->sbs = malloc(n * 12);
     e->lin = malloc(n * 3 * sizeof(float));
-    if (!e->ws || !e->src || !e->dst || !e->in_codes || !e->out_codes || !e->fl_codes ||
-        !e->bt_codes || !e->rgb || !e->sbs || !e->lin)
+    if (!e->ws || !e->src || !e->dst || !e->in_codes || !e->out_codes || !e->fl_codes || !e->bt_codes ||
+        !e->rgb || !e->sbs || !e->lin)
         return sim_errf(err, errlen, "out of memory for %dx%d frames", f->w, f->h);
     if ((st = bloom_init(&e->b, e->ws, e->info.workspace_bytes, &c)) != BLOOM_OK)
         return sim_errf(err, errlen, "engine init: %s", bloom_status_str(st));
@@ -156,8 +154,8 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux,
            f->w, f->h, sim_fmt_name(c.in_fmt), sim_fmt_name(c.out_fmt), pd,
            (c.flags & BLOOM_FLAG_LINEAR) ? ", linear" : ", sRGB",
            (c.flags & BLOOM_FLAG_DEBUG_VIEW) ? ", bloom-only view" : "", c.levels, e->info.levels,
-           c.threshold / 65536.0, c.soft_knee / 65536.0, c.intensity / 65536.0,
-           e->info.workspace_bytes, e->info.latency_rows);
+           c.threshold / 65536.0, c.soft_knee / 65536.0, c.intensity / 65536.0, e->info.workspace_bytes,
+           e->info.latency_rows);
     return 0;
 }
 
@@ -237,8 +235,7 @@ typedef struct {
     sim_aux_t aux;
 } run_t;
 
-static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, char *err,
-                    size_t errlen)
+static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, char *err, size_t errlen)
 {
     const sim_opts_t *o = r->o;
     engine_t *e = &r->eng;
@@ -280,8 +277,8 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
     int len = snprintf(line, sizeof line, "frame %ld", gi);
     if (o->ninputs > 1)
         len += snprintf(line + len, sizeof line - (size_t)len, " (%s)", name);
-    len += snprintf(line + len, sizeof line - (size_t)len, ": %dx%d, preset %s, engine %.3f ms",
-                    f->w, f->h, bloom_preset_name(e->cfg.preset), best * 1e3);
+    len += snprintf(line + len, sizeof line - (size_t)len, ": %dx%d, preset %s, engine %.3f ms", f->w, f->h,
+                    bloom_preset_name(e->cfg.preset), best * 1e3);
     if (o->compare) {
         if (run_model(e, 0, e->fl_codes))
             return sim_errf(err, errlen, "frame %ld: the float model failed", gi);
@@ -304,9 +301,10 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
         st->err_sum += sum;
         st->err_signed += sgn;
         st->samples += 3 * n;
-        len += snprintf(line + len, sizeof line - (size_t)len,
-                        ", vs float: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu below)",
-                        peak, 100.0 * (double)exact / (double)(3 * n), sgn / (double)(3 * n), above, below);
+        len +=
+            snprintf(line + len, sizeof line - (size_t)len,
+                     ", vs float: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu below)",
+                     peak, 100.0 * (double)exact / (double)(3 * n), sgn / (double)(3 * n), above, below);
     }
     if (o->bittrue) {
         if (run_model(e, 1, e->bt_codes))
@@ -372,17 +370,19 @@ static void print_summary(const run_t *r)
     med = st->frames % 2 ? t[st->frames / 2] : (t[st->frames / 2 - 1] + t[st->frames / 2]) / 2;
     printf("summary: %ld frame%s, preset %s, engine per frame: mean %.3f ms, median %.3f ms, min %.3f ms, "
            "max %.3f ms (%.1f Mpixel/s)\n",
-           st->frames, st->frames == 1 ? "" : "s", bloom_preset_name(r->o->cfg.preset), 1e3 * sum / (double)st->frames, 1e3 * med,
-           1e3 * t[0], 1e3 * t[st->frames - 1], sum > 0 ? st->pixels / sum / 1e6 : 0.0);
+           st->frames, st->frames == 1 ? "" : "s", bloom_preset_name(r->o->cfg.preset),
+           1e3 * sum / (double)st->frames, 1e3 * med, 1e3 * t[0], 1e3 * t[st->frames - 1],
+           sum > 0 ? st->pixels / sum / 1e6 : 0.0);
     free(t);
     if (r->o->compare && st->samples)
-        printf("summary vs float model: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu below), "
+        printf("summary vs float model: peak %u LSB, exact %.3f%%, signed mean %+.5f LSB (%llu above, %llu "
+               "below), "
                "mean |e| %.5f LSB, %llu samples\n",
-               st->peak, 100.0 * (double)st->exact / (double)st->samples, st->err_signed / (double)st->samples,
-               st->above, st->below, st->err_sum / (double)st->samples, st->samples);
+               st->peak, 100.0 * (double)st->exact / (double)st->samples,
+               st->err_signed / (double)st->samples, st->above, st->below, st->err_sum / (double)st->samples,
+               st->samples);
     if (r->o->bittrue)
-        printf("summary vs bit-true model: %llu of %llu samples differ\n", st->bt_diff,
-               st->bt_samples);
+        printf("summary vs bit-true model: %llu of %llu samples differ\n", st->bt_diff, st->bt_samples);
 }
 
 /* The aux plane: --aux loaded (its depth decides BLOOM_AUX_U8/U16) and

@@ -91,8 +91,8 @@ static void psf_sigma(int w, int h, int levels, double *sx, double *sy, double *
     eng_t e = eng_new(&c);
     const size_t stride = (size_t)w * 12u;
     uint32_t *in = xmalloc(stride * (size_t)h), *out = xmalloc(stride * (size_t)h);
-    const int pos[][2] = {{w / 2, h / 2}, {w / 2 + 1, h / 2 + 1}, {w / 2 + 7, h / 2 - 5}, {w / 2 + 13, h / 2 + 10},
-                          {w / 3 + 3, h / 3 + 2}, {w / 3 + 16, h / 3 + 9}};
+    const int pos[][2] = {{w / 2, h / 2},           {w / 2 + 1, h / 2 + 1}, {w / 2 + 7, h / 2 - 5},
+                          {w / 2 + 13, h / 2 + 10}, {w / 3 + 3, h / 3 + 2}, {w / 3 + 16, h / 3 + 9}};
     const int np = (int)(sizeof pos / sizeof pos[0]);
     double vx = 0, vy = 0, m = 0;
     for (int p = 0; p < np; p++) {
@@ -177,7 +177,8 @@ static __attribute__((noinline)) void run_gauss(gauss_t *g, const uint8_t *src, 
         for (int x = 0; x < w; x++) {
             const uint32_t yv = (uint32_t)((13933u * (uint64_t)bloom_srgb_dec8[s[3 * x]] +
                                             46871u * (uint64_t)bloom_srgb_dec8[s[3 * x + 1]] +
-                                            4732u * (uint64_t)bloom_srgb_dec8[s[3 * x + 2]] + 32768u) >> 16);
+                                            4732u * (uint64_t)bloom_srgb_dec8[s[3 * x + 2]] + 32768u) >>
+                                           16);
             uint32_t o;
             if (yv <= cut) {
                 o = 0;
@@ -329,8 +330,8 @@ int main(int argc, char **argv)
         tu[r] = t3 - t2;
     }
     const double ma = median(ta, repeats), mg = median(tg, repeats), mu = median(tu, repeats);
-    printf("median of %d: arm %.2f ms, Gaussian %.2f ms, default preset %.2f ms\n", repeats, 1e3 * ma, 1e3 * mg,
-           1e3 * mu);
+    printf("median of %d: arm %.2f ms, Gaussian %.2f ms, default preset %.2f ms\n", repeats, 1e3 * ma,
+           1e3 * mg, 1e3 * mu);
     printf("time ratio Gaussian / arm: %.1f x (arm / default preset: %.2f)\n", mg / ma, ma / mu);
     free(ta);
     free(tg);

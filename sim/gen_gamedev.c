@@ -128,6 +128,7 @@ int main(void)
            " * Output thresholds of the gamedev preset, Q12.20: code k of n is the\n"
            " * number of T[1..n] at or below the composite c (Reinhard, then gamma\n"
            " * 1/2.2, or linear). sim/docs/presets/gamedev.md, \"Output\". */\n"
+           "/* clang-format off */\n"
            "#include \"bloom_preset_gamedev.h\"\n\n#if BLOOM_USE_GAMEDEV\n\n");
     table("bloom_gd_gamma8", 255, 0);
     table("bloom_gd_gamma6", 63, 0);

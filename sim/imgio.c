@@ -86,7 +86,7 @@ typedef struct {
     const char *path;
     char *err;
     size_t errlen;
-    int maxdim;      /* largest width or height taken */
+    int maxdim; /* largest width or height taken */
 } rd_t;
 
 #define rfail(r, ...) set_err((r)->err, (r)->errlen, (r)->path, __VA_ARGS__)
@@ -140,8 +140,7 @@ static int token_end(rd_t *r, int c, bool comment_ok, const char *what, const ch
     if (c == '#' && comment_ok)
         ungetc(c, r->f);
     else if (!is_ws(c))
-        return rfail(r, "bad header: %s %s is followed by %s, not whitespace", what, tok,
-                     show_byte(c, b));
+        return rfail(r, "bad header: %s %s is followed by %s, not whitespace", what, tok, show_byte(c, b));
     return 0;
 }
 
@@ -153,8 +152,7 @@ static int read_field(rd_t *r, bool comments, const char *what, bool last, long 
     if (c == EOF)
         return header_eof(r, "before", what);
     if (c < '0' || c > '9')
-        return rfail(r, "bad header: expected %s as a decimal number, got %s", what,
-                     show_byte(c, b));
+        return rfail(r, "bad header: expected %s as a decimal number, got %s", what, show_byte(c, b));
     size_t nd = 0;
     long v = 0;
     for (; c >= '0' && c <= '9'; c = getc(r->f)) {
@@ -201,8 +199,7 @@ static int read_scale(rd_t *r, bool *little)
     if (end == tok || *end != '\0' || n == sizeof tok - 1)
         return rfail(r, "bad header: scale '%s' is not a number", tok);
     if (!isfinite(s) || s == 0.0)
-        return rfail(r,
-                     "bad header: scale '%s' must be nonzero and finite (its sign gives the byte order)",
+        return rfail(r, "bad header: scale '%s' must be nonzero and finite (its sign gives the byte order)",
                      tok);
     *little = s < 0.0;
     return 0;
@@ -210,8 +207,8 @@ static int read_scale(rd_t *r, bool *little)
 
 static int truncated(rd_t *r, uint64_t expected, uint64_t got)
 {
-    return rfail(r, "truncated: expected %llu bytes of pixel data, got %llu",
-                 (unsigned long long)expected, (unsigned long long)got);
+    return rfail(r, "truncated: expected %llu bytes of pixel data, got %llu", (unsigned long long)expected,
+                 (unsigned long long)got);
 }
 
 /* Bytes from the current position to the end of a regular file; -1 when
@@ -281,8 +278,8 @@ static int read_pixels(rd_t *r, img_t *img, int w, int h, int ch, int maxval, bo
             for (size_t i = 0; i < per_row && rc == 0; i++) {
                 unsigned v = bps == 2 ? (unsigned)row[2 * i] << 8 | row[2 * i + 1] : row[i];
                 if (v > (unsigned)maxval)
-                    rc = rfail(r, "sample value %u exceeds maxval %d (row %d, column %zu)", v,
-                               maxval, y, i / (size_t)ch);
+                    rc = rfail(r, "sample value %u exceeds maxval %d (row %d, column %zu)", v, maxval, y,
+                               i / (size_t)ch);
                 out[i] = (uint16_t)v;
             }
         }
@@ -335,8 +332,7 @@ static int read_file(rd_t *r, img_t *img)
     bool little = false;
     if (read_field(r, pnm, "width", false, r->maxdim, &w) != 0 ||
         read_field(r, pnm, "height", false, r->maxdim, &h) != 0 ||
-        (pnm ? read_field(r, true, "maxval", true, IMG_MAXVAL, &maxval)
-             : read_scale(r, &little)) != 0)
+        (pnm ? read_field(r, true, "maxval", true, IMG_MAXVAL, &maxval) : read_scale(r, &little)) != 0)
         return -1;
     return read_pixels(r, img, w, h, ch, maxval, little);
 }
@@ -437,8 +433,8 @@ static int tmp_finish(FILE *f, char *tmp, const char *path, bool ok, char *err, 
 
 /* Converts file row y into bytes: big-endian integers, or little-endian
  * floats taken bottom row first. False (after reporting) on a bad sample. */
-static bool fill_row(const img_t *img, bool pfm, int y, unsigned char *row, const char *path,
-                     char *err, size_t errlen)
+static bool fill_row(const img_t *img, bool pfm, int y, unsigned char *row, const char *path, char *err,
+                     size_t errlen)
 {
     size_t n = (size_t)img->width * (size_t)img->channels;
     for (size_t i = 0; i < n; i++) {
@@ -451,9 +447,8 @@ static bool fill_row(const img_t *img, bool pfm, int y, unsigned char *row, cons
         }
         unsigned v = img->u16[(size_t)y * n + i];
         if (v > (unsigned)img->maxval) {
-            set_err(err, errlen, path,
-                    "cannot write: sample value %u exceeds maxval %d (row %d, column %zu)", v,
-                    img->maxval, y, i / (size_t)img->channels);
+            set_err(err, errlen, path, "cannot write: sample value %u exceeds maxval %d (row %d, column %zu)",
+                    v, img->maxval, y, i / (size_t)img->channels);
             return false;
         }
         if (img->maxval > 255) {
@@ -473,8 +468,7 @@ static int write_image(const char *path, const img_t *img, bool pfm, char *err, 
         path = "(null path)";
     if (!img)
         why = "no image";
-    else if (img->width < 1 || img->width > IMG_MAXDIM || img->height < 1 ||
-             img->height > IMG_MAXDIM)
+    else if (img->width < 1 || img->width > IMG_MAXDIM || img->height < 1 || img->height > IMG_MAXDIM)
         why = "width and height must be 1..65535";
     else if (img->channels != 1 && img->channels != 3)
         why = "channels must be 1 or 3";
@@ -489,13 +483,12 @@ static int write_image(const char *path, const img_t *img, bool pfm, char *err, 
 
     char header[48];
     if (pfm)
-        snprintf(header, sizeof header, "P%c\n%d %d\n-1.0\n", img->channels == 3 ? 'F' : 'f',
-                 img->width, img->height);
+        snprintf(header, sizeof header, "P%c\n%d %d\n-1.0\n", img->channels == 3 ? 'F' : 'f', img->width,
+                 img->height);
     else
-        snprintf(header, sizeof header, "P%c\n%d %d\n%d\n", img->channels == 3 ? '6' : '5',
-                 img->width, img->height, img->maxval);
-    size_t rowbytes = (size_t)img->width * (size_t)img->channels *
-                      (pfm ? 4u : img->maxval > 255 ? 2u : 1u);
+        snprintf(header, sizeof header, "P%c\n%d %d\n%d\n", img->channels == 3 ? '6' : '5', img->width,
+                 img->height, img->maxval);
+    size_t rowbytes = (size_t)img->width * (size_t)img->channels * (pfm ? 4u : img->maxval > 255 ? 2u : 1u);
     unsigned char *row = malloc(rowbytes);
     char *tmp;
     FILE *f = row ? tmp_open(path, &tmp, err, errlen) : NULL;

@@ -9,11 +9,11 @@
 #include <stdio.h>
 
 typedef struct {
-    int width, height, channels;   /* channels 1 or 3 */
-    int maxval;                    /* PPM/PGM: 1..65535; 0 for float images (PFM) */
-    uint16_t *u16;                 /* integer samples (PPM/PGM), row-major, top row first,
+    int width, height, channels; /* channels 1 or 3 */
+    int maxval;                  /* PPM/PGM: 1..65535; 0 for float images (PFM) */
+    uint16_t *u16;               /* integer samples (PPM/PGM), row-major, top row first,
                                       channels interleaved; NULL for float */
-    float *f32;                    /* float samples (PFM), top row first (PFM stores
+    float *f32;                  /* float samples (PFM), top row first (PFM stores
                                       bottom-to-top: flipped on read/write); NULL for integer */
 } img_t;
 

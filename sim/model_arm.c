@@ -72,7 +72,8 @@ static int down(const plane_t *s, plane_t *d, int bt)
             } else {
                 const double cx = 2 * x + 1, cy = 2 * y + 1; /* destination centre, source texels */
                 r = (4 * samp(s, cx, cy) + samp(s, cx - 1, cy - 1) + samp(s, cx + 1, cy - 1) +
-                     samp(s, cx - 1, cy + 1) + samp(s, cx + 1, cy + 1)) / 8;
+                     samp(s, cx - 1, cy + 1) + samp(s, cx + 1, cy + 1)) /
+                    8;
             }
             d->v[(size_t)y * (size_t)d->w + (size_t)x] = r;
         }

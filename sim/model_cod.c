@@ -177,7 +177,8 @@ int bloom_model_cod_ex(const bloom_model_preset_args_t *a, int karis)
         for (int x = 0; x < S.w; x++)
             for (int c = 0; c < 3; c++)
                 pix(&S, x, y)[c] = bloom_model_decode(
-                    bt, lin, a->src[((size_t)y * (size_t)S.w + (size_t)x) * 3u + (size_t)c], a->src_max[c], F);
+                    bt, lin, a->src[((size_t)y * (size_t)S.w + (size_t)x) * 3u + (size_t)c], a->src_max[c],
+                    F);
     /* down chain */
     for (int k = 1; !fail && k <= L; k++) {
         const img_t *src = k == 1 ? &S : &D[k - 1];

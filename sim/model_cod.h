@@ -17,9 +17,9 @@ typedef struct {
     int additive;                         /* BloomCompositeMode::Additive */
 } bloom_cod_bevy_t;
 
-extern const bloom_cod_bevy_t bloom_cod_natural;      /* intensity 0.15, 0.7, 0.95, 1.0 */
-extern const bloom_cod_bevy_t bloom_cod_old_school;   /* 0.05, 0.7, 0.95, 1.0, additive */
-extern const bloom_cod_bevy_t bloom_cod_screen_blur;  /* 1.0, 0, 0, 1/3 */
+extern const bloom_cod_bevy_t bloom_cod_natural;     /* intensity 0.15, 0.7, 0.95, 1.0 */
+extern const bloom_cod_bevy_t bloom_cod_old_school;  /* 0.05, 0.7, 0.95, 1.0, additive */
+extern const bloom_cod_bevy_t bloom_cod_screen_blur; /* 1.0, 0, 0, 1/3 */
 
 /* Bevy's compute_blend_factor(settings, mip, max_mip); max_mip 0 reads
  * mip / max_mip as 0 (a one-level pyramid). */

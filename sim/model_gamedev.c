@@ -64,7 +64,7 @@ static void threshold(image_t *d, int bt, double t, uint32_t t_q, int lin_bits)
                 num >>= 1;
             }
             if (num >= den)
-                continue; /* factor exactly 1 */
+                continue;                                      /* factor exactly 1 */
             const uint64_t f = ((num << 32) + den / 2u) / den; /* Q32 */
             for (int c = 0; c < 3; c++)
                 p[c] = (double)((((uint64_t)p[c]) * f + 0x80000000u) >> 32);
@@ -78,7 +78,7 @@ static int gauss(const image_t *s, image_t *o, int bt)
 {
     static const double wa[5] = {0.227027, 0.194595, 0.121622, 0.054054, 0.016216};
     static const uint64_t wq[5] = {3808876, 3264759, 2040477, 906875, 272059}; /* Q24 */
-    const double sum = wa[0] + 2.0 * (wa[1] + wa[2] + wa[3] + wa[4]); /* 1.000001 */
+    const double sum = wa[0] + 2.0 * (wa[1] + wa[2] + wa[3] + wa[4]);          /* 1.000001 */
     image_t v;
     if (img_new(&v, s->w, s->h))
         return -1;

@@ -120,7 +120,8 @@ int bloom_model_attenuation(const bloom_model_preset_args_t *a)
                 v = fmax(1.0 + att * (d - 1.0), rmin);
             } else { /* Q24 */
                 const double d = floor((sum + 2.0) / 4.0);
-                v = 16777216.0 - floor(((double)a->cfg->p.attenuation * (16777216.0 - d) + 32768.0) / 65536.0);
+                v = 16777216.0 -
+                    floor(((double)a->cfg->p.attenuation * (16777216.0 - d) + 32768.0) / 65536.0);
                 v = fmax(v, (double)a->cfg->p.max_reduction * 256.0);
             }
             f[(size_t)y * (size_t)w1 + (size_t)x] = v;

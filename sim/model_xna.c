@@ -57,7 +57,9 @@ static int kawase(const xna_units_t *u, const bloom_model_image_t *src, bloom_mo
                         sum += at(src, x + off[b], y + off[a], c);
                 double v;
                 if (u->bt) {
-                    if (first && f_q != 1u << 24) { /* sum f / 2^28 split at bit 16 (f Q24); f = 1: as the other passes */
+                    if (first &&
+                        f_q !=
+                            1u << 24) { /* sum f / 2^28 split at bit 16 (f Q24); f = 1: as the other passes */
                         const uint64_t sh = (uint64_t)sum >> 16, sl = (uint64_t)sum & 0xFFFFu;
                         const uint64_t p = (sh * f_q + ((sl * f_q) >> 16) + (1u << 11)) >> 12;
                         v = p > (uint64_t)u->lin_max ? u->lin_max : (double)p;
@@ -104,7 +106,8 @@ int bloom_model_xna(const bloom_model_preset_args_t *a)
     const double f_real = 1.0 / (1.0 - c->threshold / 65536.0);
     const double I_real = bloom_srgb_to_linear(c->intensity / 65536.0);
 
-    bloom_model_image_t S = {w, h, NULL}, H = {0, 0, NULL}, Q = {0, 0, NULL}, K[2] = {{0, 0, NULL}, {0, 0, NULL}};
+    bloom_model_image_t S = {w, h, NULL}, H = {0, 0, NULL}, Q = {0, 0, NULL},
+                        K[2] = {{0, 0, NULL}, {0, 0, NULL}};
     bloom_model_image_t Bh = {0, 0, NULL}, B = {0, 0, NULL};
     int ret = -1;
     S.px = malloc((size_t)w * (size_t)h * 3u * sizeof(double));
@@ -135,7 +138,8 @@ int bloom_model_xna(const bloom_model_preset_args_t *a)
         double v = B.px[i];
         if (!p.debug_view) { /* screen: b + S (1 - b), b = min(B, 1) */
             const double b = fmin(v, u.one);
-            v = u.bt ? b + bloom_model_fdiv(S.px[i] * (u.one - b) + u.one / 2.0, u.one) : b + S.px[i] * (1.0 - b);
+            v = u.bt ? b + bloom_model_fdiv(S.px[i] * (u.one - b) + u.one / 2.0, u.one)
+                     : b + S.px[i] * (1.0 - b);
         }
         if (a->dst_value)
             a->dst_value[i] = u.bt ? v / u.one : v;

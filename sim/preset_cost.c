@@ -153,7 +153,8 @@ int main(int argc, char **argv)
         } else if (!strcmp(argv[i], "--csv") && i + 1 < argc) {
             csv = argv[++i];
         } else {
-            fprintf(stderr, "usage: preset_cost [--sizes WxH,...] [--runs N] [--md F] [--csv F] | --one NAME W H | --list\n");
+            fprintf(stderr, "usage: preset_cost [--sizes WxH,...] [--runs N] [--md F] [--csv F] | --one NAME "
+                            "W H | --list\n");
             return 2;
         }
     }
@@ -192,8 +193,8 @@ int main(int argc, char **argv)
         for (int p = 0; p <= BLOOM_PRESET_COUNT; p++)
             t[p] = calloc((size_t)runs, sizeof(double));
         for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
-            have[p] = bloom_preset_available((bloom_preset_t)p) && !engine_make(&e[p], (bloom_preset_t)p, w, h) &&
-                      !run(&e[p], src, dst, w); /* warm-up */
+            have[p] = bloom_preset_available((bloom_preset_t)p) &&
+                      !engine_make(&e[p], (bloom_preset_t)p, w, h) && !run(&e[p], src, dst, w); /* warm-up */
         size_t slot = 0;
         for (int r = 0; r < runs; r++) {
             for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
@@ -219,11 +220,11 @@ int main(int argc, char **argv)
             printf("%-10s %-12s %10.3f %10.2f %10.1f %12zu\n", size, bloom_preset_name((bloom_preset_t)p), m,
                    m / def, m / mc, e[p].ws_bytes);
             if (fc)
-                fprintf(fc, "%s,%s,%.4f,%.3f,%.2f,%zu\n", size, bloom_preset_name((bloom_preset_t)p), m, m / def,
-                        m / mc, e[p].ws_bytes);
+                fprintf(fc, "%s,%s,%.4f,%.3f,%.2f,%zu\n", size, bloom_preset_name((bloom_preset_t)p), m,
+                        m / def, m / mc, e[p].ws_bytes);
             if (fm)
-                fprintf(fm, "| %s | %s | %.2f | %.2f | %.1f | %zu |\n", size, bloom_preset_name((bloom_preset_t)p),
-                        m, m / def, m / mc, e[p].ws_bytes);
+                fprintf(fm, "| %s | %s | %.2f | %.2f | %.1f | %zu |\n", size,
+                        bloom_preset_name((bloom_preset_t)p), m, m / def, m / mc, e[p].ws_bytes);
             engine_drop(&e[p]);
         }
         printf("%-10s %-12s %10.3f %10.2f %10.1f\n", size, "memcpy", mc, mc / def, 1.0);

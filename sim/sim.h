@@ -66,10 +66,10 @@ int sim_img_rows(img_t *img, int rows, int *cap);
 typedef enum { SIM_RAW_NONE = 0, SIM_RAW_YUYV, SIM_RAW_RGB24, SIM_RAW_GREY, SIM_RAW_RGB565 } sim_raw_fmt_t;
 
 typedef struct {
-    sim_raw_fmt_t raw_fmt;   /* SIM_RAW_NONE: detect the format from the content */
+    sim_raw_fmt_t raw_fmt; /* SIM_RAW_NONE: detect the format from the content */
     int raw_w, raw_h;
-    long raw_stride;         /* bytes per row of a raw dump; 0 = packed */
-    int decode16_srgb;       /* 16-bit PPM/PGM/PNG: 0 linear light, 1 sRGB-encoded */
+    long raw_stride;   /* bytes per row of a raw dump; 0 = packed */
+    int decode16_srgb; /* 16-bit PPM/PGM/PNG: 0 linear light, 1 sRGB-encoded */
 } sim_input_opts_t;
 
 typedef struct sim_source sim_source_t;
@@ -79,9 +79,9 @@ typedef struct sim_source sim_source_t;
  * Y4M and raw files every frame header and the exact file size. */
 int sim_source_open(sim_source_t **out, const char *path, const sim_input_opts_t *o, char *err,
                     size_t errlen);
-long sim_source_frames(const sim_source_t *s);           /* -1 when unknown (a pipe) */
+long sim_source_frames(const sim_source_t *s);                 /* -1 when unknown (a pipe) */
 int sim_source_fps(const sim_source_t *s, int *num, int *den); /* 0 if the input has a rate */
-const char *sim_source_desc(const sim_source_t *s);      /* "Y4M 4:2:0 (C420jpeg), limited range" */
+const char *sim_source_desc(const sim_source_t *s);            /* "Y4M 4:2:0 (C420jpeg), limited range" */
 /* Reads the next frame into f (allocated or reused here). Returns 1 with a
  * frame, 0 at the end, -1 on error ("path: frame N: what is wrong"). */
 int sim_source_read(sim_source_t *s, sim_frame_t *f, char *err, size_t errlen);
@@ -118,11 +118,9 @@ void sim_to_engine(const sim_frame_t *f, bloom_format_t fmt, int linear, uint8_t
 void sim_from_engine(const uint8_t *buf, bloom_format_t fmt, size_t npix, uint32_t *codes);
 /* Codes of range max -> 8-bit display RGB (Q16.16 is sRGB-encoded, or
  * linear with linear != 0, clipped at 1.0). */
-void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int linear,
-                       uint8_t *rgb);
+void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int linear, uint8_t *rgb);
 /* Codes -> linear light floats (for PFM output). */
-void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear,
-                        float *out);
+void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear, float *out);
 
 /* ---- the aux plane (sim_aux.c) ------------------------------------------
  * A grey PGM/PNG read once for every frame: 8-bit (BLOOM_AUX_U8) or 16-bit
@@ -130,10 +128,10 @@ void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, in
 typedef struct {
     int w, h;
     bloom_aux_format_t fmt;
-    int max;          /* 255 or 65535 */
-    uint8_t *data;    /* the engine's plane: w bytes (U8) or w native uint16 (U16) per row */
-    uint32_t *codes;  /* the same codes for the model, w*h */
-    char desc[64];    /* "PGM 64x48 8-bit grey" */
+    int max;         /* 255 or 65535 */
+    uint8_t *data;   /* the engine's plane: w bytes (U8) or w native uint16 (U16) per row */
+    uint32_t *codes; /* the same codes for the model, w*h */
+    char desc[64];   /* "PGM 64x48 8-bit grey" */
 } sim_aux_t;
 
 /* Errors name the file: "depth.png: --aux: an RGB image; ...". */
@@ -145,11 +143,11 @@ void sim_aux_free(sim_aux_t *a);
  * bits), applied over the preset's defaults for each frame size. */
 typedef struct {
     unsigned set;
-    int preset;              /* -1: not given (unity) */
-    bloom_config_t v;        /* the values given */
-    int nweights;            /* --weights: level_weight[0 .. nweights-1] */
-    long radius;             /* --radius */
-    uint32_t flags;          /* --linear, --copy-source, --view bloom */
+    int preset;       /* -1: not given (unity) */
+    bloom_config_t v; /* the values given */
+    int nweights;     /* --weights: level_weight[0 .. nweights-1] */
+    long radius;      /* --radius */
+    uint32_t flags;   /* --linear, --copy-source, --view bloom */
 } sim_given_t;
 
 typedef struct {
@@ -169,10 +167,10 @@ typedef struct {
     int in_fmt_set, out_fmt_set;
     bloom_format_t in_fmt, out_fmt;
     int compare, bittrue;
-    long max_frames;                       /* 0: all */
-    int repeat;                            /* engine runs per frame (best time) */
-    int quiet;                             /* no per-frame lines */
-    double progress_after;                 /* seconds before a progress line appears */
+    long max_frames;       /* 0: all */
+    int repeat;            /* engine runs per frame (best time) */
+    int quiet;             /* no per-frame lines */
+    double progress_after; /* seconds before a progress line appears */
 } sim_opts_t;
 
 /* Parses argv into o. Returns 0 to run, 1 when --help was printed (exit
@@ -195,19 +193,18 @@ typedef struct sim_out sim_out_t;
 /* pattern: "name%04d.png" (one %d conversion, optional 0 flag and width;
  * %% for a literal %), a plain file name (one frame only), or "x.y4m" (one
  * stream). The kind follows the extension: .ppm .png .pfm .y4m. */
-int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den, char *err,
-                 size_t errlen);
+int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den, char *err, size_t errlen);
 sim_out_kind_t sim_out_kind(const sim_out_t *o);
-int sim_out_has_number(const sim_out_t *o);  /* pattern has a %d (or is a stream) */
+int sim_out_has_number(const sim_out_t *o); /* pattern has a %d (or is a stream) */
 /* Writes frame n: rgb (w*h*3 bytes) for PPM/PNG/Y4M, lin (w*h*3 floats) for PFM. */
-int sim_out_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, const float *lin,
-                  char *err, size_t errlen);
+int sim_out_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, const float *lin, char *err,
+                  size_t errlen);
 /* Commits a Y4M stream (rename over the target); per-frame files are
  * already in place. Frees o. */
 int sim_out_finish(sim_out_t *o, char *err, size_t errlen);
 void sim_out_abort(sim_out_t *o); /* removes an uncommitted temp file; frees o */
 const char *sim_out_pattern(const sim_out_t *o);
-long sim_out_count(const sim_out_t *o);  /* frames written */
+long sim_out_count(const sim_out_t *o); /* frames written */
 
 /* Temp file beside path ("path.tmp-XXXXXX"); commit renames it over path
  * when ok, else removes it. The temp file is also removed if the process

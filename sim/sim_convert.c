@@ -101,8 +101,8 @@ int sim_img_rows(img_t *img, int rows, int *cap)
         return 0;
     if (rows > img->height)
         return -1;
-    const size_t row = (size_t)img->width * (size_t)img->channels *
-                       (img->maxval ? sizeof(uint16_t) : sizeof(float));
+    const size_t row =
+        (size_t)img->width * (size_t)img->channels * (img->maxval ? sizeof(uint16_t) : sizeof(float));
     int n = *cap < 16 ? 16 : *cap;
     while (n < rows)
         n = n > img->height / 2 ? img->height : 2 * n;
@@ -231,8 +231,10 @@ static const struct {
     const char *name;
     bloom_format_t fmt;
 } fmt_names[] = {
-    {"rgb888", BLOOM_FMT_RGB888},     {"xrgb8888", BLOOM_FMT_XRGB8888},
-    {"rgb565", BLOOM_FMT_RGB565},     {"rgbq16", BLOOM_FMT_RGBQ16},
+    {"rgb888", BLOOM_FMT_RGB888},
+    {"xrgb8888", BLOOM_FMT_XRGB8888},
+    {"rgb565", BLOOM_FMT_RGB565},
+    {"rgbq16", BLOOM_FMT_RGBQ16},
 };
 
 int sim_fmt_parse(const char *s, bloom_format_t *fmt)
@@ -326,19 +328,17 @@ void sim_from_engine(const uint8_t *buf, bloom_format_t fmt, size_t npix, uint32
     }
 }
 
-void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int linear,
-                       uint8_t *rgb)
+void sim_codes_to_rgb8(const uint32_t *codes, const int max[3], size_t npix, int linear, uint8_t *rgb)
 {
     for (size_t i = 0; i < 3 * npix; i++)
         rgb[i] = (uint8_t)convert(codes[i], (unsigned)max[i % 3], 255u, linear);
 }
 
-void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear,
-                        float *out)
+void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, int linear, float *out)
 {
     for (size_t i = 0; i < 3 * npix; i++) {
         const int m = max[i % 3];
-        double v = m == 0 ? codes[i] / 65536.0
+        double v = m == 0   ? codes[i] / 65536.0
                    : linear ? (double)codes[i] / m
                             : bloom_srgb_to_linear((double)codes[i] / m);
         out[i] = (float)v;

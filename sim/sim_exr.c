@@ -12,7 +12,10 @@
 
 #ifdef SIM_NO_EXR
 
-int sim_exr_available(void) { return 0; }
+int sim_exr_available(void)
+{
+    return 0;
+}
 
 int sim_exr_read(const char *path, img_t *img, char *err, size_t errlen)
 {
@@ -25,7 +28,10 @@ int sim_exr_read(const char *path, img_t *img, char *err, size_t errlen)
 
 #include <openexr.h>
 
-int sim_exr_available(void) { return 1; }
+int sim_exr_available(void)
+{
+    return 1;
+}
 
 /* The library reports details through a callback; the tool is single
  * threaded, so the last message is simply kept here. */
@@ -46,10 +52,12 @@ static int fail(exr_result_t rv, const char *what, char *err, size_t errlen)
 typedef struct {
     exr_context_t ctx;
     exr_decode_pipeline_t dec;
-    int started;       /* dec initialized */
+    int started; /* dec initialized */
     int nch, w, h;
-    int cap;           /* image rows allocated so far */
+    int cap; /* image rows allocated so far */
     img_t *img;
+    float *scratch; /* where the channels the tool does not use are decoded */
+    size_t scratch_n;
 } exr_rd_t;
 
 static int slot_of(const exr_rd_t *r, const char *name)
@@ -60,8 +68,7 @@ static int slot_of(const exr_rd_t *r, const char *name)
 }
 
 /* Decodes one chunk whose top-left pixel is (px, py) of the image. */
-static int decode_chunk(exr_rd_t *r, const exr_chunk_info_t *ci, int px, int py, char *err,
-                        size_t errlen)
+static int decode_chunk(exr_rd_t *r, const exr_chunk_info_t *ci, int px, int py, char *err, size_t errlen)
 {
     if (px < 0 || py < 0 || ci->width < 1 || ci->height < 1 || (int64_t)px + ci->width > r->w ||
         (int64_t)py + ci->height > r->h)
@@ -78,7 +85,22 @@ static int decode_chunk(exr_rd_t *r, const exr_chunk_info_t *ci, int px, int py,
         exr_coding_channel_info_t *ch = &r->dec.channels[c];
         int s = slot_of(r, ch->channel_name);
         if (s < 0) {
-            ch->decode_to_ptr = NULL; /* not wanted: skipped by the decoder */
+            /* not wanted: decoded into scratch rather than skipped with a NULL
+             * pointer (some of the library's unpack paths write through it
+             * regardless: a fuzzer finding, tests/fuzz/README.md) */
+            const size_t n = (size_t)ci->width * (size_t)ci->height;
+            if (n > r->scratch_n) {
+                float *p = realloc(r->scratch, n * sizeof *p);
+                if (!p)
+                    return sim_errf(err, errlen, "out of memory for a %dx%d chunk", ci->width, ci->height);
+                r->scratch = p;
+                r->scratch_n = n;
+            }
+            ch->user_data_type = EXR_PIXEL_FLOAT;
+            ch->user_bytes_per_element = 4;
+            ch->user_pixel_stride = 4;
+            ch->user_line_stride = ci->width * 4;
+            ch->decode_to_ptr = (uint8_t *)r->scratch;
             continue;
         }
         ch->user_data_type = EXR_PIXEL_FLOAT;
@@ -86,8 +108,7 @@ static int decode_chunk(exr_rd_t *r, const exr_chunk_info_t *ci, int px, int py,
         ch->user_pixel_stride = r->nch * 4;
         ch->user_line_stride = r->w * r->nch * 4;
         ch->decode_to_ptr =
-            (uint8_t *)(r->img->f32 + ((size_t)py * (size_t)r->w + (size_t)px) * (size_t)r->nch +
-                        (size_t)s);
+            (uint8_t *)(r->img->f32 + ((size_t)py * (size_t)r->w + (size_t)px) * (size_t)r->nch + (size_t)s);
     }
     if ((rv = exr_decoding_choose_default_routines(r->ctx, 0, &r->dec)) != EXR_ERR_SUCCESS)
         return fail(rv, "decoder setup", err, errlen);
@@ -109,8 +130,7 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
         return sim_errf(err, errlen, "deep OpenEXR data not supported");
     const int64_t w = (int64_t)dw.max.x - dw.min.x + 1, h = (int64_t)dw.max.y - dw.min.y + 1;
     if (w < 1 || h < 1)
-        return sim_errf(err, errlen, "OpenEXR data window %lldx%lld is empty", (long long)w,
-                        (long long)h);
+        return sim_errf(err, errlen, "OpenEXR data window %lldx%lld is empty", (long long)w, (long long)h);
     if (w > BLOOM_MAX_DIM || h > BLOOM_MAX_DIM)
         return sim_errf(err, errlen,
                         "OpenEXR data window %lldx%lld is larger than the engine's limit of %d per side",
@@ -120,7 +140,11 @@ static int read_part(exr_rd_t *r, char *err, size_t errlen)
     for (int i = 0; i < cl->num_channels; i++) {
         const exr_attr_chlist_entry_t *e = &cl->entries[i];
         const char *nm = e->name.str;
-        int k = !strcmp(nm, "R") ? 0 : !strcmp(nm, "G") ? 1 : !strcmp(nm, "B") ? 2 : !strcmp(nm, "Y") ? 3 : -1;
+        int k = !strcmp(nm, "R")   ? 0
+                : !strcmp(nm, "G") ? 1
+                : !strcmp(nm, "B") ? 2
+                : !strcmp(nm, "Y") ? 3
+                                   : -1;
         size_t used = strlen(names);
         snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "", nm);
         if (k < 0)
@@ -186,6 +210,7 @@ int sim_exr_read(const char *path, img_t *img, char *err, size_t errlen)
         exr_decoding_destroy(r.ctx, &r.dec);
     if (r.ctx)
         exr_finish(&r.ctx);
+    free(r.scratch);
     if (rc)
         img_free(img);
     return rc;

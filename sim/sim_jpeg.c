@@ -41,8 +41,7 @@ static void on_message(j_common_ptr ci, int level)
     /* level >= 0: trace messages, ignored */
 }
 
-static int read_body(struct jpeg_decompress_struct *ci, jerr_t *e, FILE *f, img_t *img,
-                     JSAMPLE **row)
+static int read_body(struct jpeg_decompress_struct *ci, jerr_t *e, FILE *f, img_t *img, JSAMPLE **row)
 {
     if (setjmp(e->jb))
         return -1;
@@ -65,15 +64,14 @@ static int read_body(struct jpeg_decompress_struct *ci, jerr_t *e, FILE *f, img_
     const JDIMENSION w = ci->output_width, h = ci->output_height;
     const int ch = ci->output_components;
     if (w < 1 || h < 1 || w > BLOOM_MAX_DIM || h > BLOOM_MAX_DIM || (ch != 1 && ch != 3))
-        return sim_errf(e->err, e->errlen, "JPEG layout not supported (%ux%u, %d components)",
-                        (unsigned)w, (unsigned)h, ch);
+        return sim_errf(e->err, e->errlen, "JPEG layout not supported (%ux%u, %d components)", (unsigned)w,
+                        (unsigned)h, ch);
     img->width = (int)w;
     img->height = (int)h;
     img->channels = ch;
     img->maxval = 255;
     if (!(*row = malloc((size_t)w * (size_t)ch)))
-        return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w,
-                        (unsigned)h);
+        return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w, (unsigned)h);
     /* the samples grow with the rows decoded: a short file that claims a
      * large image fails at its end having allocated what it delivered */
     int cap = 0;
@@ -81,8 +79,7 @@ static int read_body(struct jpeg_decompress_struct *ci, jerr_t *e, FILE *f, img_
         JSAMPROW r = *row;
         const size_t y = ci->output_scanline;
         if (sim_img_rows(img, (int)y + 1, &cap))
-            return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w,
-                            (unsigned)h);
+            return sim_errf(e->err, e->errlen, "out of memory for a %ux%u JPEG", (unsigned)w, (unsigned)h);
         if (jpeg_read_scanlines(ci, &r, 1) != 1)
             return sim_errf(e->err, e->errlen, "JPEG decode failed at row %zu", y);
         for (size_t i = 0; i < (size_t)w * (size_t)ch; i++)

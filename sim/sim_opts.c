@@ -149,8 +149,8 @@ static int parse_raw_fmt(const char *s, sim_raw_fmt_t *f)
     static const struct {
         const char *name;
         sim_raw_fmt_t fmt;
-    } names[] = {{"yuyv", SIM_RAW_YUYV},   {"rgb24", SIM_RAW_RGB24}, {"rgb3", SIM_RAW_RGB24},
-                 {"grey", SIM_RAW_GREY},   {"gray", SIM_RAW_GREY},   {"rgb565", SIM_RAW_RGB565},
+    } names[] = {{"yuyv", SIM_RAW_YUYV},  {"rgb24", SIM_RAW_RGB24}, {"rgb3", SIM_RAW_RGB24},
+                 {"grey", SIM_RAW_GREY},  {"gray", SIM_RAW_GREY},   {"rgb565", SIM_RAW_RGB565},
                  {"rgbp", SIM_RAW_RGB565}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcasecmp(s, names[i].name)) {
@@ -161,12 +161,35 @@ static int parse_raw_fmt(const char *s, sim_raw_fmt_t *f)
 }
 
 /* Options that take a value. */
-static const char *const with_value[] = {
-    "-o", "--output", "--side-by-side", "--view", "--diff-gain", "--fps", "--levels",
-    "--threshold", "--knee", "--intensity", "--format", "--in-format", "--out-format",
-    "--frames", "--repeat", "--progress-after", "--raw-size", "--raw-format", "--raw-stride",
-    "--decode16", "--preset", "--strength", "--passes", "--attenuation", "--max-reduction",
-    "--aux", "--tint", "--weights", "--radius"};
+static const char *const with_value[] = {"-o",
+                                         "--output",
+                                         "--side-by-side",
+                                         "--view",
+                                         "--diff-gain",
+                                         "--fps",
+                                         "--levels",
+                                         "--threshold",
+                                         "--knee",
+                                         "--intensity",
+                                         "--format",
+                                         "--in-format",
+                                         "--out-format",
+                                         "--frames",
+                                         "--repeat",
+                                         "--progress-after",
+                                         "--raw-size",
+                                         "--raw-format",
+                                         "--raw-stride",
+                                         "--decode16",
+                                         "--preset",
+                                         "--strength",
+                                         "--passes",
+                                         "--attenuation",
+                                         "--max-reduction",
+                                         "--aux",
+                                         "--tint",
+                                         "--weights",
+                                         "--radius"};
 
 static int takes_value(const char *name)
 {
@@ -179,12 +202,21 @@ static int takes_value(const char *name)
 /* The options given, applied over the preset's defaults at the end; a
  * preset parameter's bit is its BLOOM_PARAM_* bit. */
 enum {
-    SET_STRENGTH = BLOOM_PARAM_STRENGTH, SET_PASSES = BLOOM_PARAM_PASSES,
-    SET_ATTENUATION = BLOOM_PARAM_ATTENUATION, SET_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION,
-    SET_TINT = BLOOM_PARAM_TINT, SET_WEIGHTS = BLOOM_PARAM_WEIGHTS, SET_RADIUS = BLOOM_PARAM_RADIUS,
-    SET_SATURATE = BLOOM_PARAM_SATURATE, SET_ADDITIVE = BLOOM_PARAM_ADDITIVE, SET_BAKED = BLOOM_PARAM_BAKED,
+    SET_STRENGTH = BLOOM_PARAM_STRENGTH,
+    SET_PASSES = BLOOM_PARAM_PASSES,
+    SET_ATTENUATION = BLOOM_PARAM_ATTENUATION,
+    SET_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION,
+    SET_TINT = BLOOM_PARAM_TINT,
+    SET_WEIGHTS = BLOOM_PARAM_WEIGHTS,
+    SET_RADIUS = BLOOM_PARAM_RADIUS,
+    SET_SATURATE = BLOOM_PARAM_SATURATE,
+    SET_ADDITIVE = BLOOM_PARAM_ADDITIVE,
+    SET_BAKED = BLOOM_PARAM_BAKED,
     SET_AUX = BLOOM_PARAM_AUX,
-    SET_LEVELS = 1u << 16, SET_THRESHOLD = 1u << 17, SET_KNEE = 1u << 18, SET_INTENSITY = 1u << 19
+    SET_LEVELS = 1u << 16,
+    SET_THRESHOLD = 1u << 17,
+    SET_KNEE = 1u << 18,
+    SET_INTENSITY = 1u << 19
 };
 
 typedef sim_given_t given_t;
@@ -196,10 +228,17 @@ static const struct {
     unsigned bit;
     const char *opt;
 } param_opt[] = {
-    {SET_STRENGTH, "--strength"}, {SET_PASSES, "--passes"}, {SET_SATURATE, "--saturate"},
-    {SET_ATTENUATION, "--attenuation"}, {SET_MAX_REDUCTION, "--max-reduction"}, {SET_AUX, "--aux"},
-    {SET_TINT, "--tint"}, {SET_WEIGHTS, "--weights"}, {SET_ADDITIVE, "--additive"},
-    {SET_BAKED, "--baked"}, {SET_RADIUS, "--radius"},
+    {SET_STRENGTH, "--strength"},
+    {SET_PASSES, "--passes"},
+    {SET_SATURATE, "--saturate"},
+    {SET_ATTENUATION, "--attenuation"},
+    {SET_MAX_REDUCTION, "--max-reduction"},
+    {SET_AUX, "--aux"},
+    {SET_TINT, "--tint"},
+    {SET_WEIGHTS, "--weights"},
+    {SET_ADDITIVE, "--additive"},
+    {SET_BAKED, "--baked"},
+    {SET_RADIUS, "--radius"},
 };
 
 const char *sim_presets_available(void)
@@ -217,9 +256,12 @@ const char *sim_presets_available(void)
 const char *sim_preset_aux_name(const bloom_config_t *c)
 {
     switch (c->preset) {
-    case BLOOM_PRESET_ATTENUATION: return "depth plane";
-    case BLOOM_PRESET_ARM: return (c->flags & BLOOM_FLAG_BAKED) ? "baked bloom map" : "mask";
-    default: return c->aux_fmt != BLOOM_AUX_NONE ? "aux plane" : NULL;
+    case BLOOM_PRESET_ATTENUATION:
+        return "depth plane";
+    case BLOOM_PRESET_ARM:
+        return (c->flags & BLOOM_FLAG_BAKED) ? "baked bloom map" : "mask";
+    default:
+        return c->aux_fmt != BLOOM_AUX_NONE ? "aux plane" : NULL;
     }
 }
 
@@ -453,8 +495,7 @@ static int build_config(sim_opts_t *o)
             return -1;
         }
     if ((g->set & SET_RADIUS) && (g->set & SET_LEVELS)) {
-        fputs("bloom_sim: --radius chooses the level count: give --radius or --levels, not both\n",
-              stderr);
+        fputs("bloom_sim: --radius chooses the level count: give --radius or --levels, not both\n", stderr);
         return -1;
     }
     char err[SIM_ERRLEN];

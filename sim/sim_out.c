@@ -72,8 +72,7 @@ FILE *sim_tmp_open(const char *path, char **tmp, char *err, size_t errlen)
     memcpy(*tmp + n, suffix, sizeof suffix);
     int fd = mkstemp(*tmp);
     if (fd < 0) {
-        sim_errf(err, errlen, "%s: cannot create temporary file %s: %s", path, *tmp,
-                 strerror(errno));
+        sim_errf(err, errlen, "%s: cannot create temporary file %s: %s", path, *tmp, strerror(errno));
         free(*tmp);
         *tmp = NULL;
         return NULL;
@@ -83,8 +82,7 @@ FILE *sim_tmp_open(const char *path, char **tmp, char *err, size_t errlen)
     umask(mask);
     FILE *f = NULL;
     if (fchmod(fd, 0666 & ~mask) != 0 || !(f = fdopen(fd, "wb"))) {
-        sim_errf(err, errlen, "%s: cannot set up temporary file %s: %s", path, *tmp,
-                 strerror(errno));
+        sim_errf(err, errlen, "%s: cannot set up temporary file %s: %s", path, *tmp, strerror(errno));
         close(fd);
         tmp_unregister(*tmp);
         remove(*tmp);
@@ -193,8 +191,7 @@ static char *frame_path(const sim_out_t *o, long n)
     return p;
 }
 
-int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den, char *err,
-                 size_t errlen)
+int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den, char *err, size_t errlen)
 {
     *out = NULL;
     sim_out_t *o = calloc(1, sizeof *o);
@@ -214,8 +211,7 @@ int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den,
     static const struct {
         const char *ext;
         sim_out_kind_t kind;
-    } kinds[] = {{".ppm", SIM_OUT_PPM}, {".png", SIM_OUT_PNG}, {".pfm", SIM_OUT_PFM},
-                 {".y4m", SIM_OUT_Y4M}};
+    } kinds[] = {{".ppm", SIM_OUT_PPM}, {".png", SIM_OUT_PNG}, {".pfm", SIM_OUT_PFM}, {".y4m", SIM_OUT_Y4M}};
     int found = 0;
     for (size_t i = 0; dot && (!slash || dot > slash) && i < sizeof kinds / sizeof kinds[0]; i++)
         if (!strcasecmp(dot, kinds[i].ext)) {
@@ -231,8 +227,7 @@ int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den,
         return -1;
     }
     if (o->kind == SIM_OUT_Y4M && o->has_conv) {
-        sim_errf(err, errlen, "output '%s': a .y4m output is one stream; its name takes no %%d",
-                 pattern);
+        sim_errf(err, errlen, "output '%s': a .y4m output is one stream; its name takes no %%d", pattern);
         sim_out_abort(o);
         return -1;
     }
@@ -254,16 +249,28 @@ int sim_out_open(sim_out_t **out, const char *pattern, int fps_num, int fps_den,
     return 0;
 }
 
-sim_out_kind_t sim_out_kind(const sim_out_t *o) { return o->kind; }
-int sim_out_has_number(const sim_out_t *o) { return o->has_conv || o->kind == SIM_OUT_Y4M; }
-const char *sim_out_pattern(const sim_out_t *o) { return o->pattern; }
-long sim_out_count(const sim_out_t *o) { return o->count; }
+sim_out_kind_t sim_out_kind(const sim_out_t *o)
+{
+    return o->kind;
+}
+int sim_out_has_number(const sim_out_t *o)
+{
+    return o->has_conv || o->kind == SIM_OUT_Y4M;
+}
+const char *sim_out_pattern(const sim_out_t *o)
+{
+    return o->pattern;
+}
+long sim_out_count(const sim_out_t *o)
+{
+    return o->count;
+}
 
 /* ---- writers -------------------------------------------------------------- */
 
 /* P6 8-bit, or little-endian PF (rows bottom to top), through a temp file. */
-static int write_pnm(const char *path, int w, int h, const uint8_t *rgb, const float *lin,
-                     char *err, size_t errlen)
+static int write_pnm(const char *path, int w, int h, const uint8_t *rgb, const float *lin, char *err,
+                     size_t errlen)
 {
     char *tmp;
     FILE *f = sim_tmp_open(path, &tmp, err, errlen);
@@ -272,7 +279,8 @@ static int write_pnm(const char *path, int w, int h, const uint8_t *rgb, const f
     int ok;
     const size_t row = (size_t)w * 3u;
     if (rgb) {
-        ok = fprintf(f, "P6\n%d %d\n255\n", w, h) > 0 && fwrite(rgb, 1, row * (size_t)h, f) == row * (size_t)h;
+        ok =
+            fprintf(f, "P6\n%d %d\n255\n", w, h) > 0 && fwrite(rgb, 1, row * (size_t)h, f) == row * (size_t)h;
     } else {
         ok = fprintf(f, "PF\n%d %d\n-1.0\n", w, h) > 0;
         unsigned char b[4];
@@ -303,8 +311,7 @@ static int write_png(const char *path, int w, int h, const uint8_t *rgb, char *e
     return sim_tmp_commit(f, tmp, path, ok, err, errlen);
 }
 
-static int y4m_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, char *err,
-                     size_t errlen)
+static int y4m_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, char *err, size_t errlen)
 {
     const char *path = o->prefix;
     if (!o->f) {
@@ -315,11 +322,11 @@ static int y4m_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, cha
             return -1;
         o->w = w;
         o->h = h;
-        fprintf(o->f, "YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg XYSCSS=420JPEG XCOLORRANGE=LIMITED\n",
-                w, h, o->fps_num, o->fps_den);
+        fprintf(o->f, "YUV4MPEG2 W%d H%d F%d:%d Ip A1:1 C420jpeg XYSCSS=420JPEG XCOLORRANGE=LIMITED\n", w, h,
+                o->fps_num, o->fps_den);
     } else if (w != o->w || h != o->h) {
-        return sim_errf(err, errlen, "%s: frame %ld is %dx%d but the Y4M stream is %dx%d", path, n,
-                        w, h, o->w, o->h);
+        return sim_errf(err, errlen, "%s: frame %ld is %dx%d but the Y4M stream is %dx%d", path, n, w, h,
+                        o->w, o->h);
     }
     size_t bytes = (size_t)w * (size_t)h + 2u * (size_t)((w + 1) / 2) * (size_t)((h + 1) / 2);
     sim_rgb8_to_yuv420(rgb, w, h, o->yuv);
@@ -328,8 +335,8 @@ static int y4m_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, cha
     return 0;
 }
 
-int sim_out_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, const float *lin,
-                  char *err, size_t errlen)
+int sim_out_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, const float *lin, char *err,
+                  size_t errlen)
 {
     int rc;
     if (o->kind == SIM_OUT_Y4M) {
@@ -339,13 +346,16 @@ int sim_out_write(sim_out_t *o, long n, int w, int h, const uint8_t *rgb, const 
             return sim_errf(err, errlen,
                             "output '%s' names one file but there is more than one frame: add a "
                             "frame number, e.g. out_%%04d%s",
-                            o->pattern, o->kind == SIM_OUT_PNG ? ".png" : o->kind == SIM_OUT_PFM ? ".pfm" : ".ppm");
+                            o->pattern,
+                            o->kind == SIM_OUT_PNG   ? ".png"
+                            : o->kind == SIM_OUT_PFM ? ".pfm"
+                                                     : ".ppm");
         char *path = frame_path(o, n);
         if (!path)
             return sim_errf(err, errlen, "out of memory");
-        rc = o->kind == SIM_OUT_PNG ? write_png(path, w, h, rgb, err, errlen)
-                                    : write_pnm(path, w, h, o->kind == SIM_OUT_PPM ? rgb : NULL,
-                                                lin, err, errlen);
+        rc = o->kind == SIM_OUT_PNG
+                 ? write_png(path, w, h, rgb, err, errlen)
+                 : write_pnm(path, w, h, o->kind == SIM_OUT_PPM ? rgb : NULL, lin, err, errlen);
         free(path);
     }
     if (rc == 0)

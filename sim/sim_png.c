@@ -19,11 +19,11 @@ typedef struct {
     unsigned long long pos; /* bytes read so far */
     char *err;
     size_t errlen;
-    int io_failed;          /* err already says what happened */
-    const char *op;         /* "PNG decode failed", "PNG write failed" */
+    int io_failed;  /* err already says what happened */
+    const char *op; /* "PNG decode failed", "PNG write failed" */
     png_bytep data;
     png_bytepp rows;
-    long long left;         /* bytes of the file after what was read so far, -1 unknown */
+    long long left; /* bytes of the file after what was read so far, -1 unknown */
 } png_ctx_t;
 
 static void on_error(png_structp png, png_const_charp msg)
@@ -76,7 +76,8 @@ static int read_body(png_ctx_t *c, png_structp png, png_infop info, img_t *img)
     /* Before anything the size of the image is allocated: the compressed
      * data left in the file must be able to inflate to the stored samples
      * (filter bytes not counted: a bound for interlaced files too). */
-    const unsigned long long stored = (unsigned long long)h *
+    const unsigned long long stored =
+        (unsigned long long)h *
         (((unsigned long long)w * png_get_bit_depth(png, info) * png_get_channels(png, info) + 7) / 8);
     if (c->left >= 0 && stored > (unsigned long long)c->left * PNG_MAX_INFLATE + PNG_MAX_INFLATE)
         return sim_errf(c->err, c->errlen,
@@ -89,8 +90,7 @@ static int read_body(png_ctx_t *c, png_structp png, png_infop info, img_t *img)
     png_read_update_info(png, info);
     const int depth = png_get_bit_depth(png, info), ch = png_get_channels(png, info);
     if ((depth != 8 && depth != 16) || (ch != 1 && ch != 3))
-        return sim_errf(c->err, c->errlen, "PNG layout not supported (%d channels of %d bits)", ch,
-                        depth);
+        return sim_errf(c->err, c->errlen, "PNG layout not supported (%d channels of %d bits)", ch, depth);
     const size_t rowbytes = png_get_rowbytes(png, info);
     if (rowbytes != (size_t)w * (size_t)ch * (size_t)(depth / 8))
         return sim_errf(c->err, c->errlen, "PNG row size %zu unexpected", rowbytes);
@@ -116,8 +116,8 @@ static int read_body(png_ctx_t *c, png_structp png, png_infop info, img_t *img)
         const png_bytep r = c->rows[passes > 1 ? y : 0];
         if (passes == 1) {
             if (sim_img_rows(img, (int)y + 1, &cap))
-                return sim_errf(c->err, c->errlen, "out of memory for a %lux%lu PNG",
-                                (unsigned long)w, (unsigned long)h);
+                return sim_errf(c->err, c->errlen, "out of memory for a %lux%lu PNG", (unsigned long)w,
+                                (unsigned long)h);
             png_read_row(png, r, NULL);
         }
         uint16_t *o = img->u16 + (size_t)y * n;
@@ -152,15 +152,14 @@ int sim_png_read(FILE *f, img_t *img, char *err, size_t errlen)
     return rc;
 }
 
-static int write_body(png_ctx_t *c, png_structp png, png_infop info, const uint8_t *rgb, int w,
-                      int h)
+static int write_body(png_ctx_t *c, png_structp png, png_infop info, const uint8_t *rgb, int w, int h)
 {
     if (setjmp(png_jmpbuf(png)))
         return -1;
     png_init_io(png, c->f);
     png_set_compression_level(png, 3); /* sequences: speed over the last few percent */
-    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < h; y++)
         png_write_row(png, rgb + (size_t)y * (size_t)w * 3u);

@@ -18,20 +18,20 @@ typedef enum { K_PNM, K_PNG, K_JPEG, K_EXR, K_Y4M, K_RAW } kind_t;
 
 struct sim_source {
     char *path;
-    FILE *f;            /* Y4M and raw: the open stream */
+    FILE *f; /* Y4M and raw: the open stream */
     kind_t kind;
-    long frames;        /* -1: unknown until the end (a pipe) */
-    long next;          /* number of the next frame */
+    long frames;            /* -1: unknown until the end (a pipe) */
+    long next;              /* number of the next frame */
     unsigned long long pos; /* bytes of the stream consumed */
     sim_input_opts_t o;
     int w, h;
     int sx, sy, mono, full; /* Y4M chroma subsampling (log2), luma only, full range */
     int fps_num, fps_den;
-    size_t frame_bytes;     /* Y4M payload or raw frame, bytes */
-    size_t stride;          /* raw row bytes */
+    size_t frame_bytes; /* Y4M payload or raw frame, bytes */
+    size_t stride;      /* raw row bytes */
     unsigned char *buf;
-    size_t cap;             /* bytes allocated at buf */
-    size_t errlen;          /* of the caller's err buffer */
+    size_t cap;    /* bytes allocated at buf */
+    size_t errlen; /* of the caller's err buffer */
     char desc[160];
 };
 
@@ -52,8 +52,14 @@ static int src_err(const sim_source_t *s, long frame, char *err, const char *fmt
     return -1;
 }
 
-long sim_source_frames(const sim_source_t *s) { return s->frames; }
-const char *sim_source_desc(const sim_source_t *s) { return s->desc; }
+long sim_source_frames(const sim_source_t *s)
+{
+    return s->frames;
+}
+const char *sim_source_desc(const sim_source_t *s)
+{
+    return s->desc;
+}
 
 int sim_source_fps(const sim_source_t *s, int *num, int *den)
 {
@@ -178,11 +184,12 @@ static int y4m_frame_header(sim_source_t *s, char *err)
     if (n == -1)
         return 0;
     if (n == -2)
-        return src_err(s, s->next, err, "truncated: the file ends inside the frame header (byte offset %llu)", at);
+        return src_err(s, s->next, err, "truncated: the file ends inside the frame header (byte offset %llu)",
+                       at);
     if (n == -3 || strncmp(line, "FRAME", 5) || (line[5] != '\0' && line[5] != ' ')) {
         line[n == -3 || n > 40 ? 40 : n] = '\0';
-        return src_err(s, s->next, err, "bad frame header at byte offset %llu: expected \"FRAME\", got \"%s\"",
-                       at, line);
+        return src_err(s, s->next, err,
+                       "bad frame header at byte offset %llu: expected \"FRAME\", got \"%s\"", at, line);
     }
     return 1;
 }
@@ -228,8 +235,7 @@ static void y4m_convert(const sim_source_t *s, sim_frame_t *f)
         for (int x = 0; x < s->w; x++) {
             size_t i = (size_t)y * (size_t)s->w + (size_t)x;
             size_t c = ((size_t)y >> s->sy) * cw + ((size_t)x >> s->sx); /* nearest chroma */
-            sim_ycbcr_to_rgb(yp[i], s->mono ? 128 : up[c], s->mono ? 128 : vp[c], s->full,
-                             f->px + 3 * i);
+            sim_ycbcr_to_rgb(yp[i], s->mono ? 128 : up[c], s->mono ? 128 : vp[c], s->full, f->px + 3 * i);
         }
 }
 
@@ -237,7 +243,10 @@ static void y4m_convert(const sim_source_t *s, sim_frame_t *f)
 
 static const char *raw_name(sim_raw_fmt_t fmt)
 {
-    return fmt == SIM_RAW_YUYV ? "YUYV" : fmt == SIM_RAW_RGB24 ? "RGB24" : fmt == SIM_RAW_GREY ? "GREY" : "RGB565";
+    return fmt == SIM_RAW_YUYV    ? "YUYV"
+           : fmt == SIM_RAW_RGB24 ? "RGB24"
+           : fmt == SIM_RAW_GREY  ? "GREY"
+                                  : "RGB565";
 }
 
 static int raw_setup(sim_source_t *s, off_t size, int regular, char *err)
@@ -246,18 +255,19 @@ static int raw_setup(sim_source_t *s, off_t size, int regular, char *err)
     s->w = s->o.raw_w;
     s->h = s->o.raw_h;
     if (s->w < 1 || s->h < 1 || s->w > BLOOM_MAX_DIM || s->h > BLOOM_MAX_DIM)
-        return src_err(s, 0, err, "raw frames of %dx%d: each side must be 1..%d (the engine's limit)",
-                       s->w, s->h, BLOOM_MAX_DIM);
+        return src_err(s, 0, err, "raw frames of %dx%d: each side must be 1..%d (the engine's limit)", s->w,
+                       s->h, BLOOM_MAX_DIM);
     if (s->o.raw_fmt == SIM_RAW_YUYV && s->w % 2)
         return src_err(s, 0, err, "YUYV needs an even width (got %d)", s->w);
     s->stride = s->o.raw_stride ? (size_t)s->o.raw_stride : (size_t)s->w * (size_t)bpp;
     if (s->stride < (size_t)s->w * (size_t)bpp)
-        return src_err(s, 0, err, "--raw-stride %zu is less than %d pixels of %d bytes", s->stride, s->w, bpp);
+        return src_err(s, 0, err, "--raw-stride %zu is less than %d pixels of %d bytes", s->stride, s->w,
+                       bpp);
     if (s->stride > SIZE_MAX / 2 / (size_t)s->h)
         return src_err(s, 0, err, "frames of %zu x %d bytes are too large", s->stride, s->h);
     s->frame_bytes = s->stride * (size_t)s->h;
-    snprintf(s->desc, sizeof s->desc, "raw %s %dx%d, %zu bytes per frame", raw_name(s->o.raw_fmt), s->w,
-             s->h, s->frame_bytes);
+    snprintf(s->desc, sizeof s->desc, "raw %s %dx%d, %zu bytes per frame", raw_name(s->o.raw_fmt), s->w, s->h,
+             s->frame_bytes);
     if (!regular)
         return 0;
     if (size == 0)
@@ -337,8 +347,7 @@ static int detect(sim_source_t *s, const unsigned char *m, size_t n, char *err)
     return 0;
 }
 
-int sim_source_open(sim_source_t **out, const char *path, const sim_input_opts_t *o, char *err,
-                    size_t errlen)
+int sim_source_open(sim_source_t **out, const char *path, const sim_input_opts_t *o, char *err, size_t errlen)
 {
     *out = NULL;
     sim_source_t *s = calloc(1, sizeof *s);
@@ -433,7 +442,9 @@ static int read_image(sim_source_t *s, sim_frame_t *f, char *err)
     }
     if (rc) /* each decoder refuses a side above BLOOM_MAX_DIM as it reads the header */
         return src_err(s, 0, err, "%s", why);
-    const char *what = s->kind == K_PNM ? (im.f32 ? "PFM" : im.channels == 1 ? "PGM" : "PPM")
+    const char *what = s->kind == K_PNM ? (im.f32             ? "PFM"
+                                           : im.channels == 1 ? "PGM"
+                                                              : "PPM")
                                         : kind_name(s->kind);
     if (im.f32)
         snprintf(s->desc, sizeof s->desc, "%s %dx%d float %s -> linear", what, im.width, im.height,
@@ -441,8 +452,9 @@ static int read_image(sim_source_t *s, sim_frame_t *f, char *err)
     else
         snprintf(s->desc, sizeof s->desc, "%s %dx%d %d-bit %s%s", what, im.width, im.height,
                  im.maxval > 255 ? 16 : 8, im.channels == 1 ? "grey" : "RGB",
-                 im.maxval <= 255 ? " (sRGB codes)" : s->o.decode16_srgb ? " -> linear (sRGB-encoded)"
-                                                                          : " -> linear (linear light)");
+                 im.maxval <= 255     ? " (sRGB codes)"
+                 : s->o.decode16_srgb ? " -> linear (sRGB-encoded)"
+                                      : " -> linear (linear light)");
     rc = sim_frame_from_img(&im, s->o.decode16_srgb, f);
     img_free(&im);
     if (rc)

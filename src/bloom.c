@@ -735,8 +735,8 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
         return pull_row(b, dst_row);
     }
 #endif
-    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes,
-                                     same, b->out_n, (const uint8_t *)dst_row))
+    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes, same,
+                                     b->out_n, (const uint8_t *)dst_row))
         return BLOOM_E_ALIAS;
     return pull_row(b, dst_row);
 }
@@ -746,7 +746,8 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
  * sign of the stride. */
 static void span(const uint8_t *p, ptrdiff_t stride, int r0, int r1, uintptr_t *lo, uintptr_t *hi)
 {
-    const uintptr_t a = (uintptr_t)(p + (ptrdiff_t)r0 * stride), z = (uintptr_t)(p + (ptrdiff_t)(r1 - 1) * stride);
+    const uintptr_t a = (uintptr_t)(p + (ptrdiff_t)r0 * stride),
+                    z = (uintptr_t)(p + (ptrdiff_t)(r1 - 1) * stride);
     *lo = a < z ? a : z;
     *hi = a < z ? z : a;
 }
@@ -774,8 +775,8 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 #endif
 }
 
-bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows,
-                              void *dst, ptrdiff_t dst_stride)
+bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
+                              ptrdiff_t dst_stride)
 {
     if (!b || !src || !dst)
         return BLOOM_E_NULL;
@@ -806,7 +807,8 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         const int r = bloom_rows_in(b);
         if (r == end)
             return BLOOM_OK;
-        st = bloom_push_row_aux(b, s + (ptrdiff_t)r * src_stride, aux ? aux + (ptrdiff_t)r * aux_stride : NULL);
+        st = bloom_push_row_aux(b, s + (ptrdiff_t)r * src_stride,
+                                aux ? aux + (ptrdiff_t)r * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
     }

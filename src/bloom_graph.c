@@ -292,7 +292,8 @@ bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, blo
     dry_frame(g);
     if (info) {
         bloom_info_fill(info, g->L, g->w, g->h, g->latency, g->need_src, &g->knee, &g->out);
-        const uint64_t bytes = bloom_graph_carve(g, NULL, info->ring_bytes); /* adds to the zeroed ring_bytes */
+        const uint64_t bytes =
+            bloom_graph_carve(g, NULL, info->ring_bytes); /* adds to the zeroed ring_bytes */
         if (bytes > SIZE_MAX)
             return BLOOM_E_TOO_BIG;
         info->workspace_bytes = (size_t)bytes;

@@ -52,26 +52,26 @@ typedef struct {
 
 struct bg_node {
     bg_row_fn fn;
-    int w, h, ch;   /* size; ch = samples per pixel (1 or 3) */
-    int level;      /* pyramid level it belongs to (row memory per level) */
+    int w, h, ch; /* size; ch = samples per pixel (1 or 3) */
+    int level;    /* pyramid level it belongs to (row memory per level) */
     int nin;
     bg_input_t in[BG_MAX_IN];
-    uint32_t k[4];  /* the row function's constants */
+    uint32_t k[4]; /* the row function's constants */
     /* ring (not for the output node) */
     uint32_t *buf;
     int32_t *tag;
     int cap;
-    int next;       /* next row to compute */
-    int need;       /* dry run: largest occupancy */
+    int next; /* next row to compute */
+    int need; /* dry run: largest occupancy */
 };
 
 struct bloom_graph {
     bloom_config_t cfg;
-    int L;                                         /* pyramid depth the preset uses */
+    int L; /* pyramid depth the preset uses */
     int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
-    bloom_knee_t knee;                             /* threshold and knee, Q12.20 */
-    bloom_out_t out;                               /* formats, sRGB or linear, I_q */
-    bloom_kernels_t kern;                          /* row kernels (C or SIMD, same bits) */
+    bloom_knee_t knee;    /* threshold and knee, Q12.20 */
+    bloom_out_t out;      /* formats, sRGB or linear, I_q */
+    bloom_kernels_t kern; /* row kernels (C or SIMD, same bits) */
     int nnodes, out_node;
     bg_node_t node[BG_MAX_NODES];
     /* scratch rows for row functions: BG_SCRATCH rows of scratch_len words */

@@ -30,8 +30,8 @@ void bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *co
 
 /* Input 0: the same level's row (BG_SAME 0..0); input 1: the level below,
  * rows m-1 .. m+1 (BG_UP). dst = in0 + tent(in1). */
-void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r,
-                    const void *const *const in[BG_MAX_IN], void *dst)
+void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
@@ -42,8 +42,8 @@ void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r,
 /* The output node of the additive pipelines. Input 0: the source row
  * (BG_SAME 0..0); input 1: level 1, rows m-1 .. m+1 (BG_UP).
  * out = S + I * tent(in1), encoded (bloom_row_out_c). */
-void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r,
-                   const void *const *const in[BG_MAX_IN], void *dst)
+void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                   void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};

@@ -8,10 +8,10 @@ void bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *con
               void *dst);
 void bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                void *dst);
-void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r,
-                    const void *const *const in[BG_MAX_IN], void *dst);
-void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r,
-                   const void *const *const in[BG_MAX_IN], void *dst);
+void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                    void *dst);
+void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                   void *dst);
 
 /* The default pipeline's down and up chains with d1_fn making level 1
  * (input 0: source rows 2r-1 .. 2r+2; input 1 with d1_aux: aux rows

@@ -46,11 +46,11 @@ static inline uint64_t bloom_align8(uint64_t n)
 {
     return (n + 7u) & ~(uint64_t)7u;
 }
-#define BLOOM_TAKE(base, off, ptr, type, count)                          \
-    do {                                                                \
-        if (base)                                                       \
-            (ptr) = (type *)(void *)((base) + (size_t)(off));           \
-        (off) = bloom_align8((off) + sizeof(type) * (uint64_t)(count)); \
+#define BLOOM_TAKE(base, off, ptr, type, count)                                                              \
+    do {                                                                                                     \
+        if (base)                                                                                            \
+            (ptr) = (type *)(void *)((base) + (size_t)(off));                                                \
+        (off) = bloom_align8((off) + sizeof(type) * (uint64_t)(count));                                      \
     } while (0)
 
 /* Rounding without bias (sim/docs/fixed-point.md, "Rounding without
@@ -125,19 +125,19 @@ uint32_t bloom_srgb_to_linear_q16(uint32_t i);
  * dst (width dw = ceil(sw / 2)). */
 void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 /* The same, reading encoded pixels of fmt (decoding on the fly). */
-void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
-                         uint32_t *dst, int dw, int sw);
+void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                         int sw);
 /* The soft knee on a row of level-1 pixels, in place. */
 bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn); /* any non-zero */
 /* Tent up: destination columns x0 .. x0+n-1 of the row whose parity is odd,
  * from rows u[0..2] (width sw). dst[i] (and add[i] if add is not NULL) is
  * column x0 + i; dst = tent + add. add may equal dst. */
-void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                      int x0, int n, int sw);
+void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
+                      int sw);
 /* Output: tent of u[0..2] onto the full-resolution row, composite with the
  * source row src, encode into dst. */
-void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
-                     int sw, const bloom_out_t *o);
+void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w, int sw,
+                     const bloom_out_t *o);
 
 /* The same box for destination columns xa .. xb-1 only (dst is the row). */
 void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, int xb, int sw);
@@ -160,8 +160,8 @@ void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
  * result). The SIMD twins write the zeros of 4-pixel blocks whose 4 x 10
  * source codes are all at most the dark codes dk (the knee zeroes them)
  * without computing the box: same bits. */
-bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                    int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
+                    const bloom_knee_t *kn, const bloom_dark_t *dk);
 /* bloom_row_box_src_c for destination pixels xa .. xb-1 only (dst is the
  * row); not in BLOOM_SMALL builds. */
 void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
@@ -183,12 +183,13 @@ void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bo
 /* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
  * the C ones, or SIMD twins that give the same bits. */
 typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add,
-                              uint32_t *dst, int x0, int n, int sw);
+typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                              int n, int sw);
 typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
-                            int dw, int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
-typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
+typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                            int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst,
+                                   int n);
 typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
 typedef void (*bloom_eo_fn)(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
@@ -199,13 +200,14 @@ typedef void (*bloom_eo_fn)(bloom_format_t in_fmt, bloom_format_t out_fmt, bool 
  * even and odd columns (ht), the two interleaved with add (il); a chunk
  * whose rows hold a value of 2^29 or more (the flat sums could wrap) and
  * any other call go to exact. Same bits as bloom_row_tent_c. */
-typedef uint32_t (*bloom_vtent_in_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
-                                      uint32_t *in_or);
-typedef void (*bloom_il_add_fn)(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
-void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
-                         int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
-                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                                       int x0, int n, int sw));
+typedef uint32_t (*bloom_vtent_in_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst,
+                                      int n, uint32_t *in_or);
+typedef void (*bloom_il_add_fn)(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst,
+                                int n);
+void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                         int n, int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
+                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add,
+                                       uint32_t *dst, int x0, int n, int sw));
 /* dst pixels 0 .. n-1 = the even/odd columns e, o interleaved (pixel x is
  * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
 void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
@@ -228,15 +230,15 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
  * even/odd columns, fused composite and encode), which relies on the bound
  * of the default pipeline: u values at most 16 * 2^F (sums of at most 16
  * decoded 8/6/5-bit samples). */
-void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
-                     const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o);
+void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
+                     uint8_t *dst, int w, int sw, const bloom_out_t *o);
 
 /* Which SIMD twins this build has (bloom_row_sse2.c, bloom_row_neon.c). */
 #if !BLOOM_NO_SIMD && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
 #define BLOOM_SIMD_SSE2 1
 void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
-                             uint32_t *dst, int x0, int n, int sw);
+void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                             int n, int sw);
 void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
                        int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
@@ -247,8 +249,8 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
 bool bloom_cpu_avx2(void);
-bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                       const bloom_knee_t *kn, const bloom_dark_t *dk);
+bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
 void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
                          int n, int sw);
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
@@ -259,8 +261,8 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
 #define BLOOM_SIMD_NEON 1
 void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
-                             uint32_t *dst, int x0, int n, int sw);
+void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                             int n, int sw);
 void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
                        int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
@@ -297,8 +299,8 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 typedef struct {
     uint32_t *buf;
     int32_t *tag;
-    int cap;    /* rows */
-    int width;  /* pixels */
+    int cap;   /* rows */
+    int width; /* pixels */
 } bloom_ring_t;
 
 struct bloom_graph;
@@ -327,9 +329,9 @@ struct bloom {
     int src_n, out_n;
     int d_next[BLOOM_MAX_LEVELS + 1], u_next[BLOOM_MAX_LEVELS + 1], e_next;
     bool failed;
-    bool skip;                /* zero-row shortcuts on (not BLOOM_FLAG_NO_SKIP) */
+    bool skip; /* zero-row shortcuts on (not BLOOM_FLAG_NO_SKIP) */
     bloom_dark_t dark;
-    uint32_t *zero_row;       /* w[1] pixels of zeros: what zero rows read as */
+    uint32_t *zero_row; /* w[1] pixels of zeros: what zero rows read as */
 
     /* dry run (sizing): no buffers, only the largest ring occupancy */
     bool dry;

@@ -33,34 +33,60 @@ int bloom_format_bpp(bloom_format_t fmt)
 const char *bloom_status_str(bloom_status_t st)
 {
     switch (st) {
-    case BLOOM_OK: return "ok";
-    case BLOOM_AGAIN: return "no output row ready: push more source rows";
-    case BLOOM_DONE: return "frame complete";
-    case BLOOM_E_NULL: return "null pointer argument";
-    case BLOOM_E_SIZE: return "width and height must be 1 .. 16384";
-    case BLOOM_E_LEVELS: return "levels must be 1 .. 16";
-    case BLOOM_E_THRESHOLD: return "threshold above 256.0 (Q16.16 16777216)";
-    case BLOOM_E_KNEE: return "soft knee above 1.0 (Q16.16 65536)";
-    case BLOOM_E_INTENSITY: return "intensity above 10.0 (Q16.16 655360)";
-    case BLOOM_E_FORMAT: return "pixel format unknown or compiled out";
-    case BLOOM_E_FLAGS: return "unknown flag bits";
-    case BLOOM_E_WORKSPACE: return "workspace smaller than bloom_workspace_size()";
-    case BLOOM_E_ALIGN: return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
-    case BLOOM_E_BUSY: return "source ring full: pull output rows before pushing more";
-    case BLOOM_E_STATE: return "call out of order (push after the last row, or no bloom_begin)";
-    case BLOOM_E_INTERNAL: return "internal error: a ring row was overwritten while needed";
-    case BLOOM_E_TOO_BIG: return "workspace larger than the address space (fewer levels or a smaller frame)";
-    case BLOOM_E_PRESET: return "preset unknown or compiled out";
-    case BLOOM_E_AUX: return "aux plane missing, not used by the preset, or of unknown format";
-    case BLOOM_E_ALIAS: return "dst overlaps src rows still needed (in place: same format, stride)";
+    case BLOOM_OK:
+        return "ok";
+    case BLOOM_AGAIN:
+        return "no output row ready: push more source rows";
+    case BLOOM_DONE:
+        return "frame complete";
+    case BLOOM_E_NULL:
+        return "null pointer argument";
+    case BLOOM_E_SIZE:
+        return "width and height must be 1 .. 16384";
+    case BLOOM_E_LEVELS:
+        return "levels must be 1 .. 16";
+    case BLOOM_E_THRESHOLD:
+        return "threshold above 256.0 (Q16.16 16777216)";
+    case BLOOM_E_KNEE:
+        return "soft knee above 1.0 (Q16.16 65536)";
+    case BLOOM_E_INTENSITY:
+        return "intensity above 10.0 (Q16.16 655360)";
+    case BLOOM_E_FORMAT:
+        return "pixel format unknown or compiled out";
+    case BLOOM_E_FLAGS:
+        return "unknown flag bits";
+    case BLOOM_E_WORKSPACE:
+        return "workspace smaller than bloom_workspace_size()";
+    case BLOOM_E_ALIGN:
+        return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
+    case BLOOM_E_BUSY:
+        return "source ring full: pull output rows before pushing more";
+    case BLOOM_E_STATE:
+        return "call out of order (push after the last row, or no bloom_begin)";
+    case BLOOM_E_INTERNAL:
+        return "internal error: a ring row was overwritten while needed";
+    case BLOOM_E_TOO_BIG:
+        return "workspace larger than the address space (fewer levels or a smaller frame)";
+    case BLOOM_E_PRESET:
+        return "preset unknown or compiled out";
+    case BLOOM_E_AUX:
+        return "aux plane missing, not used by the preset, or of unknown format";
+    case BLOOM_E_ALIAS:
+        return "dst overlaps src rows still needed (in place: same format, stride)";
 #if BLOOM_USE_GRAPH /* only presets other than the default return these */
-    case BLOOM_E_STRENGTH: return "strength above 16.0 (Q16.16 1048576)";
-    case BLOOM_E_PASSES: return "Kawase passes must be 1 .. 8";
-    case BLOOM_E_ATTENUATION: return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
-    case BLOOM_E_WEIGHT: return "level weight above 1.0 (Q16.16 65536)";
-    case BLOOM_E_TINT: return "tint above 1.0 (Q16.16 65536)";
+    case BLOOM_E_STRENGTH:
+        return "strength above 16.0 (Q16.16 1048576)";
+    case BLOOM_E_PASSES:
+        return "Kawase passes must be 1 .. 8";
+    case BLOOM_E_ATTENUATION:
+        return "attenuation or maximum reduction above 1.0 (Q16.16 65536)";
+    case BLOOM_E_WEIGHT:
+        return "level weight above 1.0 (Q16.16 65536)";
+    case BLOOM_E_TINT:
+        return "tint above 1.0 (Q16.16 65536)";
 #else
-    default: break;
+    default:
+        break;
 #endif
     }
     return "unknown status";

@@ -9,8 +9,7 @@
  * next threshold (gen_tables checks no bucket holds two thresholds). */
 #if BLOOM_SMALL
 /* The number of c in 1..n with v >= t[c], by binary search. */
-static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
-                                uint32_t n)
+static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t, uint32_t n)
 {
     (void)bkt;
     (void)shift;
@@ -22,8 +21,7 @@ static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const
 }
 #define BKT(name) NULL
 #else
-static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
-                                uint32_t n)
+static inline uint32_t enc_srgb(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t, uint32_t n)
 {
     if (v > BLOOM_LIN_ONE)
         v = BLOOM_LIN_ONE;
@@ -40,9 +38,13 @@ static inline uint32_t enc_linear(uint32_t v, uint32_t n)
     return (v * n + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
 }
 
-#define ENC8(v, lin) ((lin) ? enc_linear(v, 255) : enc_srgb(v, BKT(bloom_srgb_bkt8), BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255))
-#define ENC6(v, lin) ((lin) ? enc_linear(v, 63) : enc_srgb(v, BKT(bloom_srgb_bkt6), BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63))
-#define ENC5(v, lin) ((lin) ? enc_linear(v, 31) : enc_srgb(v, BKT(bloom_srgb_bkt5), BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31))
+#define ENC8(v, lin)                                                                                         \
+    ((lin) ? enc_linear(v, 255)                                                                              \
+           : enc_srgb(v, BKT(bloom_srgb_bkt8), BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255))
+#define ENC6(v, lin)                                                                                         \
+    ((lin) ? enc_linear(v, 63) : enc_srgb(v, BKT(bloom_srgb_bkt6), BLOOM_LIN_BITS - 10, bloom_srgb_enc6, 63))
+#define ENC5(v, lin)                                                                                         \
+    ((lin) ? enc_linear(v, 31) : enc_srgb(v, BKT(bloom_srgb_bkt5), BLOOM_LIN_BITS - 9, bloom_srgb_enc5, 31))
 
 /* One loop per format; `lin` is a constant at each call site, so the
  * compiler drops the other curve. */

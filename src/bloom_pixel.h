@@ -77,8 +77,8 @@ void bloom_encode_row(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_
  * t[n] first, so the bucket code is at most n - 1 (the top threshold is not
  * at a bucket start: tests/test_simd.c checks it for the tables built in)
  * and t[c + 1] exists. Every v >= t[n] gives n, as the reference does. */
-static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bkt, int shift, const uint32_t *t,
-                                                   uint32_t n)
+static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bkt, int shift,
+                                                   const uint32_t *t, uint32_t n)
 {
     const uint32_t top = t[n], *next = t + 1;
     v = v < top ? v : top;

@@ -4,8 +4,8 @@
 
 #include "bloom_graph.h"
 
-static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity", "gamedev", "xna",
-                                                               "attenuation", "arm", "cod"};
+static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity",       "gamedev", "xna",
+                                                             "attenuation", "arm",     "cod"};
 
 const char *bloom_preset_name(bloom_preset_t p)
 {
@@ -49,7 +49,8 @@ uint32_t bloom_preset_params(bloom_preset_t p)
         [BLOOM_PRESET_XNA] = BLOOM_PARAM_PASSES | BLOOM_PARAM_SATURATE,
         [BLOOM_PRESET_ATTENUATION] = BLOOM_PARAM_ATTENUATION | BLOOM_PARAM_MAX_REDUCTION | BLOOM_PARAM_AUX,
         [BLOOM_PRESET_ARM] = BLOOM_PARAM_STRENGTH | BLOOM_PARAM_AUX | BLOOM_PARAM_TINT | BLOOM_PARAM_BAKED,
-        [BLOOM_PRESET_COD] = BLOOM_PARAM_TINT | BLOOM_PARAM_WEIGHTS | BLOOM_PARAM_ADDITIVE | BLOOM_PARAM_RADIUS,
+        [BLOOM_PRESET_COD] =
+            BLOOM_PARAM_TINT | BLOOM_PARAM_WEIGHTS | BLOOM_PARAM_ADDITIVE | BLOOM_PARAM_RADIUS,
     };
     return (unsigned)p < BLOOM_PRESET_COUNT ? reads[p] : 0u;
 }

@@ -83,29 +83,32 @@ static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
             row[x] = 0;
         } else if (b >= hi) {
             row[x] = b - t; /* soft < K <= b - T */
-        } else {              /* T - K < b < T + K: K >= 1 */
+        } else {            /* T - K < b < T + K: K >= 1 */
             const uint64_t xx = (uint64_t)(b - cut);
             const uint32_t den = 8u * k + BLOOM_KNEE_E8;
             const uint32_t soft = bloom_div_u64_u32(2u * xx * xx + den / 2u, den);
             row[x] = b > t && b - t > soft ? b - t : soft;
         }
         if ((uint64_t)b * 100000u < (1ull << BLOOM_LIN_BITS)) /* tiny b: v * b / 0.00001 */
-            row[x] = (uint32_t)(((uint64_t)row[x] * b * 100000u + (1u << (BLOOM_LIN_BITS - 1))) >> BLOOM_LIN_BITS);
+            row[x] =
+                (uint32_t)(((uint64_t)row[x] * b * 100000u + (1u << (BLOOM_LIN_BITS - 1))) >> BLOOM_LIN_BITS);
     }
 }
 
 static inline uint32_t lum3(const uint32_t *o)
 {
     /* Y <= M: 64-bit products (Q24 weights x 2^28, their sum < 2^53) */
-    return (uint32_t)((ARM_WR * (uint64_t)o[0] + ARM_WG * (uint64_t)o[1] + ARM_WB * (uint64_t)o[2] + (1u << 23)) >> 24);
+    return (uint32_t)((ARM_WR * (uint64_t)o[0] + ARM_WG * (uint64_t)o[1] + ARM_WB * (uint64_t)o[2] +
+                       (1u << 23)) >>
+                      24);
 }
 
 /* Y of n source pixels, decoded inline (one loop per format and curve). */
-#define ARM_LUM_LOOP(step, dec)                  \
-    for (int x = 0; x < n; x++, p += (step)) { \
-        uint32_t o[3];                           \
-        dec;                                     \
-        y[x] = lum3(o);                          \
+#define ARM_LUM_LOOP(step, dec)                                                                              \
+    for (int x = 0; x < n; x++, p += (step)) {                                                               \
+        uint32_t o[3];                                                                                       \
+        dec;                                                                                                 \
+        y[x] = lum3(o);                                                                                      \
     }
 static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y, int n)
 {
@@ -207,8 +210,8 @@ static void fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
  * 11a(n-1) + 28a(n) + a(n+1) + v(n-1) + 3v(n), odd 2n+1 mirrored; the sum
  * S <= 192M is 64-bit; out = floor((S + 96) / 192) = floor(q / 3),
  * q = (S + 96) >> 6 < 2^30, q / 3 = (q * 0xAAAAAAAB) >> 33. */
-static void up_row(const bloom_graph_t *g, const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int odd,
-                   uint32_t *dst, int dw, int sw)
+static void up_row(const bloom_graph_t *g, const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
+                   int odd, uint32_t *dst, int dw, int sw)
 {
     uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
     if (odd) {
@@ -316,8 +319,8 @@ static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
     const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
     for (int x0 = 0; x0 < w; x0 += 256) { /* chunks of 256 pixels stay in the cache */
         const int cn = imin(256, w - x0);
-        bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][0] + (size_t)x0 * (size_t)g->src_bpp,
-                         v, cn);
+        bloom_decode_row(g->out.in_fmt, g->out.linear,
+                         (const uint8_t *)in[0][0] + (size_t)x0 * (size_t)g->src_bpp, v, cn);
         for (int x = 0; x < cn; x++) {
             const uint64_t f = ((uint64_t)aux_q24(map, x0 + x, u16) * strength + 32768u) >> 16;
             const uint64_t m = one + f;

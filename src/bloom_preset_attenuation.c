@@ -14,8 +14,8 @@
 
 #if BLOOM_USE_ATTENUATION
 
-static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                     void *dst)
+static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
+                     const void *const *const in[BG_MAX_IN], void *dst)
 {
     uint32_t *row = (uint32_t *)dst;
     bg_fn_d1(g, n, r, in, dst);
@@ -24,7 +24,8 @@ static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r, const vo
     for (int x = 0; x < n->w; x++) {
         const int x0 = 2 * x, x1 = 2 * x + 1 < w0 ? 2 * x + 1 : w0 - 1;
         const uint32_t d = (bg_aux_q24(g, in[1][0], x0) + bg_aux_q24(g, in[1][0], x1) +
-                            bg_aux_q24(g, in[1][1], x0) + bg_aux_q24(g, in[1][1], x1) + 2u) >> 2;
+                            bg_aux_q24(g, in[1][1], x0) + bg_aux_q24(g, in[1][1], x1) + 2u) >>
+                           2;
         uint32_t f = (1u << 24) - (uint32_t)(((uint64_t)a * ((1u << 24) - d) + 32768u) >> 16);
         if (f < rmin << 8)
             f = rmin << 8;

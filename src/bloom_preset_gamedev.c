@@ -326,7 +326,7 @@ static bloom_status_t build(bloom_graph_t *g)
 {
     bg_levels(g, GD_LEVELS);
     const int L = g->L;
-    g->knee.k = 0;                       /* no soft knee: bloom_query reports knee_q = 0 */
+    g->knee.k = 0;                        /* no soft knee: bloom_query reports knee_q = 0 */
     g->out.intensity = g->cfg.p.strength; /* ... and intensity_q = the strength (linear Q16.16) */
     int D[GD_LEVELS + 1];
     D[1] = bg_node(g, gd_d1, g->w[1], g->h[1], 3, 1);

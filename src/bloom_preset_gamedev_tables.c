@@ -2,6 +2,7 @@
  * Output thresholds of the gamedev preset, Q12.20: code k of n is the
  * number of T[1..n] at or below the composite c (Reinhard, then gamma
  * 1/2.2, or linear). sim/docs/presets/gamedev.md, "Output". */
+/* clang-format off */
 #include "bloom_preset_gamedev.h"
 
 #if BLOOM_USE_GAMEDEV

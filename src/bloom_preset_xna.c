@@ -46,8 +46,8 @@ static void fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
 
 /* Quarter resolution: 4x4 box of H, then the threshold subtraction (and
  * the clamp to 1.0 with SATURATE). Input 0: H rows base-1 .. base+2. */
-static void fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                       void *dst)
+static void fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
+                       const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
@@ -79,8 +79,8 @@ static void kawase_h(const uint32_t *cs, uint32_t *dst, int xa, int xb, int i, i
  * of the previous pass (or Q); the pass reads the first two and the last
  * two of them. k[1]: XNA_FIRST/LAST/SAT; k[2], k[3]: low and high word of
  * the range-restore factor f (Q24, up to 2^40). */
-static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                      void *dst)
+static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
+                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
     const int i = (int)n->k[0], w = n->w, cnt = 3 * w;
@@ -158,7 +158,8 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
             for (int j = 0; j < 3 * cnt; j++) {
                 const uint32_t b = bl[j] > BLOOM_LIN_ONE ? BLOOM_LIN_ONE : bl[j];
                 /* S (1 - b): S < 2^28, 1 - b <= 2^F: below 2^48 */
-                const uint64_t p = ((uint64_t)sv[j] * (BLOOM_LIN_ONE - b) + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
+                const uint64_t p =
+                    ((uint64_t)sv[j] * (BLOOM_LIN_ONE - b) + (BLOOM_LIN_ONE >> 1)) >> BLOOM_LIN_BITS;
                 bl[j] = b + (uint32_t)p;
             }
         }

@@ -79,8 +79,8 @@ static BLOOM_ALWAYS_INLINE void colsum4_src(const uint8_t *const s[4], bloom_for
         out[ch] = a[ch] + b[ch] + c[ch] + d[ch];
 }
 
-static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
-                                        size_t bpp, uint32_t *dst, int dw, int sw)
+static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin, size_t bpp,
+                                        uint32_t *dst, int dw, int sw)
 {
     uint32_t a[3], b[3], c[3], d[3];
     colsum4_src(s, fmt, lin, 0, a); /* column 2x-1 = -1 clamps to 0 */
@@ -186,8 +186,8 @@ static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_f
     }
 }
 
-static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
-                                        size_t bpp, uint32_t *dst, int dw, int sw)
+static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin, size_t bpp,
+                                        uint32_t *dst, int dw, int sw)
 {
     box_src_range(s, fmt, lin, bpp, dst, 0, dw, sw);
 }
@@ -237,8 +237,8 @@ void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bo
 }
 #endif
 
-void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear,
-                         uint32_t *dst, int dw, int sw)
+void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                         int sw)
 {
     switch (fmt) {
 #if BLOOM_USE_RGB565
@@ -332,8 +332,8 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
     return any != 0;
 }
 
-bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                    int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
+                    const bloom_knee_t *kn, const bloom_dark_t *dk)
 {
     (void)dk;
     bloom_row_box_src_c(s, fmt, linear, dst, dw, sw);
@@ -344,8 +344,8 @@ bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, 
  * below 2^32, so the weighted sums need 64 bits (one UMLAL per tap on
  * Cortex-M); the results fit in 32 again. `odd` is a constant after
  * inlining, so the weights are shifts and adds. */
-static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
-                                      int odd, uint32_t v[3])
+static BLOOM_ALWAYS_INLINE void vtent(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int odd,
+                                      uint32_t v[3])
 {
     for (int ch = 0; ch < 3; ch++) {
         const uint64_t a = u0[ch], b = u1[ch], c = u2[ch];
@@ -399,8 +399,8 @@ static BLOOM_ALWAYS_INLINE void tent_impl(const uint32_t *const u[3], int odd, c
 }
 
 /* The row parity as a constant: four specializations. */
-static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const uint32_t *add,
-                                     uint32_t *dst, int x0, int n, int sw, bool has_add)
+static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
+                                     int x0, int n, int sw, bool has_add)
 {
     if (odd)
         tent_impl(u, 1, add, dst, x0, n, sw, has_add);
@@ -408,8 +408,8 @@ static BLOOM_ALWAYS_INLINE void tent(const uint32_t *const u[3], int odd, const 
         tent_impl(u, 0, add, dst, x0, n, sw, has_add);
 }
 
-void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                      int x0, int n, int sw)
+void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
+                      int sw)
 {
     if (add)
         tent(u, odd, add, dst, x0, n, sw, true);
@@ -461,8 +461,8 @@ void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t int
     }
 }
 
-void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w,
-                     int sw, const bloom_out_t *o)
+void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w, int sw,
+                     const bloom_out_t *o)
 {
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
     const uint64_t I = o->intensity;

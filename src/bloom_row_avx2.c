@@ -64,16 +64,18 @@ static inline __attribute__((always_inline)) void vtent_vec(const uint32_t *a, c
                                                             __m256i *any, __m256i *in, bool in_or)
 {
     const __m256i va = LD8(a + i), vb = LD8(b + i), vc = LD8(c + i);
-    const __m256i t = _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
-    const __m256i s = _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, _mm256_set1_epi32(BLOOM_VT_RND))), 3);
+    const __m256i t =
+        _mm256_add_epi32(_mm256_add_epi32(va, _mm256_slli_epi32(va, 1)), _mm256_slli_epi32(vb, 2));
+    const __m256i s =
+        _mm256_srli_epi32(_mm256_add_epi32(t, _mm256_add_epi32(vc, _mm256_set1_epi32(BLOOM_VT_RND))), 3);
     ST8(dst + i, s);
     *any = _mm256_or_si256(*any, s);
     if (in_or)
         *in = _mm256_or_si256(*in, _mm256_or_si256(va, _mm256_or_si256(vb, vc)));
 }
 
-static inline __attribute__((always_inline)) uint32_t vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c,
-                                                             uint32_t *dst, int n, uint32_t *in_or)
+static inline __attribute__((always_inline)) uint32_t
+vtent8(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n, uint32_t *in_or)
 {
     __m256i any = _mm256_setzero_si256(), in = _mm256_setzero_si256();
     int i = 0;
@@ -108,8 +110,8 @@ uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, in
     int i = 0;
     for (; i + 8 <= n; i += 8) {
         const __m256i p = LD8(v + i - 3), q = LD8(v + i + 3);
-        const __m256i m = _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(LD8(v + i), 2), k4),
-                                           _mm256_add_epi32(p, q));
+        const __m256i m =
+            _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(LD8(v + i), 2), k4), _mm256_add_epi32(p, q));
         const __m256i ev = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(p, 1)), 3);
         const __m256i ov = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(q, 1)), 3);
         ST8(e + i, ev);
@@ -127,7 +129,8 @@ uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, in
 static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
 {
     const __m256i e0 = LD8(e), e4 = LD8(e + 4), o0 = LD8(o), o4 = LD8(o + 4);
-#define PERM(x, a, b, c, d, e_, f, g, h) _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
+#define PERM(x, a, b, c, d, e_, f, g, h)                                                                     \
+    _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
     v[0] = _mm256_blend_epi32(PERM(e0, 0, 1, 2, 0, 0, 0, 3, 4), PERM(o0, 0, 0, 0, 0, 1, 2, 0, 0), 0x38);
     v[1] = _mm256_blend_epi32(PERM(e4, 1, 0, 0, 0, 2, 3, 4, 0), PERM(o0, 0, 3, 4, 5, 0, 0, 0, 6), 0x8E);
     v[2] = _mm256_blend_epi32(PERM(e4, 0, 0, 5, 6, 7, 0, 0, 0), PERM(o4, 3, 4, 0, 0, 0, 5, 6, 7), 0xE3);
@@ -197,8 +200,8 @@ static inline bool bright18(const uint8_t *const s[4], size_t off, bool x8, __m2
  * the others go to the SSE2 twin): a block whose 4 x 18 source pixels have
  * no colour code above the dark code is written as zeros, the others run
  * the C box and knee in runs. */
-bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                       const bloom_knee_t *kn, const bloom_dark_t *dk)
+bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
 {
     const bool x8 = BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888;
     if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8)
@@ -247,8 +250,10 @@ static inline __m256i keep8(__m256i code, __m256i b)
  * vectors, from e[0..11] and o[0..11]; the X lanes hold a copy of R. */
 static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
 {
-    const __m256i e0 = LD8(e), e3 = LD8(e + 3), e4 = LD8(e + 4), o0 = LD8(o), o3 = LD8(o + 3), o4 = LD8(o + 4);
-#define PERM(x, a, b, c, d, e_, f, g, h) _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
+    const __m256i e0 = LD8(e), e3 = LD8(e + 3), e4 = LD8(e + 4), o0 = LD8(o), o3 = LD8(o + 3),
+                  o4 = LD8(o + 4);
+#define PERM(x, a, b, c, d, e_, f, g, h)                                                                     \
+    _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
     v[0] = _mm256_blend_epi32(PERM(e0, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o0, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
     v[1] = _mm256_blend_epi32(PERM(e3, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o3, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
     v[2] = _mm256_blend_epi32(PERM(e4, 4, 3, 2, 2, 0, 0, 0, 0), PERM(o4, 0, 0, 0, 0, 4, 3, 2, 2), 0xF0);
@@ -270,14 +275,15 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
         return;
     }
     const bool rgb = gbpp == 3; /* else XRGB8888 */
-    const int g = n / 8; /* groups of 8 pixels: 12 bloom samples of e and of o each */
+    const int g = n / 8;        /* groups of 8 pixels: 12 bloom samples of e and of o each */
     uint32_t bb[32];
     if (rgb) {
         for (int j = 0; j < g; j++, src += 24, dst += 24, e += 12, o += 12) {
             __m256i b[3];
             il24(e, o, b);
-            const __m256i keep = _mm256_and_si256(_mm256_and_si256(keep8(codes8(src), b[0]), keep8(codes8(src + 8), b[1])),
-                                                  keep8(codes8(src + 16), b[2]));
+            const __m256i keep =
+                _mm256_and_si256(_mm256_and_si256(keep8(codes8(src), b[0]), keep8(codes8(src + 8), b[1])),
+                                 keep8(codes8(src + 16), b[2]));
             if (_mm256_movemask_epi8(keep) == -1) { /* the bloom changes no code here */
                 if (src != dst)
                     memcpy(dst, src, 24);

@@ -37,7 +37,8 @@ static inline int bright30(const uint8_t *const s[4], size_t off, uint32_t c)
         a = vmaxq_u8(a, vld1q_u8(s[r] + off));
         b = vmaxq_u8(b, vld1q_u8(s[r] + off + 16));
     }
-    static const uint8_t keep[16] = {255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0};
+    static const uint8_t keep[16] = {255, 255, 255, 255, 255, 255, 255, 255,
+                                     255, 255, 255, 255, 255, 255, 0,   0};
     b = vandq_u8(b, vld1q_u8(keep)); /* bytes 30, 31 out */
     return vmaxvq_u8(vmaxq_u8(a, b)) > c;
 }
@@ -87,8 +88,8 @@ void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
     box_any(s, dst, dw, sw);
 }
 
-void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add,
-                             uint32_t *dst, int x0, int n, int sw)
+void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                             int n, int sw)
 {
     tent_any(u, odd, add, dst, x0, n, sw);
 }
@@ -259,7 +260,8 @@ void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
             vst3q_u32(bb + 12, hi);
             bloom_enc8_run24(src, bb, dst);
         } else {
-            const uint32x4x4_t lo = {{blo[2], blo[1], blo[0], blo[0]}}, hi = {{bhi[2], bhi[1], bhi[0], bhi[0]}};
+            const uint32x4x4_t lo = {{blo[2], blo[1], blo[0], blo[0]}},
+                               hi = {{bhi[2], bhi[1], bhi[0], bhi[0]}};
             vst4q_u32(bb, lo);
             vst4q_u32(bb + 16, hi);
             bloom_enc8_xrgb8(src, bb, dst);

@@ -67,10 +67,10 @@ void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *ad
 /* Low-resolution columns per chunk of bloom_row_tent_flat (stack: 3 x 32 words). */
 #define TENT_CH 32
 
-void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
-                         int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
-                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                                       int x0, int n, int sw))
+void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                         int n, int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
+                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add,
+                                       uint32_t *dst, int x0, int n, int sw))
 {
     if (x0 != 0 || sw < 2 || sw != (n + 1) / 2) {
         exact(u, odd, add, dst, x0, n, sw);
@@ -98,8 +98,8 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
 }
 #endif
 
-void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd,
-                     const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
+void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
+                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
 #if !BLOOM_SMALL
     if (k->vtent && sw >= 1 && sw == (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {

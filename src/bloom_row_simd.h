@@ -37,7 +37,8 @@ static inline int simd_imax(int a, int b)
 #define BOX_RND(s_, k7_, k1_) SHR(ADD(ADD((s_), (k7_)), AND(SHR((s_), 4), (k1_))), 4)
 
 /* Column sum of the four rows at sample index i (lane 3: the next sample). */
-#define COL4(s0, s1, s2, s3, i) ADD(ADD(LD4((s0) + (i)), LD4((s1) + (i))), ADD(LD4((s2) + (i)), LD4((s3) + (i))))
+#define COL4(s0, s1, s2, s3, i)                                                                              \
+    ADD(ADD(LD4((s0) + (i)), LD4((s1) + (i))), ADD(LD4((s2) + (i)), LD4((s3) + (i))))
 
 /* Destination pixels xa .. xa + 2 np - 1 (xa >= 1) in pairs; reads source
  * columns 2 xa - 1 .. 2 (xa + 2 np - 2) + 4 and one sample past them. */
@@ -97,8 +98,8 @@ static inline VT tent3(VT a, VT b, VT c)
  * point at column 2 ma. Reads low-resolution columns ma - 1 .. ma + np and
  * one sample past them. Odd rows weigh (1, 4, 3) = (3, 4, 1) on the rows
  * in reverse, odd columns likewise. */
-static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                       int ma, int np)
+static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int ma,
+                       int np)
 {
     const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
     const VT k7 = DUP(7u), kh = DUP(BLOOM_HT_RND);
@@ -133,8 +134,8 @@ static void tent_pairs(const uint32_t *const u[3], int odd, const uint32_t *add,
 
 /* The same pairs when every u value read is below 2^29: then
  * 3a + 4b + c + 4 < 2^32 and the sums need no split (same bits). */
-static void tent_pairs_small(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                             int ma, int np)
+static void tent_pairs_small(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int ma,
+                             int np)
 {
     const uint32_t *a = odd ? u[2] : u[0], *b = u[1], *c = odd ? u[0] : u[2];
     const VT k4 = DUP(BLOOM_VT_RND), kh = DUP(BLOOM_HT_RND);
@@ -178,8 +179,8 @@ static int tent_small_ok(const uint32_t *const u[3], size_t i0, size_t i1)
     return (OR_LANES(any) >> 29) == 0;
 }
 
-static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst,
-                     int x0, int n, int sw)
+static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
+                     int sw)
 {
     /* Pairs (2m, 2m + 1) inside [x0, x0 + n) with 1 <= m and m + 1 <= sw - 2
      * (column m + 1 is read with one sample past it). */
@@ -196,14 +197,13 @@ static void tent_any(const uint32_t *const u[3], int odd, const uint32_t *add, u
         bloom_row_tent_c(u, odd, add, dst, x0, xa - x0, sw);
     /* the pairs read columns ma - 1 .. ma + np and one sample past them */
     if (tent_small_ok(u, (size_t)(ma - 1) * 3u, (size_t)(ma + np) * 3u + 4u))
-        tent_pairs_small(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u,
-                         ma, np);
+        tent_pairs_small(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma,
+                         np);
     else
-        tent_pairs(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma,
-                   np);
+        tent_pairs(u, odd, add ? add + (size_t)(xa - x0) * 3u : NULL, dst + (size_t)(xa - x0) * 3u, ma, np);
     if (end > xb)
-        bloom_row_tent_c(u, odd, add ? add + (size_t)(xb - x0) * 3u : NULL,
-                         dst + (size_t)(xb - x0) * 3u, xb, end - xb, sw);
+        bloom_row_tent_c(u, odd, add ? add + (size_t)(xb - x0) * 3u : NULL, dst + (size_t)(xb - x0) * 3u, xb,
+                         end - xb, sw);
 }
 
 #if !BLOOM_SMALL
@@ -280,7 +280,9 @@ static bool d1_any(const uint8_t *const s[4], bloom_format_t fmt, bool linear, u
     int x = 1;
     for (; x + 4 <= dw && (size_t)(2 * x - 1) * bpp + rd <= row; x += 4) {
         const size_t off = (size_t)(2 * x - 1) * bpp;
-        if (h5 ? BRIGHT20_565(s, off, dk->c5, dk->c6) : x8 ? BRIGHT40X(s, off, dk->c8) : BRIGHT30(s, off, dk->c8))
+        if (h5   ? BRIGHT20_565(s, off, dk->c5, dk->c6)
+            : x8 ? BRIGHT40X(s, off, dk->c8)
+                 : BRIGHT30(s, off, dk->c8))
             continue; /* computed with its run */
         if (run < x) {
             bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);

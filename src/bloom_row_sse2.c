@@ -45,7 +45,7 @@ static inline int bright30(const uint8_t *const s[4], size_t off, uint32_t c)
         a = _mm_max_epu8(a, LD4(s[r] + off));
         b = _mm_max_epu8(b, LD4(s[r] + off + 16));
     }
-    b = _mm_and_si128(b, _mm_set_epi32(0x0000FFFF, -1, -1, -1)); /* bytes 30, 31 out */
+    b = _mm_and_si128(b, _mm_set_epi32(0x0000FFFF, -1, -1, -1));                    /* bytes 30, 31 out */
     const __m128i over = _mm_subs_epu8(_mm_max_epu8(a, b), _mm_set1_epi8((char)c)); /* 0 where <= c */
     return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) != 0xFFFF;
 }
@@ -60,7 +60,7 @@ static inline int bright40x(const uint8_t *const s[4], size_t off, uint32_t c)
         b = _mm_max_epu8(b, LD4(s[r] + off + 16));
         d = _mm_max_epu8(d, LD4(s[r] + off + 32));
     }
-    const __m128i rgb = _mm_set1_epi32(0x00FFFFFF); /* little-endian: X is the high byte */
+    const __m128i rgb = _mm_set1_epi32(0x00FFFFFF);    /* little-endian: X is the high byte */
     d = _mm_and_si128(d, _mm_set_epi32(0, 0, -1, -1)); /* bytes 40..47 out */
     const __m128i m = _mm_and_si128(_mm_max_epu8(_mm_max_epu8(a, b), d), rgb);
     const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)c));
@@ -96,8 +96,8 @@ void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, i
     box_any(s, dst, dw, sw);
 }
 
-void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add,
-                             uint32_t *dst, int x0, int n, int sw)
+void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
+                             int n, int sw)
 {
     tent_any(u, odd, add, dst, x0, n, sw);
 }

@@ -138,10 +138,10 @@ static inline bloom_status_t core_output(const bloom_config_t *c, const frame_t 
 }
 
 typedef struct {
-    errstat_t vs_float;   /* core against the float model, output codes */
-    long long bittrue_diff; /* samples where core and bit-true model differ */
+    errstat_t vs_float;                     /* core against the float model, output codes */
+    long long bittrue_diff;                 /* samples where core and bit-true model differ */
     long long untouched, untouched_changed; /* samples with B == 0, and how many changed */
-    int ok;               /* the model ran */
+    int ok;                                 /* the model ran */
 } conform_t;
 
 /* Run src through the core (config c) and both models; compare. */

@@ -64,8 +64,7 @@ static uint64_t frame_hash(const frame_t *f)
         for (size_t i = 0; i < rowb; i += 4) {
             uint32_t v;
             memcpy(&v, row + i, 4);
-            const uint8_t le[4] = {(uint8_t)v, (uint8_t)(v >> 8), (uint8_t)(v >> 16),
-                                   (uint8_t)(v >> 24)};
+            const uint8_t le[4] = {(uint8_t)v, (uint8_t)(v >> 8), (uint8_t)(v >> 16), (uint8_t)(v >> 24)};
             h = fnv(h, le, 4);
         }
     }
@@ -94,16 +93,16 @@ static void run(const char *what, const bloom_config_t *c, const frame_t *src)
     char line[512];
     bloom_info_t info;
     bloom_status_t st = bloom_query(c, &info);
-    int n = snprintf(line, sizeof line, "%s %dx%d N%d f%" PRIx32 " %s->%s", what, c->width,
-                     c->height, c->levels, c->flags, FMT_NAME[c->in_fmt], FMT_NAME[c->out_fmt]);
+    int n = snprintf(line, sizeof line, "%s %dx%d N%d f%" PRIx32 " %s->%s", what, c->width, c->height,
+                     c->levels, c->flags, FMT_NAME[c->in_fmt], FMT_NAME[c->out_fmt]);
     if (st != BLOOM_OK) {
         snprintf(line + n, sizeof line - (size_t)n, " query: %s", bloom_status_str(st));
         errors++;
     } else {
         /* Only pointer-size-free figures: workspace bytes differ on 32-bit. */
-        n += snprintf(line + n, sizeof line - (size_t)n, " L%d lat%d src%d q%08" PRIx32 ",%08" PRIx32
-                      ",%08" PRIx32, info.levels, info.latency_rows, info.source_rows,
-                      info.threshold_q, info.knee_q, info.intensity_q);
+        n += snprintf(line + n, sizeof line - (size_t)n,
+                      " L%d lat%d src%d q%08" PRIx32 ",%08" PRIx32 ",%08" PRIx32, info.levels,
+                      info.latency_rows, info.source_rows, info.threshold_q, info.knee_q, info.intensity_q);
         engine_t e = engine_new(c);
         frame_t out = frame_alloc(c->width, c->height, c->out_fmt, 0);
         st = c->aux_fmt != BLOOM_AUX_NONE ? bloom_set_aux(e.b, aux_plane, aux_stride) : BLOOM_OK;
@@ -142,8 +141,8 @@ static void apply(bloom_config_t *c, const params_t *p)
 /* test_conformance.c's grid, with every one of the 16 format pairs. */
 static void random_corpus(void)
 {
-    static const int sizes[][2] = {{1, 1},   {1, 13},    {13, 1},    {2, 2},    {3, 5},  {17, 9},
-                                   {64, 48}, {80, 3},    {257, 131}, {131, 257}, {300, 200}};
+    static const int sizes[][2] = {{1, 1},   {1, 13}, {13, 1},    {2, 2},     {3, 5},    {17, 9},
+                                   {64, 48}, {80, 3}, {257, 131}, {131, 257}, {300, 200}};
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++) {
         const int w = sizes[si][0], h = sizes[si][1];
         const int big = w * h > 20000;
@@ -170,7 +169,6 @@ static void random_corpus(void)
                 }
     }
 }
-
 
 /* test_extreme.c's frames, engine only: the largest intermediates, words
  * above the range, a hot pixel at 256.0, saturation, limits, thin frames. */
@@ -218,11 +216,14 @@ static void extreme_corpus(void)
         frame_free(&src);
     }
 
-    static const uint32_t lim[][3] = {
-        {0, 0, BLOOM_Q16(1.0)}, {0, BLOOM_ONE, BLOOM_Q16(1.0)}, {BLOOM_Q16(0.5), 0, BLOOM_Q16(1.0)},
-        {BLOOM_Q16(0.5), BLOOM_ONE, BLOOM_Q16(1.0)}, {BLOOM_Q16(0.2), BLOOM_Q16(0.5), 0},
-        {BLOOM_Q16(0.2), BLOOM_Q16(0.5), BLOOM_MAX_INTENSITY},
-        {BLOOM_MAX_THRESHOLD, 0, BLOOM_MAX_INTENSITY}, {BLOOM_MAX_THRESHOLD, BLOOM_ONE, BLOOM_Q16(1.0)}};
+    static const uint32_t lim[][3] = {{0, 0, BLOOM_Q16(1.0)},
+                                      {0, BLOOM_ONE, BLOOM_Q16(1.0)},
+                                      {BLOOM_Q16(0.5), 0, BLOOM_Q16(1.0)},
+                                      {BLOOM_Q16(0.5), BLOOM_ONE, BLOOM_Q16(1.0)},
+                                      {BLOOM_Q16(0.2), BLOOM_Q16(0.5), 0},
+                                      {BLOOM_Q16(0.2), BLOOM_Q16(0.5), BLOOM_MAX_INTENSITY},
+                                      {BLOOM_MAX_THRESHOLD, 0, BLOOM_MAX_INTENSITY},
+                                      {BLOOM_MAX_THRESHOLD, BLOOM_ONE, BLOOM_Q16(1.0)}};
     for (size_t li = 0; li < sizeof lim / sizeof lim[0]; li++)
         for (size_t fi = 0; fi < 4; fi++) {
             bloom_config_default(&c, 120, 90);
@@ -239,8 +240,8 @@ static void extreme_corpus(void)
             frame_free(&src);
         }
 
-    static const int sizes[][2] = {{1, 2},    {2, 1},    {1, 1000}, {1000, 1},
-                                   {3, 3},    {2, 1500}, {1500, 2}, {4, 700}, {700, 4}};
+    static const int sizes[][2] = {{1, 2},    {2, 1},    {1, 1000}, {1000, 1}, {3, 3},
+                                   {2, 1500}, {1500, 2}, {4, 700},  {700, 4}};
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++)
         for (int lv = 1; lv <= 16; lv++) {
             bloom_config_default(&c, sizes[si][0], sizes[si][1]);
@@ -251,7 +252,6 @@ static void extreme_corpus(void)
             frame_free(&src);
         }
 }
-
 
 /* dir/name as a frame (frame_from_img); when it cannot be read, a line of
  * the listing, an error counted and 0. */
@@ -274,8 +274,8 @@ static int load_image(const char *dir, const char *name, frame_t *out)
  * format, and a few parameter sets (levels 1, 5, 9) into RGB888. */
 static void image_corpus(const char *dir)
 {
-    static const char *const names[] = {"rocket_floodlights.ppm", "hubble_deep_field.ppm",
-                                         "studio_lamps.pfm", "hall_lamps.pfm"};
+    static const char *const names[] = {"rocket_floodlights.ppm", "hubble_deep_field.ppm", "studio_lamps.pfm",
+                                        "hall_lamps.pfm"};
     static const struct {
         size_t param;
         int levels;
@@ -348,9 +348,10 @@ static void preset_corpus(const char *dir)
                             continue; /* a flag of another preset */
                         aux_plane = aux;
                         aux_stride = (ptrdiff_t)w * (c.aux_fmt == BLOOM_AUX_U16 ? 2 : 1);
-                        frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(p * 1000 + (int)s * 50 + (int)f * 7 + levels));
-                        snprintf(what, sizeof what, "preset %s flags+%" PRIx32, bloom_preset_name((bloom_preset_t)p),
-                                 variants[v]);
+                        frame_t src = frame_random(&c, c.in_fmt,
+                                                   (uint32_t)(p * 1000 + (int)s * 50 + (int)f * 7 + levels));
+                        snprintf(what, sizeof what, "preset %s flags+%" PRIx32,
+                                 bloom_preset_name((bloom_preset_t)p), variants[v]);
                         run(what, &c, &src);
                         frame_free(&src);
                     }

@@ -10,38 +10,36 @@
 
 static int harness_pass, harness_fail, harness_skip;
 
-#define CHECK(cond)                                                          \
-    do {                                                                     \
-        if (cond) {                                                          \
-            harness_pass++;                                                  \
-        } else {                                                             \
-            harness_fail++;                                                  \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, \
-                    #cond);                                                  \
-        }                                                                    \
+#define CHECK(cond)                                                                                          \
+    do {                                                                                                     \
+        if (cond) {                                                                                          \
+            harness_pass++;                                                                                  \
+        } else {                                                                                             \
+            harness_fail++;                                                                                  \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);                         \
+        }                                                                                                    \
     } while (0)
 
-#define CHECKF(cond, ...)                                                     \
-    do {                                                                      \
-        if (cond) {                                                           \
-            harness_pass++;                                                   \
-        } else {                                                              \
-            harness_fail++;                                                   \
-            fprintf(stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__,  \
-                    #cond);                                                   \
-            fprintf(stderr, __VA_ARGS__);                                     \
-            fputc('\n', stderr);                                              \
-        }                                                                     \
+#define CHECKF(cond, ...)                                                                                    \
+    do {                                                                                                     \
+        if (cond) {                                                                                          \
+            harness_pass++;                                                                                  \
+        } else {                                                                                             \
+            harness_fail++;                                                                                  \
+            fprintf(stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__, #cond);                         \
+            fprintf(stderr, __VA_ARGS__);                                                                    \
+            fputc('\n', stderr);                                                                             \
+        }                                                                                                    \
     } while (0)
 
 /* One skipped thing, named on a line "skipped: WHAT: WHY". WHAT starting
  * "cpu" marks a CPU feature the machine lacks, the only skip CI accepts. */
-#define SKIP(...)                                                            \
-    do {                                                                     \
-        harness_skip++;                                                      \
-        printf("skipped: " __VA_ARGS__);                                     \
-        putchar('\n');                                                       \
-        fflush(stdout);                                                      \
+#define SKIP(...)                                                                                            \
+    do {                                                                                                     \
+        harness_skip++;                                                                                      \
+        printf("skipped: " __VA_ARGS__);                                                                     \
+        putchar('\n');                                                                                       \
+        fflush(stdout);                                                                                      \
     } while (0)
 
 static inline int harness_finish(void)

@@ -138,8 +138,8 @@ static inline rows_check_t preset_check_rows(const bloom_config_t *c, const fram
         CHECK(st == BLOOM_DONE);
         CHECK((aux ? bloom_push_row_aux(b, src->p, aux) : bloom_push_row(b, src->p)) == BLOOM_E_STATE);
         CHECKF(frame_equal(&out, &ref), "%s: row interface (frame %d) = whole frame", pn, frame);
-        CHECKF(rc->busy > 0 || info.source_rows >= c->height, "%s: ring fills when pushing without pulling (%d)",
-               pn, rc->busy);
+        CHECKF(rc->busy > 0 || info.source_rows >= c->height,
+               "%s: ring fills when pushing without pulling (%d)", pn, rc->busy);
         frame_free(&out);
     }
     CHECKF(res[1].busy == res[0].busy && res[1].pushed_before_pull == res[0].pushed_before_pull,

@@ -174,14 +174,17 @@ static void test_latency(void)
                     int st;
                     while ((st = bloom_pull_row(b, dst)) == BLOOM_OK) {
                         const int y = bloom_rows_out(b) - 1;
-                        const int want = y + info.latency_rows < c.height - 1 ? y + info.latency_rows : c.height - 1;
+                        const int want =
+                            y + info.latency_rows < c.height - 1 ? y + info.latency_rows : c.height - 1;
                         checked++;
                         worst = r - y > worst ? r - y : worst;
                         if (r > want) {
                             bad++;
                             if (bad < 5)
-                                fprintf(stderr, "preset %d L=%d h=%d: row %d out after source row %d, "
-                                        "latency %d says %d\n", p, L, c.height, y, r, info.latency_rows, want);
+                                fprintf(stderr,
+                                        "preset %d L=%d h=%d: row %d out after source row %d, "
+                                        "latency %d says %d\n",
+                                        p, L, c.height, y, r, info.latency_rows, want);
                         }
                     }
                     CHECK(st == BLOOM_AGAIN || (st == BLOOM_DONE && r == c.height - 1));
@@ -196,7 +199,8 @@ static void test_latency(void)
     }
     CHECKF(bad == 0, "%d of %d output rows not at their stated latency", bad, checked);
     printf("latency: %d output rows, each out once source row min(y + latency, h - 1) was in; "
-           "the bound met by some row in each of %d frames taller than it\n", checked, tight);
+           "the bound met by some row in each of %d frames taller than it\n",
+           checked, tight);
 }
 
 /* bloom_config_preset keeps the flags other than the preset's own (the
@@ -213,7 +217,8 @@ static void test_preset_flags(void)
         c.flags = keep;
         if (bloom_config_preset(&c, (bloom_preset_t)p) != BLOOM_OK)
             continue;
-        CHECKF((c.flags & keep) == keep, "%s: flags %#x", bloom_preset_name((bloom_preset_t)p), (unsigned)c.flags);
+        CHECKF((c.flags & keep) == keep, "%s: flags %#x", bloom_preset_name((bloom_preset_t)p),
+               (unsigned)c.flags);
         if (bloom_preset_params((bloom_preset_t)p) & BLOOM_PARAM_AUX)
             continue;
         c.flags &= ~(uint32_t)BLOOM_FLAG_COPY_SOURCE;

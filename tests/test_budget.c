@@ -38,8 +38,8 @@ static int peak_bound(bloom_format_t out)
 static double exact_floor(bloom_preset_t p, bloom_format_t out)
 {
     static const double floors[BLOOM_PRESET_COUNT] = {
-        [BLOOM_PRESET_UNITY] = 99.92, [BLOOM_PRESET_GAMEDEV] = 99.95, [BLOOM_PRESET_XNA] = 99.97,
-        [BLOOM_PRESET_ATTENUATION] = 99.93, [BLOOM_PRESET_ARM] = 99.96, [BLOOM_PRESET_COD] = 99.92};
+        [BLOOM_PRESET_UNITY] = 99.92,       [BLOOM_PRESET_GAMEDEV] = 99.95, [BLOOM_PRESET_XNA] = 99.97,
+        [BLOOM_PRESET_ATTENUATION] = 99.93, [BLOOM_PRESET_ARM] = 99.96,     [BLOOM_PRESET_COD] = 99.92};
     return out == BLOOM_FMT_RGBQ16 ? 95.5 : floors[p];
 }
 static double bias_bound(bloom_format_t out)
@@ -55,7 +55,8 @@ static uint8_t *depth_plane(int w, int h)
     uint8_t *d = (uint8_t *)xmalloc((size_t)w * (size_t)h);
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++)
-            d[(size_t)y * (size_t)w + (size_t)x] = (uint8_t)(x < w / 3 ? 128 : (x * 255) / (w > 1 ? w - 1 : 1));
+            d[(size_t)y * (size_t)w + (size_t)x] =
+                (uint8_t)(x < w / 3 ? 128 : (x * 255) / (w > 1 ? w - 1 : 1));
     return d;
 }
 
@@ -78,7 +79,8 @@ static void run_one(acc_t *a, const bloom_config_t *c, const frame_t *src)
     a->runs++;
 }
 
-static void config_for(bloom_config_t *c, bloom_preset_t p, int w, int h, bloom_format_t in, bloom_format_t out)
+static void config_for(bloom_config_t *c, bloom_preset_t p, int w, int h, bloom_format_t in,
+                       bloom_format_t out)
 {
     bloom_config_default(c, w, h);
     bloom_config_preset(c, p);
@@ -149,7 +151,8 @@ int main(void)
                 for (size_t ii = 0; ii < sizeof ins / sizeof ins[0]; ii++) {
                     bloom_config_t c;
                     config_for(&c, (bloom_preset_t)p, sizes[si][0], sizes[si][1], ins[ii], OUTS[o]);
-                    frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(p * 977 + (int)si * 31 + (int)ii * 7));
+                    frame_t src =
+                        frame_random(&c, c.in_fmt, (uint32_t)(p * 977 + (int)si * 31 + (int)ii * 7));
                     run_one(&a, &c, &src);
                     frame_free(&src);
                 }

@@ -51,7 +51,7 @@ static void apply(bloom_config_t *c, const params_t *p)
 /* Random frames: every size, level count, parameter set, format pair. */
 static void test_random(void)
 {
-    const int sizes[][2] = {{1, 1},  {1, 13},  {13, 1},   {2, 2},    {3, 5},   {17, 9},
+    const int sizes[][2] = {{1, 1},   {1, 13}, {13, 1},    {2, 2},     {3, 5},    {17, 9},
                             {64, 48}, {80, 3}, {257, 131}, {131, 257}, {300, 200}};
     errstat_t budget;
     memset(&budget, 0, sizeof budget);
@@ -71,7 +71,8 @@ static void test_random(void)
                     apply(&c, &PARAMS[pi]);
                     c.in_fmt = FMT_PAIRS[fi][0];
                     c.out_fmt = FMT_PAIRS[fi][1];
-                    frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(si * 1000 + pi * 31 + fi + (size_t)lv));
+                    frame_t src =
+                        frame_random(&c, c.in_fmt, (uint32_t)(si * 1000 + pi * 31 + fi + (size_t)lv));
                     conform_t r = conform_run(&c, &src);
                     frame_free(&src);
                     runs++;
@@ -98,7 +99,6 @@ static void test_random(void)
     }
     CHECK(untouched > 0 && untouched_changed == 0);
 }
-
 
 static void test_images(void)
 {
@@ -172,8 +172,8 @@ static void test_deep(void)
         conform_t r = conform_run(&c, &src);
         frame_free(&src);
         CHECK(r.ok);
-        CHECKF(r.bittrue_diff == 0, "%dx%d L%d: %lld samples differ from bit-true", c.width, c.height, info.levels,
-               r.bittrue_diff);
+        CHECKF(r.bittrue_diff == 0, "%dx%d L%d: %lld samples differ from bit-true", c.width, c.height,
+               info.levels, r.bittrue_diff);
         CHECK(info.levels == (i == 0 ? 8 : 10)); /* ceil(w / 2^k) >= 2 on both sides */
         char what[96];
         snprintf(what, sizeof what, "deep %dx%d, %d levels vs float", c.width, c.height, info.levels);

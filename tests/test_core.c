@@ -15,13 +15,13 @@ static void test_validation(void)
     CHECK(bloom_query(&c, &info) == BLOOM_OK);
     CHECK(bloom_query(NULL, &info) == BLOOM_E_NULL);
     bloom_config_t bad;
-#define EXPECT(field_assign, st)                                              \
-    do {                                                                      \
-        bad = c;                                                              \
-        field_assign;                                                         \
-        bloom_status_t got = bloom_query(&bad, &info);                        \
-        CHECKF(got == (st), "%s: got %d (%s)", #field_assign, got, bloom_status_str(got)); \
-        CHECK(bloom_workspace_size(&bad) == 0);                               \
+#define EXPECT(field_assign, st)                                                                             \
+    do {                                                                                                     \
+        bad = c;                                                                                             \
+        field_assign;                                                                                        \
+        bloom_status_t got = bloom_query(&bad, &info);                                                       \
+        CHECKF(got == (st), "%s: got %d (%s)", #field_assign, got, bloom_status_str(got));                   \
+        CHECK(bloom_workspace_size(&bad) == 0);                                                              \
     } while (0)
     EXPECT(bad.width = 0, BLOOM_E_SIZE);
     EXPECT(bad.height = -3, BLOOM_E_SIZE);
@@ -85,8 +85,8 @@ static void test_workspace(void)
     bloom_config_t c;
     bloom_config_default(&c, 1920, 1080);
     size_t n = bloom_workspace_size(&c);
-    printf("workspace 1920x1080 RGB888, 5 levels: %zu bytes = 1/%.1f of one frame (target <= 1/16)\n",
-           n, 1920.0 * 1080.0 * 3.0 / (double)n);
+    printf("workspace 1920x1080 RGB888, 5 levels: %zu bytes = 1/%.1f of one frame (target <= 1/16)\n", n,
+           1920.0 * 1080.0 * 3.0 / (double)n);
     CHECK(n <= 1920u * 1080u * 3u / 16u);
     bloom_config_default(&c, 320, 240);
     c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
@@ -100,8 +100,7 @@ static void test_workspace_macro(void)
 {
     const int ws[] = {1, 2, 3, 5, 64, 257, 320, 640, 1280, 1920, 4000, 16384};
     const int hs[] = {1, 2, 7, 131, 240, 480, 1080, 3000, 16384};
-    const bloom_format_t fmts[] = {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888,
-                                   BLOOM_FMT_RGBQ16};
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGBQ16};
     int ok = 1, n = 0;
     double worst = 0;
     for (size_t wi = 0; wi < sizeof ws / sizeof ws[0]; wi++)
@@ -119,13 +118,13 @@ static void test_workspace_macro(void)
                         CHECK(sizeof(size_t) < 8 && bloom_query(&c, &too) == BLOOM_E_TOO_BIG);
                         continue;
                     }
-                    const unsigned long long bound = BLOOM_WORKSPACE_MAX(
-                        c.width, c.height, lv, bloom_format_bpp(c.in_fmt), copy);
+                    const unsigned long long bound =
+                        BLOOM_WORKSPACE_MAX(c.width, c.height, lv, bloom_format_bpp(c.in_fmt), copy);
                     n++;
                     if (bound < exact) {
                         ok = 0;
-                        fprintf(stderr, "%dx%d L%d copy%d: bound %llu < exact %zu\n", c.width,
-                                c.height, lv, copy, bound, exact);
+                        fprintf(stderr, "%dx%d L%d copy%d: bound %llu < exact %zu\n", c.width, c.height, lv,
+                                copy, bound, exact);
                     }
                     bloom_info_t info;
                     bloom_query(&c, &info);
@@ -135,7 +134,8 @@ static void test_workspace_macro(void)
                 }
     CHECK(ok);
     printf("BLOOM_WORKSPACE_MAX: %d configurations, none below the exact size; at 5 levels "
-           "built (width >= 320) at most %.2fx the exact size\n", n, worst);
+           "built (width >= 320) at most %.2fx the exact size\n",
+           n, worst);
     CHECK(worst < 1.5);
 
     /* A static workspace sized by the macro, as firmware declares it. */
@@ -251,10 +251,9 @@ static void test_busy(void)
  * change no output bit: every scene, format and view against NO_SKIP. */
 static void test_skip_identical(void)
 {
-    const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
-                                   BLOOM_FMT_RGBQ16};
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565, BLOOM_FMT_RGBQ16};
     int same = 1, runs = 0;
-    for (int scene = 0; scene < 4; scene++)        /* dark, one light, many, random */
+    for (int scene = 0; scene < 4; scene++) /* dark, one light, many, random */
         for (size_t fi = 0; fi < 4; fi++)
             for (int view = 0; view < 3; view++) { /* apply, bloom-only, linear */
                 bloom_config_t c;
@@ -289,7 +288,8 @@ static void test_skip_identical(void)
                 full = run_engine(&c, &src);
                 c.flags &= ~(uint32_t)BLOOM_FLAG_NO_SKIP;
                 engine_t e = engine_new(&c);
-                CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, src.p, (ptrdiff_t)src.stride) == BLOOM_OK);
+                CHECK(bloom_process(e.b, src.p, (ptrdiff_t)src.stride, src.p, (ptrdiff_t)src.stride) ==
+                      BLOOM_OK);
                 same &= frame_equal(&src, &full);
                 engine_free(&e);
                 frame_free(&full);

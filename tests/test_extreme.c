@@ -44,7 +44,8 @@ static void test_worst_case(void)
     c.intensity = BLOOM_MAX_INTENSITY;
     /* the bloom-only value: I * L * M, clamped at the largest output */
     frame_t out = run_engine(&c, &src);
-    CHECK(frame_get_q16(&out, 0, 0) == BLOOM_MAX_LINEAR && frame_get_q16(&out, 517, 1023) == BLOOM_MAX_LINEAR);
+    CHECK(frame_get_q16(&out, 0, 0) == BLOOM_MAX_LINEAR &&
+          frame_get_q16(&out, 517, 1023) == BLOOM_MAX_LINEAR);
     frame_free(&out);
     frame_free(&src);
 
@@ -93,8 +94,8 @@ static void test_hot_pixel(void)
         if (info.levels <= 6) /* deeper, the glow reaches the edges of 300x260 */
             CHECKF(sum > 0.99 * want && sum < 1.01 * want, "L%d: energy %.0f want %.0f", lv, sum, want);
         else
-            CHECKF(sum <= want && sum >= last_sum, "L%d: energy %.0f, want <= %.0f, >= %.0f", lv,
-                   sum, want, last_sum);
+            CHECKF(sum <= want && sum >= last_sum, "L%d: energy %.0f, want <= %.0f, >= %.0f", lv, sum, want,
+                   last_sum);
         last_sum = sum;
         if (lv == 1 || lv == 5 || lv == 16)
             printf("hot pixel at 256.0, L%-2d: glow energy %.5f of L*(M-16T); vs float peak %d LSB\n",
@@ -173,8 +174,8 @@ static void test_saturation(void)
 /* Degenerate sizes with every level count. */
 static void test_sizes(void)
 {
-    const int sizes[][2] = {{1, 1}, {1, 2}, {2, 1}, {1, 1000}, {1000, 1}, {2, 2}, {3, 3},
-                            {2, 1500}, {1500, 2}, {4, 700}, {700, 4}};
+    const int sizes[][2] = {{1, 1}, {1, 2},    {2, 1},    {1, 1000}, {1000, 1}, {2, 2},
+                            {3, 3}, {2, 1500}, {1500, 2}, {4, 700},  {700, 4}};
     long long differ = 0;
     for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++)
         for (int lv = 1; lv <= 16; lv++) {

@@ -33,8 +33,7 @@ static void test_div(void)
         ok &= bloom_div_u64_u32(n, d) == (uint32_t)(n / d);
     }
     CHECK(ok);
-    CHECK(bloom_div_u64_u32_loop(0xFFFFFFFEull * 0xFFFFFFFFull + 0xFFFFFFFEull, 0xFFFFFFFFu) ==
-          0xFFFFFFFEu);
+    CHECK(bloom_div_u64_u32_loop(0xFFFFFFFEull * 0xFFFFFFFFull + 0xFFFFFFFEull, 0xFFFFFFFFu) == 0xFFFFFFFEu);
     CHECK(bloom_div_u64_u32_loop(1ull << 40, 1u << 16) == 1u << 24);
 }
 
@@ -53,8 +52,9 @@ static void test_intensity(void)
     CHECK(bloom_srgb_to_linear_q16(0) == 0);
     CHECK(bloom_srgb_to_linear_q16(65536) == 65536);
     CHECK(bloom_srgb_to_linear_q16(BLOOM_MAX_INTENSITY) == 14668679u); /* 223.83 */
-    printf("srgb_to_linear_q16: correctly rounded for all %u intensities 0..10.0 (closest to a tie: %.2g LSB)\n",
-           BLOOM_MAX_INTENSITY + 1, tie);
+    printf(
+        "srgb_to_linear_q16: correctly rounded for all %u intensities 0..10.0 (closest to a tie: %.2g LSB)\n",
+        BLOOM_MAX_INTENSITY + 1, tie);
 }
 
 /* The knee of fixed-point.md step 3, written out here from the document in
@@ -100,7 +100,8 @@ static void test_knee_formula(void)
                 bloom_row_knee_c(row, 256, &kn);
                 for (int x = 0; x < 256; x++) {
                     const uint32_t *p = in + 3 * x;
-                    const uint32_t bmax = p[0] > p[1] ? (p[0] > p[2] ? p[0] : p[2]) : (p[1] > p[2] ? p[1] : p[2]);
+                    const uint32_t bmax =
+                        p[0] > p[1] ? (p[0] > p[2] ? p[0] : p[2]) : (p[1] > p[2] ? p[1] : p[2]);
                     for (int c = 0; c < 3; c++, n++) {
                         const uint32_t want = knee_doc(p[c], bmax, kn.t, kn.k);
                         active += want != 0;
@@ -148,7 +149,8 @@ static void test_quantized_params(void)
                     if (t != info.threshold_q || k != info.knee_q || i != info.intensity_q) {
                         if (bad++ < 5)
                             fprintf(stderr, "preset %d t %u s %u i %u: engine %u %u %u, model %u %u %u\n", p,
-                                    ts[a], ks[b], is[c], info.threshold_q, info.knee_q, info.intensity_q, t, k, i);
+                                    ts[a], ks[b], is[c], info.threshold_q, info.knee_q, info.intensity_q, t,
+                                    k, i);
                     }
                 }
     }

@@ -53,8 +53,8 @@ static void put_pnm(const char *path, const char *header, size_t n, unsigned cha
 
 static bool img_is_empty(const img_t *im)
 {
-    return im->width == 0 && im->height == 0 && im->channels == 0 && im->maxval == 0 &&
-           im->u16 == NULL && im->f32 == NULL;
+    return im->width == 0 && im->height == 0 && im->channels == 0 && im->maxval == 0 && im->u16 == NULL &&
+           im->f32 == NULL;
 }
 
 static bool same_bits(float a, float b)
@@ -371,8 +371,7 @@ static void test_fifo(void)
             CHECKF(rc == 0 && im.width == 2 && im.u16 && im.u16[11] == 'L', "%s", err);
         } else {
             CHECK(rc == -1 && img_is_empty(&im));
-            CHECKF(strstr(err, p) == err &&
-                       strstr(err, "truncated: expected 12 bytes of pixel data, got 11"),
+            CHECKF(strstr(err, p) == err && strstr(err, "truncated: expected 12 bytes of pixel data, got 11"),
                    "%s", err);
         }
         img_free(&im);

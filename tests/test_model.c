@@ -141,8 +141,8 @@ static void test_constant(int bittrue)
     I = bloom_srgb_to_linear(0.5);
     /* bit-true: c = 226346 (Q12.20), P = (40000*4c + 32768) >> 16 = 552603 */
     want = bittrue ? (c + floor((40000 * L * c + 32768) / 65536)) / Q20 : c + I * L * c;
-    CHECKF(fabs(val[0] - want) < 1e-12 && fabs(val[W * H * 3 - 1] - want) < 1e-12,
-           "v %.17g want %.17g", val[0], want);
+    CHECKF(fabs(val[0] - want) < 1e-12 && fabs(val[W * H * 3 - 1] - want) < 1e-12, "v %.17g want %.17g",
+           val[0], want);
     p.debug_view = 1;
     CHECK(bloom_model_run(&p, src, MAX8, NULL, NULL, val) == L);
     want = bittrue ? floor((40000 * L * c + 32768) / 65536) / Q20 : I * L * c;
@@ -399,8 +399,8 @@ static void test_agree(int linear, const int *mx, double intensity, double thres
         worst = fmax(worst, fabs(vf[i] - vb[i]));
         codes += mx[i % 3] ? abs((int)cf[i] - (int)cb[i]) > 1 : 0;
     }
-    CHECKF(worst < tol / Q20, "linear=%d n=%d I=%g t=%g: worst %g LSB of Q12.20 (tol %g)", linear,
-           mx[1], intensity, threshold, worst * Q20, tol);
+    CHECKF(worst < tol / Q20, "linear=%d n=%d I=%g t=%g: worst %g LSB of Q12.20 (tol %g)", linear, mx[1],
+           intensity, threshold, worst * Q20, tol);
     CHECK(codes == 0);
 }
 
@@ -457,8 +457,8 @@ static void test_q16_and_args(void)
         uint32_t one[3] = {1, 0, 1}, out[3];
         p1.intensity_q = 32768;
         CHECK(bloom_model_run(&p1, one, MAXQ16, out, MAXQ16, val) == 1);
-        CHECKF(val[0] == 24 / Q20 && out[0] == 2 && out[1] == 0 && out[2] == 2, "%.17g %u",
-               val[0] * Q20, out[0]);
+        CHECKF(val[0] == 24 / Q20 && out[0] == 2 && out[1] == 0 && out[2] == 2, "%.17g %u", val[0] * Q20,
+               out[0]);
     }
     p.bittrue = 0;
     p.intensity = 0;

@@ -17,22 +17,23 @@ typedef struct {
 
 static const arm_params_t params[] = {
     {BLOOM_Q16(0.5), BLOOM_Q16(0.5), BLOOM_ONE, {BLOOM_ONE, BLOOM_ONE, BLOOM_ONE}},
-    {0, 0, BLOOM_Q16(0.6), {BLOOM_ONE, BLOOM_ONE, BLOOM_ONE}},                 /* everything blooms */
-    {BLOOM_ONE, BLOOM_ONE, BLOOM_Q16(2.0), {BLOOM_ONE, BLOOM_Q16(0.5), 0}},     /* full soft knee, warm tint */
-    {BLOOM_Q16(0.2), 0, BLOOM_Q16(0.3), {BLOOM_Q16(0.3), BLOOM_Q16(0.77), BLOOM_ONE}}, /* hard knee */
+    {0, 0, BLOOM_Q16(0.6), {BLOOM_ONE, BLOOM_ONE, BLOOM_ONE}},              /* everything blooms */
+    {BLOOM_ONE, BLOOM_ONE, BLOOM_Q16(2.0), {BLOOM_ONE, BLOOM_Q16(0.5), 0}}, /* full soft knee, warm tint */
+    {BLOOM_Q16(0.2), 0, BLOOM_Q16(0.3), {BLOOM_Q16(0.3), BLOOM_Q16(0.77), BLOOM_ONE}},     /* hard knee */
     {BLOOM_Q16(0.8), BLOOM_Q16(0.25), 10u * BLOOM_ONE, {BLOOM_ONE, BLOOM_ONE, BLOOM_ONE}}, /* intensity 10 */
 };
 #define NPARAMS (sizeof params / sizeof params[0])
 
 static const bloom_format_t fmts[][2] = {
-    {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888},     {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888},
-    {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565},     {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888},
-    {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16},     {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888},
+    {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888}, {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888},
+    {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565}, {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888},
+    {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16}, {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888},
     {BLOOM_FMT_RGB888, BLOOM_FMT_RGBQ16},
 };
 #define NFMTS (sizeof fmts / sizeof fmts[0])
 
-static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {7, 3}, {16, 9}, {33, 17}, {64, 48}, {97, 61}, {100, 70}};
+static const int sizes[][2] = {{1, 1},   {2, 2},   {3, 5},   {7, 3},   {16, 9},
+                               {33, 17}, {64, 48}, {97, 61}, {100, 70}};
 #define NSIZES (sizeof sizes / sizeof sizes[0])
 
 /* The bound of arm.md ("error against the float model") on RGBQ16 output
@@ -68,7 +69,7 @@ static void tally(tally_t *t, const bloom_config_t *c, const preset_conform_t *r
     t->runs++;
     t->failed += !r->ok;
     t->diff += r->bittrue_diff;
-    errstat_t *e = c->out_fmt == BLOOM_FMT_RGBQ16 ? (hi ? &t->q16_hi : &t->q16)
+    errstat_t *e = c->out_fmt == BLOOM_FMT_RGBQ16   ? (hi ? &t->q16_hi : &t->q16)
                    : c->out_fmt == BLOOM_FMT_RGB565 ? &t->c565
                    : hi                             ? &t->c8_hi
                                                     : &t->c8;
@@ -92,7 +93,9 @@ static void grid_bloom(void)
                 c.out_fmt = fmts[f][1];
                 set_params(&c, &params[pi]);
                 /* masks: none, U8, U16; flags: linear, debug view, copy source */
-                c.aux_fmt = variant % 3 == 0 ? BLOOM_AUX_NONE : variant % 3 == 1 ? BLOOM_AUX_U8 : BLOOM_AUX_U16;
+                c.aux_fmt = variant % 3 == 0   ? BLOOM_AUX_NONE
+                            : variant % 3 == 1 ? BLOOM_AUX_U8
+                                               : BLOOM_AUX_U16;
                 if (variant == 4)
                     c.flags |= BLOOM_FLAG_LINEAR;
                 if (variant == 5)
@@ -103,14 +106,16 @@ static void grid_bloom(void)
                     c.flags |= BLOOM_FLAG_NO_SKIP;
                 frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(s * 101 + d * 13 + f * 3 + 1));
                 ptrdiff_t as = 0;
-                void *aux = c.aux_fmt ? aux_plane(c.width, c.height, c.aux_fmt, (uint32_t)(s + f), &as) : NULL;
+                void *aux =
+                    c.aux_fmt ? aux_plane(c.width, c.height, c.aux_fmt, (uint32_t)(s + f), &as) : NULL;
                 preset_conform_t r = preset_conform(&c, &src, aux, as);
                 tally(&t, &c, &r, params[pi].intensity > 4u * BLOOM_ONE);
                 free(aux);
                 frame_free(&src);
             }
     CHECKF(t.failed == 0, "arm: engine and models ran (%d of %d failed)", t.failed, t.runs);
-    CHECKF(t.diff == 0, "arm: bit-exact to the bit-true model over %d runs (%lld samples differ)", t.runs, t.diff);
+    CHECKF(t.diff == 0, "arm: bit-exact to the bit-true model over %d runs (%lld samples differ)", t.runs,
+           t.diff);
     errstat_print("arm vs float (8-bit out)", &t.c8);
     errstat_print("arm vs float (8-bit out, I = 10)", &t.c8_hi);
     errstat_print("arm vs float (RGB565 out)", &t.c565);
@@ -195,7 +200,8 @@ static void real_images(void)
             mask = (uint8_t *)xmalloc((size_t)src.w * (size_t)src.h);
             for (int y = 0; y < src.h; y++)
                 for (int x = 0; x < src.w; x++)
-                    mask[(size_t)y * (size_t)src.w + (size_t)x] = (uint8_t)(x < src.w / 2 ? 0 : 255 * (y % 7) / 6);
+                    mask[(size_t)y * (size_t)src.w + (size_t)x] =
+                        (uint8_t)(x < src.w / 2 ? 0 : 255 * (y % 7) / 6);
         }
         preset_conform_t r = preset_conform(&c, &src, mask, src.w);
         CHECK(r.ok);
@@ -217,10 +223,9 @@ static void real_images(void)
             bloom_query(&c, &info);
             const double bnd = q16_bound(info.intensity_q / 65536.0, cmax, info.levels, mask != NULL);
             printf("arm %s: RGBQ16 bound %.0f words (largest input %.2f)\n", imgs[i].name, bnd, cmax);
-            CHECKF(r.vs_float.peak <= bnd, "arm %s: RGBQ16 peak %d (bound %.0f)", imgs[i].name, r.vs_float.peak,
-                   bnd);
-        }
-        else
+            CHECKF(r.vs_float.peak <= bnd, "arm %s: RGBQ16 peak %d (bound %.0f)", imgs[i].name,
+                   r.vs_float.peak, bnd);
+        } else
             CHECKF(r.vs_float.peak <= 1, "arm %s: peak %d LSB", imgs[i].name, r.vs_float.peak);
         free(mask);
         frame_free(&src);
@@ -231,8 +236,8 @@ static void real_images(void)
 static int same_codes(const frame_t *a, const frame_t *b)
 {
     uint32_t *ca = frame_codes(a), *cb = frame_codes(b);
-    const int same = a->w == b->w && a->h == b->h &&
-                     !memcmp(ca, cb, (size_t)a->w * (size_t)a->h * 3u * sizeof *ca);
+    const int same =
+        a->w == b->w && a->h == b->h && !memcmp(ca, cb, (size_t)a->w * (size_t)a->h * 3u * sizeof *ca);
     free(ca);
     free(cb);
     return same;
@@ -415,7 +420,8 @@ static void rings(void)
         size_t sb = 0;
         for (int k = 0; k <= ia.levels; k++)
             sb += ia.ring_bytes[k];
-        CHECKF(sb == 0 && ia.latency_rows == 0, "baked: no rings (%zu B), no latency (%d)", sb, ia.latency_rows);
+        CHECKF(sb == 0 && ia.latency_rows == 0, "baked: no rings (%zu B), no latency (%d)", sb,
+               ia.latency_rows);
         printf("baked %dx%d: workspace %zu B, source rows %d\n", rs[s][0], rs[s][1], ia.workspace_bytes,
                ia.source_rows);
     }
@@ -488,8 +494,8 @@ static void row_interface(void)
     for (int i = 0; i < 40 * 30; i++)
         mask[i] = (uint8_t)(i % 251);
     const rows_check_t rc = preset_check_rows(&c, &src, mask, 40);
-    CHECKF(rc.busy > 0 && rc.pushed_before_pull > 1, "ring fills after %d rows pushed without pulling (%d BUSY)",
-           rc.pushed_before_pull, rc.busy);
+    CHECKF(rc.busy > 0 && rc.pushed_before_pull > 1,
+           "ring fills after %d rows pushed without pulling (%d BUSY)", rc.pushed_before_pull, rc.busy);
     frame_free(&src);
     free(mask);
 }

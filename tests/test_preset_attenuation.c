@@ -12,8 +12,8 @@
 static void grid(void)
 {
     static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {16, 9}, {33, 17}, {64, 48}, {97, 61}};
-    static const uint32_t params[][2] = {{BLOOM_Q16(0.75), BLOOM_Q16(0.25)}, {BLOOM_ONE, 0},
-                                         {BLOOM_Q16(0.3), BLOOM_Q16(0.9)}, {0, 0}};
+    static const uint32_t params[][2] = {
+        {BLOOM_Q16(0.75), BLOOM_Q16(0.25)}, {BLOOM_ONE, 0}, {BLOOM_Q16(0.3), BLOOM_Q16(0.9)}, {0, 0}};
     static const bloom_format_t fmts[][2] = {{BLOOM_FMT_RGB888, BLOOM_FMT_RGB888},
                                              {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888},
                                              {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16},

@@ -74,10 +74,10 @@ static void grid(void)
 {
     static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {7, 2}, {16, 9}, {33, 17}, {64, 48}, {100, 70}};
     static const bloom_format_t fmts[][2] = {
-        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888},     {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888},
-        {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565},     {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888},
-        {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16},     {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888},
-        {BLOOM_FMT_RGB888, BLOOM_FMT_RGBQ16},     {BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565}};
+        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888}, {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888},
+        {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565}, {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888},
+        {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16}, {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888},
+        {BLOOM_FMT_RGB888, BLOOM_FMT_RGBQ16}, {BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565}};
     static const int levels[] = {1, 2, 3, 5, 8};
     const int nf = (int)(sizeof fmts / sizeof fmts[0]);
     errstat_t cls[3][2][2]; /* output class x HDR input x knee active */
@@ -96,18 +96,19 @@ static void grid(void)
                     set_params(&c, set, levels[li]);
                     if (fi & 1)
                         c.flags |= BLOOM_FLAG_COPY_SOURCE;
-                    frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(s * 1000 + (size_t)set * 100 + li * 10 + (size_t)fi));
+                    frame_t src = frame_random(
+                        &c, c.in_fmt, (uint32_t)(s * 1000 + (size_t)set * 100 + li * 10 + (size_t)fi));
                     preset_conform_t r = preset_conform(&c, &src, NULL, 0);
                     failed += !r.ok;
                     diff += r.bittrue_diff;
                     if (r.bittrue_diff)
-                        fprintf(stderr, "cod %dx%d set %d levels %d fmt %d: %lld differ\n", c.width, c.height, set,
-                                levels[li], f, r.bittrue_diff);
+                        fprintf(stderr, "cod %dx%d set %d levels %d fmt %d: %lld differ\n", c.width, c.height,
+                                set, levels[li], f, r.bittrue_diff);
                     errstat_merge(&cls[out_class(c.out_fmt)][c.in_fmt == BLOOM_FMT_RGBQ16][c.threshold > 0],
                                   &r.vs_float);
                     if (getenv("COD_VERBOSE") && r.vs_float.peak > 1)
-                        printf("peak %d: %dx%d set %d levels %d fmt %d\n", r.vs_float.peak, c.width, c.height, set,
-                               levels[li], f);
+                        printf("peak %d: %dx%d set %d levels %d fmt %d\n", r.vs_float.peak, c.width, c.height,
+                               set, levels[li], f);
                     runs++;
                     frame_free(&src);
                 }
@@ -122,20 +123,20 @@ static void grid(void)
                 if (!cls[o][hdr][kn].n)
                     continue;
                 char what[80];
-                snprintf(what, sizeof what, "cod vs float, %s out, %s in, knee %s", oname[o], hdr ? "HDR" : "LDR",
-                         kn ? "on" : "off");
+                snprintf(what, sizeof what, "cod vs float, %s out, %s in, knee %s", oname[o],
+                         hdr ? "HDR" : "LDR", kn ? "on" : "off");
                 errstat_print(what, &cls[o][hdr][kn]);
                 if (o < 2)
                     errstat_merge(&low, &cls[o][hdr][kn]);
             }
     CHECKF(low.peak <= 1, "cod: 8-bit and RGB565 out within 1 LSB of the float model (%d)", low.peak);
-    CHECKF(cls[2][0][0].peak <= 1 && cls[2][1][0].peak <= 1, "cod: RGBQ16 out without the knee within 1 LSB (%d, %d)",
-           cls[2][0][0].peak, cls[2][1][0].peak);
+    CHECKF(cls[2][0][0].peak <= 1 && cls[2][1][0].peak <= 1,
+           "cod: RGBQ16 out without the knee within 1 LSB (%d, %d)", cls[2][0][0].peak, cls[2][1][0].peak);
     /* with the knee: its Q16 factor (the default engine's knee, fixed-point.md
      * step 3) is off by up to 2^-17 of the signal, and the additive sets sum
      * that error over up to 8 levels at weight 1.0 (cod.md) */
-    CHECKF(cls[2][0][1].peak <= 3 && cls[2][1][1].peak <= 3, "cod: RGBQ16 out with the knee within 3 LSB (%d, %d)",
-           cls[2][0][1].peak, cls[2][1][1].peak);
+    CHECKF(cls[2][0][1].peak <= 3 && cls[2][1][1].peak <= 3,
+           "cod: RGBQ16 out with the knee within 3 LSB (%d, %d)", cls[2][0][1].peak, cls[2][1][1].peak);
 }
 
 /* Real images: the photograph (RGB888) and an HDR scene (RGBQ16 in, both
@@ -230,7 +231,8 @@ static void firefly(void)
     for (int how = 0; how < 3; how += 2) {
         bloom_img_t a = hot_pixel(0, 31, 31, 64u << 16, how), b = hot_pixel(0, 32, 31, 64u << 16, how),
                     d = hot_pixel(0, 32, 32, 64u << 16, how);
-        printf("firefly moved, %-18s: bloom sum %.5f / %.5f / %.5f, peak %.6f / %.6f / %.6f at (31,31) / (32,31) / "
+        printf("firefly moved, %-18s: bloom sum %.5f / %.5f / %.5f, peak %.6f / %.6f / %.6f at (31,31) / "
+               "(32,31) / "
                "(32,32)\n",
                names[how], a.sum, b.sum, d.sum, a.peak, b.peak, d.peak);
         CHECKF(fabs(a.sum - b.sum) < 1e-3 * a.sum && fabs(a.sum - d.sum) < 1e-3 * a.sum &&
@@ -245,7 +247,8 @@ static void firefly(void)
         for (int hi = 0; hi < 2; hi++) {
             double add[3], dmax[3];
             for (int how = 0; how < 3; how++) {
-                bloom_img_t base = hot_pixel(bgs[bi], 0, 0, 0, how), on = hot_pixel(bgs[bi], 31, 31, hot[hi], how);
+                bloom_img_t base = hot_pixel(bgs[bi], 0, 0, 0, how),
+                            on = hot_pixel(bgs[bi], 31, 31, hot[hi], how);
                 add[how] = on.sum - base.sum;
                 dmax[how] = 0;
                 for (int i = 0; i < 64 * 64; i++)
@@ -253,10 +256,11 @@ static void firefly(void)
                 free(base.img);
                 free(on.img);
             }
-            printf("firefly %6.2f on %.2f: bloom added %.4f (engine) %.4f (model, Karis) %.4f (no Karis), x%.2f; "
+            printf("firefly %6.2f on %.2f: bloom added %.4f (engine) %.4f (model, Karis) %.4f (no Karis), "
+                   "x%.2f; "
                    "largest pixel change %.5f / %.5f / %.5f, x%.2f\n",
-                   hot[hi] / 65536.0, bgs[bi] / 65536.0, add[0], add[1], add[2], add[2] / add[0], dmax[0], dmax[1],
-                   dmax[2], dmax[2] / dmax[0]);
+                   hot[hi] / 65536.0, bgs[bi] / 65536.0, add[0], add[1], add[2], add[2] / add[0], dmax[0],
+                   dmax[1], dmax[2], dmax[2] / dmax[0]);
             CHECKF(add[0] * 1.5 < add[2] && dmax[0] * 1.2 < dmax[2],
                    "firefly %.1f on %.2f: the Karis average adds less bloom (%.4f vs %.4f) and a lower peak "
                    "(%.5f vs %.5f)",
@@ -305,7 +309,8 @@ static void energy(void)
             for (size_t i = 3; i < (size_t)c.width * (size_t)c.height * 3u; i++)
                 notflat += q[i] != q[i % 3];
             /* with tint 1 the flat field comes back unchanged */
-            if (c.p.tint[0] == BLOOM_ONE && c.p.tint[1] == BLOOM_ONE && c.p.tint[2] == BLOOM_ONE && c.threshold == 0)
+            if (c.p.tint[0] == BLOOM_ONE && c.p.tint[1] == BLOOM_ONE && c.p.tint[2] == BLOOM_ONE &&
+                c.threshold == 0)
                 notflat += !frame_equal(&f, &fo);
             free(q);
             frame_free(&fo);
@@ -313,14 +318,16 @@ static void energy(void)
         }
         runs++;
     }
-    CHECKF(over == 0, "energy-conserving: no output above 1.0 with inputs <= 1.0 (%d over, %d runs)", over, runs);
+    CHECKF(over == 0, "energy-conserving: no output above 1.0 with inputs <= 1.0 (%d over, %d runs)", over,
+           runs);
     CHECKF(notflat == 0, "energy-conserving: flat fields stay flat (%d samples differ)", notflat);
 }
 
 /* Weights 0: output = input (decode/encode) in every format pair, both modes. */
 static void weights_zero(void)
 {
-    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565, BLOOM_FMT_RGBQ16};
+    static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                          BLOOM_FMT_RGBQ16};
     int bad = 0;
     for (int f = 0; f < 4; f++)
         for (int add = 0; add < 2; add++) {
@@ -372,7 +379,8 @@ static void worst_case(void)
             for (int x = 0; x < c.width; x++) {
                 uint32_t px[3];
                 for (int ch = 0; ch < 3; ch++)
-                    px[ch] = (x + y) % 5 == 0 ? BLOOM_MAX_LINEAR : BLOOM_MAX_LINEAR - (rng_next(&s) & 0xFFFFFu);
+                    px[ch] =
+                        (x + y) % 5 == 0 ? BLOOM_MAX_LINEAR : BLOOM_MAX_LINEAR - (rng_next(&s) & 0xFFFFFu);
                 if (x % 7 == 3)
                     px[0] = px[1] = px[2] = 0xFFFFFFFFu; /* clamped on read */
                 memcpy(src.p + (size_t)y * src.stride + (size_t)x * 12u, px, 12);
@@ -467,7 +475,8 @@ static void bad_params(void)
         seen[di.levels] = 1;
     }
     bad += !(seen[1] && seen[2] && seen[3] && seen[4] && seen[5]);
-    CHECKF(bad == 0, "cod defaults: threshold 0, tint 1, Bevy NATURAL weights for the frame's L (%d bad)", bad);
+    CHECKF(bad == 0, "cod defaults: threshold 0, tint 1, Bevy NATURAL weights for the frame's L (%d bad)",
+           bad);
 }
 
 /* Row interface (preset_check_rows). */
@@ -510,7 +519,8 @@ static int reach_of(int L)
     int y_in = 0;
     double sum = 0.0, r2 = 0.0;
     while (bloom_rows_out(e.b) < n) {
-        if (y_in < n && bloom_push_row(e.b, y_in >= cy - sq / 2 && y_in < cy - sq / 2 + sq ? point : black) == BLOOM_OK) {
+        if (y_in < n &&
+            bloom_push_row(e.b, y_in >= cy - sq / 2 && y_in < cy - sq / 2 + sq ? point : black) == BLOOM_OK) {
             y_in++;
             continue;
         }
@@ -547,8 +557,8 @@ static void reach(void)
         const int L = bloom_levels_for_radius(radii[i]);
         const int got = L <= lmax ? r[L] : reach_of(L);
         printf("cod: bloom_levels_for_radius(%d) = %d, measured reach %.1f px\n", radii[i], L, got / 10.0);
-        CHECKF(got * 2 >= radii[i] * 10 && got <= 2 * radii[i] * 10, "radius %d: L = %d reaches %.1f px (within 2x)",
-               radii[i], L, got / 10.0);
+        CHECKF(got * 2 >= radii[i] * 10 && got <= 2 * radii[i] * 10,
+               "radius %d: L = %d reaches %.1f px (within 2x)", radii[i], L, got / 10.0);
     }
     CHECK(bloom_levels_for_radius(0) == 1 && bloom_levels_for_radius(-5) == 1);
     CHECK(bloom_levels_for_radius(1000000) == 10);

@@ -27,16 +27,15 @@ static errstat_t e8, e_other, e_q16, e8_strong;
 
 static void grid(void)
 {
-    static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {7, 3}, {6, 8}, {16, 9}, {33, 17}, {64, 48}, {97, 61}, {100, 70}};
+    static const int sizes[][2] = {{1, 1},  {2, 2},   {3, 5},   {7, 3},   {6, 8},
+                                   {16, 9}, {33, 17}, {64, 48}, {97, 61}, {100, 70}};
     /* threshold, strength */
-    static const uint32_t params[][2] = {{BLOOM_Q16(0.75), BLOOM_ONE},
-                                         {0, BLOOM_ONE},
-                                         {BLOOM_Q16(0.3), BLOOM_Q16(2.5)},
-                                         {BLOOM_Q16(0.5), 0},
-                                         {BLOOM_Q16(0.1), 16u << 16},
-                                         {BLOOM_Q16(2.0), BLOOM_Q16(4.0)},
+    static const uint32_t params[][2] = {{BLOOM_Q16(0.75), BLOOM_ONE},     {0, BLOOM_ONE},
+                                         {BLOOM_Q16(0.3), BLOOM_Q16(2.5)}, {BLOOM_Q16(0.5), 0},
+                                         {BLOOM_Q16(0.1), 16u << 16},      {BLOOM_Q16(2.0), BLOOM_Q16(4.0)},
                                          {256u << 16, BLOOM_ONE}};
-    static const bloom_format_t fmt[4] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565, BLOOM_FMT_RGBQ16};
+    static const bloom_format_t fmt[4] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
+                                          BLOOM_FMT_RGBQ16};
     static const uint32_t flagsets[] = {0, BLOOM_FLAG_LINEAR, BLOOM_FLAG_DEBUG_VIEW, BLOOM_FLAG_COPY_SOURCE};
     static const int levels[] = {1, 3, 7};
     long long diff = 0;
@@ -60,9 +59,12 @@ static void grid(void)
                 frame_t src = frame_random(&c, c.in_fmt, (uint32_t)seed);
                 preset_conform_t r = preset_conform(&c, &src, NULL, 0);
                 if (!r.ok)
-                    fprintf(stderr, "gamedev: run failed at %dx%d params %zu fmts %zu\n", c.width, c.height, pi, f);
+                    fprintf(stderr, "gamedev: run failed at %dx%d params %zu fmts %zu\n", c.width, c.height,
+                            pi, f);
                 if (r.bittrue_diff)
-                    fprintf(stderr, "gamedev: %lld samples differ from the bit-true model at %dx%d params %zu fmts %zu flags %u\n",
+                    fprintf(stderr,
+                            "gamedev: %lld samples differ from the bit-true model at %dx%d params %zu fmts "
+                            "%zu flags %u\n",
                             r.bittrue_diff, c.width, c.height, pi, f, flags);
                 failed += !r.ok;
                 diff += r.bittrue_diff;
@@ -78,7 +80,8 @@ static void grid(void)
                 frame_free(&src);
             }
     CHECKF(failed == 0, "gamedev: engine and models ran (%d of %d failed)", failed, runs);
-    CHECKF(diff == 0, "gamedev: bit-exact to the bit-true model over %d runs (%lld samples differ)", runs, diff);
+    CHECKF(diff == 0, "gamedev: bit-exact to the bit-true model over %d runs (%lld samples differ)", runs,
+           diff);
 }
 
 /* Real images: the rocket (8-bit sRGB) and the hall (HDR PFM), both ways. */
@@ -149,7 +152,8 @@ static void dark_hdr(void)
                 errstat_merge(o ? &dark_code : si < 2 ? &dark_q16_low : &dark_q16_high, &r.vs_float);
                 frame_free(&src);
             }
-    CHECKF(failed == 0 && diff == 0, "gamedev dark HDR scenes: bit-exact (%d failed, %lld differ)", failed, diff);
+    CHECKF(failed == 0 && diff == 0, "gamedev dark HDR scenes: bit-exact (%d failed, %lld differ)", failed,
+           diff);
 }
 
 /* The float-model figures, asserted (sim/docs/presets/gamedev.md, "Error"). */
@@ -166,8 +170,8 @@ static void error_bounds(void)
     CHECKF(e8.peak <= 1, "gamedev: 8-bit peak %d LSB against the float model (strength <= 4)", e8.peak);
     CHECKF(e_other.peak <= 1, "gamedev: 565/XRGB/linear peak %d LSB", e_other.peak);
     CHECKF(e8_strong.peak <= 1, "gamedev: 8-bit peak %d LSB at strength 16", e8_strong.peak);
-    CHECKF(e_q16.peak <= 1 && dark_q16_low.peak <= 1, "gamedev: RGBQ16 out peak %d / %d Q16 LSB (strength <= 4)",
-           e_q16.peak, dark_q16_low.peak);
+    CHECKF(e_q16.peak <= 1 && dark_q16_low.peak <= 1,
+           "gamedev: RGBQ16 out peak %d / %d Q16 LSB (strength <= 4)", e_q16.peak, dark_q16_low.peak);
     CHECKF(dark_code.peak <= 1, "gamedev: dark HDR scenes, code outputs peak %d LSB", dark_code.peak);
     /* strength 16 multiplies the bloom's Q12.20 rounding by 16: one Q16 LSB
      * is 16 Q12.20 LSB (sim/docs/presets/gamedev.md, "Error") */
@@ -265,8 +269,8 @@ static void worst_case(void)
     for (int o = 0; o < 3; o++) {
         c.out_fmt = o == 0 ? BLOOM_FMT_RGBQ16 : o == 1 ? BLOOM_FMT_RGB888 : BLOOM_FMT_RGB565;
         preset_conform_t r = preset_conform(&c, &src, NULL, 0);
-        CHECKF(r.ok && r.bittrue_diff == 0, "gamedev worst case (out fmt %d): bit-exact (%lld differ)", c.out_fmt,
-               r.bittrue_diff);
+        CHECKF(r.ok && r.bittrue_diff == 0, "gamedev worst case (out fmt %d): bit-exact (%lld differ)",
+               c.out_fmt, r.bittrue_diff);
     }
     c.out_fmt = BLOOM_FMT_RGBQ16;
     frame_t out = run_engine(&c, &src);
@@ -351,13 +355,15 @@ static void levels_and_info(void)
     for (int i = 0; i < 2; i++) {
         s = gd_config(ws[i][0], ws[i][1]);
         CHECK(bloom_query(&s, &info) == BLOOM_OK);
-        printf("gamedev %dx%d RGB888: workspace %zu bytes, latency %d rows, source rows %d, rings L1 %zu L2 %zu "
-               "L3 %zu\n",
-               ws[i][0], ws[i][1], info.workspace_bytes, info.latency_rows, info.source_rows, info.ring_bytes[1],
-               info.ring_bytes[2], info.ring_bytes[3]);
+        printf(
+            "gamedev %dx%d RGB888: workspace %zu bytes, latency %d rows, source rows %d, rings L1 %zu L2 %zu "
+            "L3 %zu\n",
+            ws[i][0], ws[i][1], info.workspace_bytes, info.latency_rows, info.source_rows, info.ring_bytes[1],
+            info.ring_bytes[2], info.ring_bytes[3]);
         s.flags = BLOOM_FLAG_COPY_SOURCE;
         CHECK(bloom_query(&s, &info) == BLOOM_OK);
-        printf("gamedev %dx%d RGB888 COPY_SOURCE: workspace %zu bytes\n", ws[i][0], ws[i][1], info.workspace_bytes);
+        printf("gamedev %dx%d RGB888 COPY_SOURCE: workspace %zu bytes\n", ws[i][0], ws[i][1],
+               info.workspace_bytes);
     }
     frame_free(&a);
     frame_free(&b);
@@ -415,8 +421,8 @@ static void rows(void)
     c.threshold = BLOOM_Q16(0.3);
     frame_t src = frame_random(&c, c.in_fmt, 8);
     const rows_check_t rc = preset_check_rows(&c, &src, NULL, 0);
-    CHECKF(rc.busy > 0 && rc.pushed_before_pull == rc.source_rows, "gamedev rows: BUSY after %d rows (source_rows %d)",
-           rc.pushed_before_pull, rc.source_rows);
+    CHECKF(rc.busy > 0 && rc.pushed_before_pull == rc.source_rows,
+           "gamedev rows: BUSY after %d rows (source_rows %d)", rc.pushed_before_pull, rc.source_rows);
     frame_free(&src);
 }
 #endif

@@ -35,13 +35,13 @@ static bloom_config_t xna_cfg(int w, int h, bloom_format_t in, bloom_format_t ou
 }
 
 static const xna_par_t grid_params[] = {
-    {BLOOM_Q16(0.25), BLOOM_ONE, 3, 0},                             /* the defaults */
-    {0, BLOOM_ONE, 1, 0},                                           /* T = 0, one pass */
-    {BLOOM_Q16(0.6), BLOOM_Q16(2.0), 8, BLOOM_FLAG_SATURATE},       /* eight passes, 8-bit targets */
-    {BLOOM_ONE - 1u, BLOOM_Q16(0.5), 2, 0},                         /* T = 1 - 2^-16: f = 2^32 */
-    {BLOOM_Q16(0.1), BLOOM_MAX_INTENSITY, 5, BLOOM_FLAG_SATURATE},  /* intensity 10 */
-    {BLOOM_Q16(0.4), 0, 4, 0},                                      /* intensity 0: no bloom */
-    {BLOOM_Q16(0.3), BLOOM_Q16(1.5), 6, BLOOM_FLAG_DEBUG_VIEW},     /* bloom only */
+    {BLOOM_Q16(0.25), BLOOM_ONE, 3, 0},                            /* the defaults */
+    {0, BLOOM_ONE, 1, 0},                                          /* T = 0, one pass */
+    {BLOOM_Q16(0.6), BLOOM_Q16(2.0), 8, BLOOM_FLAG_SATURATE},      /* eight passes, 8-bit targets */
+    {BLOOM_ONE - 1u, BLOOM_Q16(0.5), 2, 0},                        /* T = 1 - 2^-16: f = 2^32 */
+    {BLOOM_Q16(0.1), BLOOM_MAX_INTENSITY, 5, BLOOM_FLAG_SATURATE}, /* intensity 10 */
+    {BLOOM_Q16(0.4), 0, 4, 0},                                     /* intensity 0: no bloom */
+    {BLOOM_Q16(0.3), BLOOM_Q16(1.5), 6, BLOOM_FLAG_DEBUG_VIEW},    /* bloom only */
 };
 
 /* The derived bound (sim/docs/presets/xna.md, "Why, and where 1 LSB is not
@@ -58,18 +58,18 @@ static double q16_bound(const bloom_config_t *c, double smax)
     const double I = bloom_srgb_to_linear(c->intensity / 65536.0);
     const double eS = c->in_fmt == BLOOM_FMT_RGBQ16 ? 0.0 : 0.5;
     const double A = fmax(smax - t, 0.0) > 256.0 ? 256.0 : fmax(smax - t, 0.0); /* avg into pass 0 */
-    const double eQ = eS + 1.0;                                   /* two box roundings */
-    double e = g * eQ + q * (sat ? fmin(A, 1.0) : A) * delta + 0.5; /* pass 0 */
-    e += 0.5 * (c->p.passes - 1);                                 /* passes 1 .. P-1 */
-    const double V = sat ? 1.0 : fmin(A * g, 256.0);             /* value before the intensity */
+    const double eQ = eS + 1.0;                                                 /* two box roundings */
+    double e = g * eQ + q * (sat ? fmin(A, 1.0) : A) * delta + 0.5;             /* pass 0 */
+    e += 0.5 * (c->p.passes - 1);                                               /* passes 1 .. P-1 */
+    const double V = sat ? 1.0 : fmin(A * g, 256.0); /* value before the intensity */
     bloom_info_t info;
     if (bloom_query(c, &info) != BLOOM_OK)
         return 0.0;
-    const double eI = fabs(info.intensity_q - I * 65536.0);      /* I_q's rounding, Q16 units (<= 1) */
-    e = I * e + q * V * eI + 0.5;                                 /* last pass */
-    e += 2.0;                                                     /* two tents, two roundings each */
+    const double eI = fabs(info.intensity_q - I * 65536.0); /* I_q's rounding, Q16 units (<= 1) */
+    e = I * e + q * V * eI + 0.5;                           /* last pass */
+    e += 2.0;                                               /* two tents, two roundings each */
     if (!dbg)
-        e = fmax(1.0, fabs(smax - 1.0)) * e + eS + 0.5;           /* screen */
+        e = fmax(1.0, fabs(smax - 1.0)) * e + eS + 0.5; /* screen */
     return ceil(e / q);
 }
 
@@ -80,14 +80,10 @@ static void grid(void)
         bloom_format_t in, out;
         uint32_t flags;
     } fmts[] = {
-        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0},
-        {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888, 0},
-        {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565, 0},
-        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB565, 0},
-        {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888, 0},
-        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_LINEAR},
-        {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16, 0},
-        {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888, 0},
+        {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0},   {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888, 0},
+        {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565, 0},   {BLOOM_FMT_RGB888, BLOOM_FMT_RGB565, 0},
+        {BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888, 0}, {BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_LINEAR},
+        {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGBQ16, 0},   {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888, 0},
         {BLOOM_FMT_RGB888, BLOOM_FMT_RGBQ16, 0},
     };
     const size_t nf = sizeof fmts / sizeof fmts[0], np = sizeof grid_params / sizeof grid_params[0];
@@ -112,7 +108,8 @@ static void grid(void)
                 failed += !r.ok;
                 diff += r.bittrue_diff;
                 if (r.bittrue_diff)
-                    fprintf(stderr, "xna %dx%d fmt %zu par %zu: %lld samples differ from the bit-true model\n",
+                    fprintf(stderr,
+                            "xna %dx%d fmt %zu par %zu: %lld samples differ from the bit-true model\n",
                             c.width, c.height, f, pi, r.bittrue_diff);
                 if (c.out_fmt == BLOOM_FMT_RGB565)
                     errstat_merge(&e565, &r.vs_float);
@@ -123,11 +120,10 @@ static void grid(void)
                     q16b[pi] = fmax(q16b[pi], bound);
                     if (r.vs_float.peak > bound) {
                         q16_over++;
-                        fprintf(stderr, "xna %dx%d par %zu: RGBQ16 peak %d > bound %.1f\n", c.width, c.height, pi,
-                                r.vs_float.peak, bound);
+                        fprintf(stderr, "xna %dx%d par %zu: RGBQ16 peak %d > bound %.1f\n", c.width, c.height,
+                                pi, r.vs_float.peak, bound);
                     }
-                }
-                else
+                } else
                     errstat_merge(&e8, &r.vs_float);
                 runs++;
                 frame_free(&src);
@@ -141,11 +137,13 @@ static void grid(void)
     CHECKF(e565.peak <= 1, "xna: RGB565 peak %d LSB against the float model", e565.peak);
     for (size_t pi = 0; pi < np; pi++)
         printf("  RGBQ16 out, T %.5f P %d i %.2f%s%s: peak %d LSB, exact %.2f%%, derived bound %.0f LSB\n",
-               grid_params[pi].threshold / 65536.0, grid_params[pi].passes, grid_params[pi].intensity / 65536.0,
+               grid_params[pi].threshold / 65536.0, grid_params[pi].passes,
+               grid_params[pi].intensity / 65536.0,
                grid_params[pi].flags & BLOOM_FLAG_SATURATE ? " SATURATE" : "",
                grid_params[pi].flags & BLOOM_FLAG_DEBUG_VIEW ? " DEBUG_VIEW" : "", q16p[pi].peak,
                errstat_exact_pct(&q16p[pi]), q16b[pi]);
-    CHECKF(q16_over == 0, "xna: RGBQ16 output within the derived bound in every run (%d runs over)", q16_over);
+    CHECKF(q16_over == 0, "xna: RGBQ16 output within the derived bound in every run (%d runs over)",
+           q16_over);
 }
 
 /* Small lights on black at high intensity: the bloom's rounding errors are
@@ -154,8 +152,8 @@ static void grid(void)
  * asserted is the measured one (documented). */
 static void lights_on_black(void)
 {
-    static const uint32_t intens[] = {BLOOM_Q16(1.0), BLOOM_Q16(2.0), BLOOM_Q16(4.0), BLOOM_Q16(6.0),
-                                      BLOOM_Q16(8.0), BLOOM_MAX_INTENSITY};
+    static const uint32_t intens[] = {BLOOM_Q16(1.0), BLOOM_Q16(2.0), BLOOM_Q16(4.0),
+                                      BLOOM_Q16(6.0), BLOOM_Q16(8.0), BLOOM_MAX_INTENSITY};
     static const int bound[] = {1, 1, 1, 1, 1, 1}; /* measured; the derived bound reaches 4 LSB at i = 10 */
     for (size_t ii = 0; ii < sizeof intens / sizeof intens[0]; ii++) {
         errstat_t e;
@@ -163,8 +161,10 @@ static void lights_on_black(void)
         for (int P = 1; P <= 8; P += 1 + (P > 2))
             for (int ti = 0; ti < 3; ti++)
                 for (int dbg = 0; dbg < 2; dbg++) {
-                    const xna_par_t par = {ti == 0 ? 0u : ti == 1 ? BLOOM_Q16(0.5) : BLOOM_Q16(0.9), intens[ii], P,
-                                           dbg ? BLOOM_FLAG_DEBUG_VIEW : 0u};
+                    const xna_par_t par = {ti == 0   ? 0u
+                                           : ti == 1 ? BLOOM_Q16(0.5)
+                                                     : BLOOM_Q16(0.9),
+                                           intens[ii], P, dbg ? BLOOM_FLAG_DEBUG_VIEW : 0u};
                     bloom_config_t c = xna_cfg(96, 64, BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, &par);
                     frame_t src = frame_alloc(96, 64, BLOOM_FMT_RGB888, 0);
                     uint32_t seed = (uint32_t)(ii * 100 + (size_t)P * 7 + (size_t)ti * 3 + (size_t)dbg + 1);
@@ -185,8 +185,8 @@ static void lights_on_black(void)
         char what[64];
         snprintf(what, sizeof what, "lights on black, i %.1f", intens[ii] / 65536.0);
         errstat_print(what, &e);
-        CHECKF(e.peak <= bound[ii], "lights on black at intensity %.1f: peak %d LSB (bound %d)", intens[ii] / 65536.0,
-               e.peak, bound[ii]);
+        CHECKF(e.peak <= bound[ii], "lights on black at intensity %.1f: peak %d LSB (bound %d)",
+               intens[ii] / 65536.0, e.peak, bound[ii]);
     }
 }
 
@@ -200,7 +200,9 @@ static void real_images(void)
         xna_par_t par;
     } cases[] = {
         {"rocket_floodlights.ppm", BLOOM_FMT_RGB888, {BLOOM_Q16(0.25), BLOOM_ONE, 3, 0}},
-        {"rocket_floodlights.ppm", BLOOM_FMT_RGB565, {BLOOM_Q16(0.5), BLOOM_Q16(1.5), 5, BLOOM_FLAG_SATURATE}},
+        {"rocket_floodlights.ppm",
+         BLOOM_FMT_RGB565,
+         {BLOOM_Q16(0.5), BLOOM_Q16(1.5), 5, BLOOM_FLAG_SATURATE}},
         {"hubble_deep_field.ppm", BLOOM_FMT_RGB888, {BLOOM_Q16(0.1), BLOOM_Q16(2.0), 8, 0}},
         {"hall_lamps.pfm", BLOOM_FMT_RGB888, {BLOOM_Q16(0.9), BLOOM_Q16(1.0), 4, 0}},
         {"hall_lamps.pfm", BLOOM_FMT_RGBQ16, {BLOOM_Q16(0.9), BLOOM_Q16(1.0), 4, 0}},
@@ -218,7 +220,9 @@ static void real_images(void)
         CHECKF(r.bittrue_diff == 0, "xna %s: bit-exact (%lld differ)", cases[i].name, r.bittrue_diff);
         char what[96];
         snprintf(what, sizeof what, "xna %s -> %s", cases[i].name,
-                 cases[i].out == BLOOM_FMT_RGBQ16 ? "RGBQ16" : cases[i].out == BLOOM_FMT_RGB565 ? "RGB565" : "RGB888");
+                 cases[i].out == BLOOM_FMT_RGBQ16   ? "RGBQ16"
+                 : cases[i].out == BLOOM_FMT_RGB565 ? "RGB565"
+                                                    : "RGB888");
         errstat_print(what, &r.vs_float);
         if (cases[i].out != BLOOM_FMT_RGBQ16) {
             CHECKF(r.vs_float.peak <= 1, "%s: peak %d LSB", what, r.vs_float.peak);
@@ -227,7 +231,8 @@ static void real_images(void)
              * |1 - S| reaches 255 there, so the derived bound is large; the bound uses that maximum */
             const double bound = q16_bound(&c, 256.0);
             printf("  derived bound for %s (inputs up to 256): %.0f LSB\n", what, bound);
-            CHECKF(r.vs_float.peak <= bound, "%s: peak %d LSB, derived bound %.0f", what, r.vs_float.peak, bound);
+            CHECKF(r.vs_float.peak <= bound, "%s: peak %d LSB, derived bound %.0f", what, r.vs_float.peak,
+                   bound);
         }
         frame_free(&src);
     }
@@ -241,8 +246,11 @@ static void threshold_above_all(void)
     static const struct {
         bloom_format_t fmt;
         uint32_t flags;
-    } f[] = {{BLOOM_FMT_RGB888, 0}, {BLOOM_FMT_XRGB8888, 0}, {BLOOM_FMT_RGB565, 0},
-             {BLOOM_FMT_RGB888, BLOOM_FLAG_LINEAR}, {BLOOM_FMT_RGBQ16, 0}};
+    } f[] = {{BLOOM_FMT_RGB888, 0},
+             {BLOOM_FMT_XRGB8888, 0},
+             {BLOOM_FMT_RGB565, 0},
+             {BLOOM_FMT_RGB888, BLOOM_FLAG_LINEAR},
+             {BLOOM_FMT_RGBQ16, 0}};
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
         for (int P = 1; P <= 8; P += 7) {
             const xna_par_t par = {BLOOM_Q16(0.9), BLOOM_MAX_INTENSITY, P, f[i].flags};
@@ -269,7 +277,8 @@ static void threshold_above_all(void)
                     }
                 }
             frame_t out = run_engine(&c, &src);
-            CHECKF(frame_equal(&out, &src), "threshold above every pixel (fmt %d, P %d): output = input", f[i].fmt, P);
+            CHECKF(frame_equal(&out, &src), "threshold above every pixel (fmt %d, P %d): output = input",
+                   f[i].fmt, P);
             frame_free(&out);
             frame_free(&src);
         }
@@ -311,7 +320,8 @@ static void passes_and_levels(void)
     for (int P = 1; P <= 8; P++)
         for (int sat = 0; sat < 2; sat++) {
             const xna_par_t par = {BLOOM_Q16(0.3), BLOOM_Q16(1.2), P, sat ? BLOOM_FLAG_SATURATE : 0u};
-            bloom_config_t c = xna_cfg(61, 45, sat ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, &par);
+            bloom_config_t c =
+                xna_cfg(61, 45, sat ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, &par);
             frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(P * 2 + sat));
             preset_conform_t r = preset_conform(&c, &src, NULL, 0);
             CHECK(r.ok);
@@ -466,8 +476,8 @@ static void row_interface(void)
             cc.flags |= BLOOM_FLAG_COPY_SOURCE;
         const rows_check_t rc = preset_check_rows(&cc, &src, NULL, 0);
         CHECKF(rc.busy > 0 && rc.pushed_before_pull > 1,
-               "copy %d: pushed %d rows before the first BUSY (source ring %d rows)", copy, rc.pushed_before_pull,
-               rc.source_rows);
+               "copy %d: pushed %d rows before the first BUSY (source ring %d rows)", copy,
+               rc.pushed_before_pull, rc.source_rows);
     }
     frame_free(&src);
 }
@@ -503,10 +513,11 @@ static void worst_case(void)
     bloom_query(&c, &info);
     const uint64_t lin_max = (uint64_t)BLOOM_MAX_LINEAR << (BLOOM_LIN_BITS - 16);
     const uint64_t v = (lin_max * info.intensity_q + 32768u) >> 16; /* flat: the tents and passes keep it */
-    const uint32_t expect = BLOOM_LIN_BITS > 16 ? (uint32_t)((v + (1u << (BLOOM_LIN_BITS - 17))) >> (BLOOM_LIN_BITS - 16))
-                                                : (uint32_t)v;
-    CHECKF(frame_get_q16(&out, 7, 7) == expect, "flat 256 field: bloom %u, expected %u", frame_get_q16(&out, 7, 7),
-           expect);
+    const uint32_t expect = BLOOM_LIN_BITS > 16
+                                ? (uint32_t)((v + (1u << (BLOOM_LIN_BITS - 17))) >> (BLOOM_LIN_BITS - 16))
+                                : (uint32_t)v;
+    CHECKF(frame_get_q16(&out, 7, 7) == expect, "flat 256 field: bloom %u, expected %u",
+           frame_get_q16(&out, 7, 7), expect);
     frame_free(&out);
     frame_free(&src);
 }
@@ -528,8 +539,9 @@ static void workspace(void)
                 CHECK(bloom_query(&c, &info) == BLOOM_OK);
                 printf("workspace %dx%d RGB888 P %d%s: %zu bytes (half %zu, quarter %zu, source %zu), "
                        "latency %d rows, source rows %d\n",
-                       c.width, c.height, P, copy ? " COPY_SOURCE" : "", info.workspace_bytes, info.ring_bytes[1],
-                       info.ring_bytes[2], info.ring_bytes[0], info.latency_rows, info.source_rows);
+                       c.width, c.height, P, copy ? " COPY_SOURCE" : "", info.workspace_bytes,
+                       info.ring_bytes[1], info.ring_bytes[2], info.ring_bytes[0], info.latency_rows,
+                       info.source_rows);
             }
 }
 

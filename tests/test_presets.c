@@ -45,7 +45,8 @@ static void test_config_checks(void)
             continue;
         }
         CHECK(st == BLOOM_OK && c.preset == (bloom_preset_t)p);
-        CHECKF(bloom_query(&c, &info) == BLOOM_OK, "preset %s defaults valid", bloom_preset_name((bloom_preset_t)p));
+        CHECKF(bloom_query(&c, &info) == BLOOM_OK, "preset %s defaults valid",
+               bloom_preset_name((bloom_preset_t)p));
         CHECK(info.workspace_bytes == bloom_workspace_size(&c) && info.workspace_bytes > 0);
         /* every status has a message */
         CHECK(bloom_status_str((bloom_status_t)-21)[0] != 'u');
@@ -73,7 +74,8 @@ static void test_config_checks(void)
  * (BLOOM_PARAM_*) out of range, or with the preset flag or an aux plane
  * bit stands for; if_read, if_not: the status a preset that reads it,
  * and one that does not, gives. */
-static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t *if_read, bloom_status_t *if_not)
+static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t *if_read,
+                                 bloom_status_t *if_not)
 {
     bloom_config_t c;
     bloom_info_t info;
@@ -81,12 +83,30 @@ static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t 
     bloom_config_preset(&c, p);
     *if_not = BLOOM_OK; /* a parameter the preset does not read is ignored */
     switch (bit) {
-    case BLOOM_PARAM_STRENGTH: c.p.strength = UINT32_MAX; *if_read = BLOOM_E_STRENGTH; break;
-    case BLOOM_PARAM_PASSES: c.p.passes = 0; *if_read = BLOOM_E_PASSES; break;
-    case BLOOM_PARAM_ATTENUATION: c.p.attenuation = BLOOM_ONE + 1u; *if_read = BLOOM_E_ATTENUATION; break;
-    case BLOOM_PARAM_MAX_REDUCTION: c.p.max_reduction = BLOOM_ONE + 1u; *if_read = BLOOM_E_ATTENUATION; break;
-    case BLOOM_PARAM_TINT: c.p.tint[1] = BLOOM_ONE + 1u; *if_read = BLOOM_E_TINT; break;
-    case BLOOM_PARAM_WEIGHTS: c.p.level_weight[2] = BLOOM_ONE + 1u; *if_read = BLOOM_E_WEIGHT; break;
+    case BLOOM_PARAM_STRENGTH:
+        c.p.strength = UINT32_MAX;
+        *if_read = BLOOM_E_STRENGTH;
+        break;
+    case BLOOM_PARAM_PASSES:
+        c.p.passes = 0;
+        *if_read = BLOOM_E_PASSES;
+        break;
+    case BLOOM_PARAM_ATTENUATION:
+        c.p.attenuation = BLOOM_ONE + 1u;
+        *if_read = BLOOM_E_ATTENUATION;
+        break;
+    case BLOOM_PARAM_MAX_REDUCTION:
+        c.p.max_reduction = BLOOM_ONE + 1u;
+        *if_read = BLOOM_E_ATTENUATION;
+        break;
+    case BLOOM_PARAM_TINT:
+        c.p.tint[1] = BLOOM_ONE + 1u;
+        *if_read = BLOOM_E_TINT;
+        break;
+    case BLOOM_PARAM_WEIGHTS:
+        c.p.level_weight[2] = BLOOM_ONE + 1u;
+        *if_read = BLOOM_E_WEIGHT;
+        break;
     case BLOOM_PARAM_AUX: /* an aux plane: accepted or refused */
         c.aux_fmt = BLOOM_AUX_U8;
         *if_read = BLOOM_OK;
@@ -111,10 +131,10 @@ static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t 
  * whose defaults follow the level count. */
 static void test_preset_params(void)
 {
-    static const uint32_t bits[] = {BLOOM_PARAM_STRENGTH, BLOOM_PARAM_PASSES, BLOOM_PARAM_ATTENUATION,
-                                    BLOOM_PARAM_MAX_REDUCTION, BLOOM_PARAM_AUX, BLOOM_PARAM_TINT,
-                                    BLOOM_PARAM_WEIGHTS, BLOOM_PARAM_SATURATE, BLOOM_PARAM_ADDITIVE,
-                                    BLOOM_PARAM_BAKED, BLOOM_PARAM_RADIUS};
+    static const uint32_t bits[] = {BLOOM_PARAM_STRENGTH,      BLOOM_PARAM_PASSES,   BLOOM_PARAM_ATTENUATION,
+                                    BLOOM_PARAM_MAX_REDUCTION, BLOOM_PARAM_AUX,      BLOOM_PARAM_TINT,
+                                    BLOOM_PARAM_WEIGHTS,       BLOOM_PARAM_SATURATE, BLOOM_PARAM_ADDITIVE,
+                                    BLOOM_PARAM_BAKED,         BLOOM_PARAM_RADIUS};
     const size_t nbits = sizeof bits / sizeof bits[0];
     uint32_t all = 0;
     for (size_t i = 0; i < nbits; i++) {
@@ -150,8 +170,9 @@ static void test_preset_params(void)
         bloom_config_preset(&c3, pr);
         bloom_config_preset(&c6, pr);
         const int follows = memcmp(&c3.p, &c6.p, sizeof c3.p) != 0;
-        CHECKF(follows == ((reads & BLOOM_PARAM_RADIUS) != 0), "%s: RADIUS %s, defaults follow the level count %d",
-               pn, (reads & BLOOM_PARAM_RADIUS) ? "read" : "not read", follows);
+        CHECKF(follows == ((reads & BLOOM_PARAM_RADIUS) != 0),
+               "%s: RADIUS %s, defaults follow the level count %d", pn,
+               (reads & BLOOM_PARAM_RADIUS) ? "read" : "not read", follows);
     }
     CHECKF(seen == all, "every bit read by some preset (%#x of %#x)", (unsigned)seen, (unsigned)all);
 }
@@ -200,8 +221,8 @@ static void test_graph_equals_default(void)
                 frame_free(&src);
                 free(depth);
             }
-    CHECKF(mismatches == 0, "graph engine (attenuation a=0) = default engine: %d of %d runs differ", mismatches,
-           runs);
+    CHECKF(mismatches == 0, "graph engine (attenuation a=0) = default engine: %d of %d runs differ",
+           mismatches, runs);
 }
 
 /* Row interface with the depth plane (preset_check_rows). */

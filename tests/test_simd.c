@@ -174,12 +174,12 @@ static void test_tent(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                             for (int r = 0; r < nr; r++) {
                                 const int x0 = ranges[r][0], n = ranges[r][1];
                                 cases++;
-                                if (!tent_case(ks, kc, up, odd, addmode, addsrc + (size_t)x0 * 3u, x0, n,
-                                               sw, (off + r) & 3)) {
+                                if (!tent_case(ks, kc, up, odd, addmode, addsrc + (size_t)x0 * 3u, x0, n, sw,
+                                               (off + r) & 3)) {
                                     bad++;
                                     fprintf(stderr,
-                                            "tent: sw %d w %d mode %d odd %d add %d x0 %d n %d differs\n",
-                                            sw, w, mode, odd, addmode, x0, n);
+                                            "tent: sw %d w %d mode %d odd %d add %d x0 %d n %d differs\n", sw,
+                                            w, mode, odd, addmode, x0, n);
                                 }
                             }
                         }
@@ -200,8 +200,8 @@ static void test_composite(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
         const size_t n = (size_t)widths[wi] * 3u;
         for (int mode = 0; mode < 4; mode++)
             for (int ii = 0; ii < (int)(sizeof Is / sizeof Is[0]) + 2; ii++) {
-                const uint32_t I = ii < (int)(sizeof Is / sizeof Is[0]) ? Is[ii]
-                                                                         : rng_next(&seed) % 14707630u;
+                const uint32_t I =
+                    ii < (int)(sizeof Is / sizeof Is[0]) ? Is[ii] : rng_next(&seed) % 14707630u;
                 const int off = ii & 3;
                 row_t sv = row_new(n, off, 0), a = row_new(n, (off + 1) & 3, 1), c = row_new(n, 3 - off, 1);
                 fill(sv.p, n, mode == 3 ? 0 : mode, SMAX);
@@ -261,7 +261,8 @@ static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                 row_t a = row_new((size_t)n, off, 1), c = row_new((size_t)n, 3 - off, 1);
                 const uint32_t va = ks->vtent(in[0].p, in[1].p, in[2].p, a.p, n);
                 const uint32_t vc = kc->vtent(in[0].p, in[1].p, in[2].p, c.p, n);
-                int ok = va == vc && memcmp(a.p, c.p, (size_t)n * 4u) == 0 && row_guard_ok(&a) && row_guard_ok(&c);
+                int ok =
+                    va == vc && memcmp(a.p, c.p, (size_t)n * 4u) == 0 && row_guard_ok(&a) && row_guard_ok(&c);
                 for (int i = 0; i < n && ok && mode != 3; i++)
                     ok = c.p[i] == (uint32_t)((3ull * in[0].p[i] + 4ull * in[1].p[i] + in[2].p[i] + 4u) >> 3);
                 if (!ok) {
@@ -277,8 +278,9 @@ static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                 row_t e2 = row_new((size_t)n, (off + 3) & 3, 1), o2 = row_new((size_t)n, off, 1);
                 const uint32_t any1 = ks->htent_eo(v.p + 3, e1.p, o1.p, n);
                 const uint32_t any2 = kc->htent_eo(v.p + 3, e2.p, o2.p, n);
-                ok = any1 == any2 && memcmp(e1.p, e2.p, (size_t)n * 4u) == 0 && memcmp(o1.p, o2.p, (size_t)n * 4u) == 0 &&
-                     row_guard_ok(&e1) && row_guard_ok(&o1) && row_guard_ok(&e2) && row_guard_ok(&o2);
+                ok = any1 == any2 && memcmp(e1.p, e2.p, (size_t)n * 4u) == 0 &&
+                     memcmp(o1.p, o2.p, (size_t)n * 4u) == 0 && row_guard_ok(&e1) && row_guard_ok(&o1) &&
+                     row_guard_ok(&e2) && row_guard_ok(&o2);
                 for (int i = 0; i < n && ok && mode != 3; i++) {
                     const uint64_t pv = v.p[i], cv = v.p[i + 3], qv = v.p[i + 6];
                     /* the horizontal pass rounds half down (fixed-point.md) */
@@ -296,7 +298,8 @@ static void test_flat(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                 free(o2.base);
                 /* scale */
                 for (int ii = 0; ii < (int)(sizeof Is / sizeof Is[0]); ii++) {
-                    row_t x1 = row_new((size_t)n, (off + ii) & 3, 1), x2 = row_new((size_t)n, (off + ii + 1) & 3, 1);
+                    row_t x1 = row_new((size_t)n, (off + ii) & 3, 1),
+                          x2 = row_new((size_t)n, (off + ii + 1) & 3, 1);
                     fill(x1.p, (size_t)n, mode, max);
                     memcpy(x2.p, x1.p, (size_t)n * 4u);
                     ks->scale(x1.p, n, Is[ii]);
@@ -368,9 +371,11 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         for (size_t i = 0; i < nb; i++) {
                             const uint32_t x = rng_next(&seed);
                             /* below or at the dark code, or a bright spot now and then */
-                            b[i] = (uint8_t)((x >> 8) % 97u == 0u ? x & 255u : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
+                            b[i] = (uint8_t)((x >> 8) % 97u == 0u ? x & 255u
+                                                                  : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
                         }
-                        if (fmts[fi] == BLOOM_FMT_RGB565) /* fields at most their dark codes, bright now and then */
+                        if (fmts[fi] ==
+                            BLOOM_FMT_RGB565) /* fields at most their dark codes, bright now and then */
                             for (int i = 0; i < sw; i++) {
                                 const uint32_t x = rng_next(&seed);
                                 uint32_t w = ((x % (dk.c5 + 1u)) << 11) | (((x >> 8) % (dk.c6 + 1u)) << 5) |
@@ -382,21 +387,25 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                             }
                         sp[r] = b;
                     }
-                    row_t a = row_new((size_t)dw * 3u, var & 3, 1), c = row_new((size_t)dw * 3u, (var + 1) & 3, 1);
+                    row_t a = row_new((size_t)dw * 3u, var & 3, 1),
+                          c = row_new((size_t)dw * 3u, (var + 1) & 3, 1);
                     /* the box over a range against the whole row's */
                     const int xa = (int)(rng_next(&seed) % (uint32_t)dw);
                     const int xb = xa + (int)(rng_next(&seed) % (uint32_t)(dw - xa + 1));
                     bloom_row_box_src_c(sp, fmts[fi], lin, c.p, dw, sw);
                     memset(a.p, 0, (size_t)dw * 12u);
                     bloom_row_box_src_range_c(sp, fmts[fi], lin, a.p, xa, xb, sw);
-                    if (memcmp(a.p + 3 * xa, c.p + 3 * xa, (size_t)(xb - xa) * 12u) != 0 || !row_guard_ok(&a)) {
+                    if (memcmp(a.p + 3 * xa, c.p + 3 * xa, (size_t)(xb - xa) * 12u) != 0 ||
+                        !row_guard_ok(&a)) {
                         bad++;
-                        fprintf(stderr, "box_src_range: sw %d fmt %d %d..%d differs\n", sw, (int)fmts[fi], xa, xb);
+                        fprintf(stderr, "box_src_range: sw %d fmt %d %d..%d differs\n", sw, (int)fmts[fi], xa,
+                                xb);
                     }
                     const bool ra = ks->d1(sp, fmts[fi], lin, a.p, dw, sw, &kn, &dk);
                     const bool rc = kc->d1(sp, fmts[fi], lin, c.p, dw, sw, &kn, &dk);
                     cases++;
-                    if (ra != rc || memcmp(a.p, c.p, (size_t)dw * 12u) != 0 || !row_guard_ok(&a) || !row_guard_ok(&c)) {
+                    if (ra != rc || memcmp(a.p, c.p, (size_t)dw * 12u) != 0 || !row_guard_ok(&a) ||
+                        !row_guard_ok(&c)) {
                         bad++;
                         fprintf(stderr, "d1: sw %d fmt %d var %d dark %u differs\n", sw, (int)fmts[fi], var,
                                 (unsigned)dk.c8);
@@ -493,8 +502,8 @@ static void test_eo(const bloom_kernels_t *ks)
                     cases++;
                     if (memcmp(d1, d2, nb + 9u) != 0) {
                         bad++;
-                        fprintf(stderr, "eo (%s): n %d in %d out %d var %d differs\n", ks->name, n, (int)fmts[fi],
-                                (int)fmts[fo], var);
+                        fprintf(stderr, "eo (%s): n %d in %d out %d var %d differs\n", ks->name, n,
+                                (int)fmts[fi], (int)fmts[fo], var);
                     }
                     free(d1);
                     free(d2);
@@ -534,8 +543,8 @@ static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                     const uint32_t *up[3];
                     for (int i = 0; i < 3; i++) {
                         u[i] = row_new((size_t)sw * 3u, (var + i) & 3, 0);
-                        fill(u[i].p, (size_t)sw * 3u, mode, fmts[fi] == BLOOM_FMT_RGBQ16 ? 0xFFFFFFFFu
-                                                                                          : 16u << BLOOM_LIN_BITS);
+                        fill(u[i].p, (size_t)sw * 3u, mode,
+                             fmts[fi] == BLOOM_FMT_RGBQ16 ? 0xFFFFFFFFu : 16u << BLOOM_LIN_BITS);
                         if (var >= 6) /* mostly zero: whole chunks of B = 0 */
                             for (int j = 0; j < sw * 3; j++)
                                 if ((j / 3 + i) % 50 != 7)
@@ -568,8 +577,8 @@ static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                                 ok = ok && d[j][nb + (size_t)g] == 0x5A;
                         if (!ok) {
                             bad++;
-                            fprintf(stderr, "out: w %d in %d out %d var %d odd %d differs\n", w, (int)fmts[fi],
-                                    (int)fmts[fo], var, odd);
+                            fprintf(stderr, "out: w %d in %d out %d var %d odd %d differs\n", w,
+                                    (int)fmts[fi], (int)fmts[fo], var, odd);
                         }
                     }
                     for (int j = 0; j < 3; j++)
@@ -587,7 +596,8 @@ static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 /* Whole frames: SIMD engine against the NO_SIMD engine. */
 static void test_frames(void)
 {
-    static const int sizes[][2] = {{1, 1}, {2, 2}, {3, 5}, {17, 9}, {33, 31}, {64, 48}, {101, 37}, {257, 130}};
+    static const int sizes[][2] = {{1, 1},   {2, 2},   {3, 5},    {17, 9},
+                                   {33, 31}, {64, 48}, {101, 37}, {257, 130}};
     static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
                                           BLOOM_FMT_RGBQ16};
     static const uint32_t flagsets[] = {0u, BLOOM_FLAG_LINEAR, BLOOM_FLAG_DEBUG_VIEW, BLOOM_FLAG_NO_SKIP,
@@ -660,7 +670,8 @@ static void test_frames(void)
 static void test_set(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 {
     if (bloom_kernels_simd(ks))
-        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale, eo) against C\n", ks->name);
+        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale, eo) against C\n",
+               ks->name);
     else
         printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");
     test_box(ks, kc);

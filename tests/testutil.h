@@ -132,8 +132,7 @@ static inline int frame_intact(const frame_t *f)
 static inline int frame_equal(const frame_t *a, const frame_t *b)
 {
     for (int y = 0; y < a->h; y++)
-        if (memcmp(a->p + (size_t)y * a->stride, b->p + (size_t)y * b->stride,
-                   (size_t)a->w * (size_t)a->bpp))
+        if (memcmp(a->p + (size_t)y * a->stride, b->p + (size_t)y * b->stride, (size_t)a->w * (size_t)a->bpp))
             return 0;
     return 1;
 }

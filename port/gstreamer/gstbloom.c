@@ -41,12 +41,16 @@ G_DEFINE_TYPE(GstBloom, gst_bloom, GST_TYPE_VIDEO_FILTER)
 static bloom_format_t engine_format(GstVideoFormat f)
 {
     switch (f) {
-    case GST_VIDEO_FORMAT_RGB: return BLOOM_FMT_RGB888;   /* bytes R, G, B */
-    case GST_VIDEO_FORMAT_BGRx: return BLOOM_FMT_XRGB8888; /* bytes B, G, R, x */
+    case GST_VIDEO_FORMAT_RGB:
+        return BLOOM_FMT_RGB888; /* bytes R, G, B */
+    case GST_VIDEO_FORMAT_BGRx:
+        return BLOOM_FMT_XRGB8888; /* bytes B, G, R, x */
 #if G_BYTE_ORDER == G_LITTLE_ENDIAN
-    case GST_VIDEO_FORMAT_RGB16: return BLOOM_FMT_RGB565;  /* LE word RRRRRGGG GGGBBBBB */
+    case GST_VIDEO_FORMAT_RGB16:
+        return BLOOM_FMT_RGB565; /* LE word RRRRRGGG GGGBBBBB */
 #endif
-    default: return (bloom_format_t)0;
+    default:
+        return (bloom_format_t)0;
     }
 }
 
@@ -111,8 +115,8 @@ static void configure_locked(GstBloom *self, char **warn, char **err)
     self->have_applied = TRUE;
     self->engine_aux = cfg.aux_fmt != BLOOM_AUX_NONE ? self->applied.aux : NULL;
     GST_INFO_OBJECT(self, "engine: %dx%d preset %s, %d levels, workspace %zu bytes, latency %d rows",
-                    cfg.width, cfg.height, bloom_preset_name(cfg.preset), info.levels,
-                    info.workspace_bytes, info.latency_rows);
+                    cfg.width, cfg.height, bloom_preset_name(cfg.preset), info.levels, info.workspace_bytes,
+                    info.latency_rows);
 }
 
 static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstVideoInfo *in_info,
@@ -134,11 +138,10 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
         return FALSE;
     }
     if (w < 1 || h < 1 || w > BLOOM_MAX_DIM || h > BLOOM_MAX_DIM) {
-        GST_ELEMENT_ERROR(self, CORE, NEGOTIATION,
-                          ("bloom: the video is %dx%d, above the engine's limit of %d pixels a side",
-                           w, h, BLOOM_MAX_DIM),
-                          ("BLOOM_MAX_DIM is %d: scale the video down before bloom (videoscale)",
-                           BLOOM_MAX_DIM));
+        GST_ELEMENT_ERROR(
+            self, CORE, NEGOTIATION,
+            ("bloom: the video is %dx%d, above the engine's limit of %d pixels a side", w, h, BLOOM_MAX_DIM),
+            ("BLOOM_MAX_DIM is %d: scale the video down before bloom (videoscale)", BLOOM_MAX_DIM));
         return FALSE;
     }
     char *warn, *err;
@@ -160,9 +163,8 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
     }
     /* the same format both sides by the caps; in place also wants the strides */
     gst_base_transform_set_in_place(GST_BASE_TRANSFORM(self),
-                                    in_place &&
-                                        GST_VIDEO_INFO_PLANE_STRIDE(in_info, 0) ==
-                                            GST_VIDEO_INFO_PLANE_STRIDE(out_info, 0));
+                                    in_place && GST_VIDEO_INFO_PLANE_STRIDE(in_info, 0) ==
+                                                    GST_VIDEO_INFO_PLANE_STRIDE(out_info, 0));
     return TRUE;
 }
 
@@ -190,15 +192,13 @@ static GstFlowReturn run_frame(GstBloom *self, const guint8 *src, ptrdiff_t src_
     const bloom_status_t st = bloom_process(self->engine, src, src_stride, dst, dst_stride);
     if (st != BLOOM_OK) {
         GST_ELEMENT_ERROR(self, STREAM, FAILED, ("bloom_process: %s", bloom_status_str(st)),
-                          ("%dx%d, strides %td / %td", self->width, self->height, src_stride,
-                           dst_stride));
+                          ("%dx%d, strides %td / %td", self->width, self->height, src_stride, dst_stride));
         return GST_FLOW_ERROR;
     }
     return GST_FLOW_OK;
 }
 
-static GstFlowReturn gst_bloom_transform_frame(GstVideoFilter *filter, GstVideoFrame *in,
-                                               GstVideoFrame *out)
+static GstFlowReturn gst_bloom_transform_frame(GstVideoFilter *filter, GstVideoFrame *in, GstVideoFrame *out)
 {
     return run_frame(GST_BLOOM(filter), GST_VIDEO_FRAME_PLANE_DATA(in, 0),
                      GST_VIDEO_FRAME_PLANE_STRIDE(in, 0), GST_VIDEO_FRAME_PLANE_DATA(out, 0),
@@ -273,7 +273,6 @@ static void gst_bloom_class_init(GstBloomClass *klass)
     vc->set_info = GST_DEBUG_FUNCPTR(gst_bloom_set_info);
     vc->transform_frame = GST_DEBUG_FUNCPTR(gst_bloom_transform_frame);
     vc->transform_frame_ip = GST_DEBUG_FUNCPTR(gst_bloom_transform_frame_ip);
-
 }
 
 static void gst_bloom_init(GstBloom *self)
@@ -291,5 +290,5 @@ static gboolean plugin_init(GstPlugin *plugin)
 }
 
 GST_PLUGIN_DEFINE(GST_VERSION_MAJOR, GST_VERSION_MINOR, bloom,
-                  "Fixed-point bloom (glow) filter on the bloom engine", plugin_init,
-                  GST_BLOOM_VERSION, GST_LICENSE_UNKNOWN, "bloom engine", "port/gstreamer")
+                  "Fixed-point bloom (glow) filter on the bloom engine", plugin_init, GST_BLOOM_VERSION,
+                  GST_LICENSE_UNKNOWN, "bloom engine", "port/gstreamer")

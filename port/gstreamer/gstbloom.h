@@ -64,9 +64,8 @@ void gst_bloom_settings_clear(GstBloomSettings *s);
  * defaults for that size, then what was given. Checked with bloom_query
  * (info); on a refusal returns the status and, in *why (g_free), a message
  * naming the parameter and what to do. */
-bloom_status_t gst_bloom_settings_config(const GstBloomSettings *s, int w, int h,
-                                         bloom_format_t fmt, bloom_config_t *cfg,
-                                         bloom_info_t *info, char **why);
+bloom_status_t gst_bloom_settings_config(const GstBloomSettings *s, int w, int h, bloom_format_t fmt,
+                                         bloom_config_t *cfg, bloom_info_t *info, char **why);
 
 /* "R,G,B" / "c0,c1,...": n (max) values in 0 .. 1; the count, or -1. */
 int gst_bloom_parse_list01(const char *str, double *out, int max);
@@ -91,16 +90,16 @@ struct _GstBloom {
      * settings the engine accepted (kept when a change is refused) */
     GstBloomSettings settings, applied;
     gboolean have_applied;
-    gboolean dirty;     /* settings changed since the engine was configured */
-    gboolean in_place;  /* property in-place */
+    gboolean dirty;    /* settings changed since the engine was configured */
+    gboolean in_place; /* property in-place */
 
     /* streaming thread (configured under the object lock, between frames) */
     int width, height;
     bloom_format_t fmt;
     bloom_config_t cfg;
     bloom_info_t info;
-    bloom_t *engine;     /* NULL until configured */
-    void *ws;            /* the workspace, ws_bytes, from bloom_workspace_size */
+    bloom_t *engine; /* NULL until configured */
+    void *ws;        /* the workspace, ws_bytes, from bloom_workspace_size */
     size_t ws_bytes;
     const GstBloomAux *engine_aux; /* the plane the engine reads (in applied) */
 };

@@ -54,9 +54,8 @@ static char *available(void)
     return g_string_free(s, FALSE);
 }
 
-bloom_status_t gst_bloom_settings_config(const GstBloomSettings *s, int w, int h,
-                                         bloom_format_t fmt, bloom_config_t *cfg,
-                                         bloom_info_t *info, char **why)
+bloom_status_t gst_bloom_settings_config(const GstBloomSettings *s, int w, int h, bloom_format_t fmt,
+                                         bloom_config_t *cfg, bloom_info_t *info, char **why)
 {
     const uint32_t reads = bloom_preset_params(s->preset);
     const char *pn = bloom_preset_name(s->preset) ? bloom_preset_name(s->preset) : "?";

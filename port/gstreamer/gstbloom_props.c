@@ -34,17 +34,14 @@ static GType gst_bloom_preset_get_type(void)
 {
     static GType type = 0;
     static const GEnumValue values[] = {
-        {BLOOM_PRESET_UNITY, "Unity PPv2 / Catlike Coding: box down, tent up, soft knee, additive",
-         "unity"},
+        {BLOOM_PRESET_UNITY, "Unity PPv2 / Catlike Coding: box down, tent up, soft knee, additive", "unity"},
         {BLOOM_PRESET_GAMEDEV,
          "Rec.709 luminance threshold, 9-tap Gaussian at 1/2..1/8, Reinhard, gamma 1/2.2", "gamedev"},
         {BLOOM_PRESET_XNA, "XNA: threshold subtraction at 1/4, Kawase passes, screen combine", "xna"},
         {BLOOM_PRESET_ATTENUATION, "unity with level 1 scaled by a depth plane (needs aux-location)",
          "attenuation"},
-        {BLOOM_PRESET_ARM, "Arm dual filtering on luminance, optional mask, baked map (aux-location)",
-         "arm"},
-        {BLOOM_PRESET_COD, "13-tap down with Karis average, 3x3 tent up, energy-conserving weights",
-         "cod"},
+        {BLOOM_PRESET_ARM, "Arm dual filtering on luminance, optional mask, baked map (aux-location)", "arm"},
+        {BLOOM_PRESET_COD, "13-tap down with Karis average, 3x3 tent up, energy-conserving weights", "cod"},
         {0, NULL, NULL}};
     if (g_once_init_enter(&type))
         g_once_init_leave(&type, g_enum_register_static("GstBloomPreset", values));
@@ -63,7 +60,6 @@ static GType gst_bloom_view_get_type(void)
         g_once_init_leave(&type, g_enum_register_static("GstBloomView", values));
     return type;
 }
-
 
 /* ---- properties ---------------------------------------------------------------- */
 
@@ -98,16 +94,41 @@ void gst_bloom_set_property(GObject *object, guint id, const GValue *value, GPar
     GstBloomSettings *s = &self->settings, before;
     memcpy(&before, s, sizeof before);
     switch (id) {
-    case PROP_PRESET: s->preset = (bloom_preset_t)g_value_get_enum(value); break;
-    case PROP_THRESHOLD: s->threshold = g_value_get_double(value); s->given |= GB_GIVEN_THRESHOLD; break;
-    case PROP_KNEE: s->knee = g_value_get_double(value); s->given |= GB_GIVEN_KNEE; break;
-    case PROP_INTENSITY: s->intensity = g_value_get_double(value); s->given |= GB_GIVEN_INTENSITY; break;
-    case PROP_LEVELS: s->levels = g_value_get_int(value); break;
-    case PROP_VIEW: s->bloom_only = g_value_get_enum(value) == 1; break;
-    case PROP_LINEAR: s->linear = g_value_get_boolean(value); break;
-    case PROP_STRENGTH: s->strength = g_value_get_double(value); s->given |= GB_GIVEN_STRENGTH; break;
-    case PROP_PASSES: s->passes = g_value_get_int(value); s->given |= GB_GIVEN_PASSES; break;
-    case PROP_SATURATE: s->saturate = g_value_get_boolean(value); break;
+    case PROP_PRESET:
+        s->preset = (bloom_preset_t)g_value_get_enum(value);
+        break;
+    case PROP_THRESHOLD:
+        s->threshold = g_value_get_double(value);
+        s->given |= GB_GIVEN_THRESHOLD;
+        break;
+    case PROP_KNEE:
+        s->knee = g_value_get_double(value);
+        s->given |= GB_GIVEN_KNEE;
+        break;
+    case PROP_INTENSITY:
+        s->intensity = g_value_get_double(value);
+        s->given |= GB_GIVEN_INTENSITY;
+        break;
+    case PROP_LEVELS:
+        s->levels = g_value_get_int(value);
+        break;
+    case PROP_VIEW:
+        s->bloom_only = g_value_get_enum(value) == 1;
+        break;
+    case PROP_LINEAR:
+        s->linear = g_value_get_boolean(value);
+        break;
+    case PROP_STRENGTH:
+        s->strength = g_value_get_double(value);
+        s->given |= GB_GIVEN_STRENGTH;
+        break;
+    case PROP_PASSES:
+        s->passes = g_value_get_int(value);
+        s->given |= GB_GIVEN_PASSES;
+        break;
+    case PROP_SATURATE:
+        s->saturate = g_value_get_boolean(value);
+        break;
     case PROP_ATTENUATION:
         s->attenuation = g_value_get_double(value);
         s->given |= GB_GIVEN_ATTENUATION;
@@ -126,16 +147,24 @@ void gst_bloom_set_property(GObject *object, guint id, const GValue *value, GPar
         s->nweights = n;
         s->given = n ? s->given | GB_GIVEN_WEIGHTS : s->given & ~(unsigned)GB_GIVEN_WEIGHTS;
         break;
-    case PROP_ADDITIVE: s->additive = g_value_get_boolean(value); break;
-    case PROP_BAKED: s->baked = g_value_get_boolean(value); break;
-    case PROP_RADIUS: s->radius = g_value_get_int(value); break;
+    case PROP_ADDITIVE:
+        s->additive = g_value_get_boolean(value);
+        break;
+    case PROP_BAKED:
+        s->baked = g_value_get_boolean(value);
+        break;
+    case PROP_RADIUS:
+        s->radius = g_value_get_int(value);
+        break;
     case PROP_AUX_LOCATION: {
         GstBloomAux *old = s->aux;
         s->aux = aux; /* the settings own the new plane's reference */
         aux = old;    /* released below, outside the lock */
         break;
     }
-    case PROP_IN_PLACE: self->in_place = g_value_get_boolean(value); break;
+    case PROP_IN_PLACE:
+        self->in_place = g_value_get_boolean(value);
+        break;
     default:
         GST_OBJECT_UNLOCK(self);
         G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -169,35 +198,46 @@ void gst_bloom_get_property(GObject *object, guint id, GValue *value, GParamSpec
     GST_OBJECT_LOCK(self);
     const GstBloomSettings *s = &self->settings;
     const uint32_t reads = bloom_preset_params(s->preset);
-    const bloom_status_t st = gst_bloom_settings_config(s, self->width ? self->width : 1920,
-                                                        self->height ? self->height : 1080,
-                                                        BLOOM_FMT_RGB888, &c, &info, &why);
+    const bloom_status_t st =
+        gst_bloom_settings_config(s, self->width ? self->width : 1920, self->height ? self->height : 1080,
+                                  BLOOM_FMT_RGB888, &c, &info, &why);
     g_free(why);
     switch (id) {
-    case PROP_PRESET: g_value_set_enum(value, s->preset); break;
+    case PROP_PRESET:
+        g_value_set_enum(value, s->preset);
+        break;
     case PROP_THRESHOLD:
         g_value_set_double(value, effective(s, GB_GIVEN_THRESHOLD, 0, s->threshold, c.threshold));
         break;
-    case PROP_KNEE: g_value_set_double(value, effective(s, GB_GIVEN_KNEE, 0, s->knee, c.soft_knee)); break;
+    case PROP_KNEE:
+        g_value_set_double(value, effective(s, GB_GIVEN_KNEE, 0, s->knee, c.soft_knee));
+        break;
     case PROP_INTENSITY:
         g_value_set_double(value, effective(s, GB_GIVEN_INTENSITY, 0, s->intensity, c.intensity));
         break;
-    case PROP_LEVELS: g_value_set_int(value, s->levels); break;
-    case PROP_VIEW: g_value_set_enum(value, s->bloom_only ? 1 : 0); break;
-    case PROP_LINEAR: g_value_set_boolean(value, s->linear); break;
+    case PROP_LEVELS:
+        g_value_set_int(value, s->levels);
+        break;
+    case PROP_VIEW:
+        g_value_set_enum(value, s->bloom_only ? 1 : 0);
+        break;
+    case PROP_LINEAR:
+        g_value_set_boolean(value, s->linear);
+        break;
     case PROP_STRENGTH:
-        g_value_set_double(value, effective(s, GB_GIVEN_STRENGTH, BLOOM_PARAM_STRENGTH, s->strength,
-                                            c.p.strength));
+        g_value_set_double(value,
+                           effective(s, GB_GIVEN_STRENGTH, BLOOM_PARAM_STRENGTH, s->strength, c.p.strength));
         break;
     case PROP_PASSES:
-        g_value_set_int(value, ((s->given & GB_GIVEN_PASSES) || !(reads & BLOOM_PARAM_PASSES))
-                                   ? s->passes
-                                   : c.p.passes);
+        g_value_set_int(value, ((s->given & GB_GIVEN_PASSES) || !(reads & BLOOM_PARAM_PASSES)) ? s->passes
+                                                                                               : c.p.passes);
         break;
-    case PROP_SATURATE: g_value_set_boolean(value, s->saturate); break;
+    case PROP_SATURATE:
+        g_value_set_boolean(value, s->saturate);
+        break;
     case PROP_ATTENUATION:
-        g_value_set_double(value, effective(s, GB_GIVEN_ATTENUATION, BLOOM_PARAM_ATTENUATION,
-                                            s->attenuation, c.p.attenuation));
+        g_value_set_double(value, effective(s, GB_GIVEN_ATTENUATION, BLOOM_PARAM_ATTENUATION, s->attenuation,
+                                            c.p.attenuation));
         break;
     case PROP_MAX_REDUCTION:
         g_value_set_double(value, effective(s, GB_GIVEN_MAX_REDUCTION, BLOOM_PARAM_MAX_REDUCTION,
@@ -220,11 +260,21 @@ void gst_bloom_get_property(GObject *object, guint id, GValue *value, GParamSpec
             g_value_set_string(value, "");
         }
         break;
-    case PROP_ADDITIVE: g_value_set_boolean(value, s->additive); break;
-    case PROP_BAKED: g_value_set_boolean(value, s->baked); break;
-    case PROP_RADIUS: g_value_set_int(value, s->radius); break;
-    case PROP_AUX_LOCATION: g_value_set_string(value, s->aux ? s->aux->path : NULL); break;
-    case PROP_IN_PLACE: g_value_set_boolean(value, self->in_place); break;
+    case PROP_ADDITIVE:
+        g_value_set_boolean(value, s->additive);
+        break;
+    case PROP_BAKED:
+        g_value_set_boolean(value, s->baked);
+        break;
+    case PROP_RADIUS:
+        g_value_set_int(value, s->radius);
+        break;
+    case PROP_AUX_LOCATION:
+        g_value_set_string(value, s->aux ? s->aux->path : NULL);
+        break;
+    case PROP_IN_PLACE:
+        g_value_set_boolean(value, self->in_place);
+        break;
     default:
         GST_OBJECT_UNLOCK(self);
         G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -260,8 +310,7 @@ void gst_bloom_install_properties(GObjectClass *oc)
                                 "gamedev and cod 0)",
                                 0.0, 1.0, 0.5, GB_CTRL));
     install(oc, PROP_INTENSITY,
-            g_param_spec_double("intensity", "Intensity",
-                                "Glow intensity, gamma space (0: no glow)", 0.0,
+            g_param_spec_double("intensity", "Intensity", "Glow intensity, gamma space (0: no glow)", 0.0,
                                 BLOOM_MAX_INTENSITY / 65536.0, 1.0, GB_CTRL));
     install(oc, PROP_LEVELS,
             g_param_spec_int("levels", "Levels",
@@ -272,9 +321,8 @@ void gst_bloom_install_properties(GObjectClass *oc)
             g_param_spec_enum("view", "View", "What comes out: the frame with its glow, or the glow alone",
                               GST_TYPE_BLOOM_VIEW, 0, GB_FLAGS));
     install(oc, PROP_LINEAR,
-            g_param_spec_boolean("linear", "Linear",
-                                 "The codes are linear light (no sRGB decode and encode)", FALSE,
-                                 GB_FLAGS));
+            g_param_spec_boolean("linear", "Linear", "The codes are linear light (no sRGB decode and encode)",
+                                 FALSE, GB_FLAGS));
     install(oc, PROP_STRENGTH,
             g_param_spec_double("strength", "Strength",
                                 "gamedev: scene + strength * bloom; arm with baked: the map's "
@@ -284,19 +332,18 @@ void gst_bloom_install_properties(GObjectClass *oc)
             g_param_spec_int("passes", "Passes", "xna: Kawase blur passes", 1, 8, 3, GB_CTRL));
     install(oc, PROP_SATURATE,
             g_param_spec_boolean("saturate", "Saturate",
-                                 "xna: clamp at 1.0 between passes, as 8-bit render targets did",
-                                 FALSE, GB_FLAGS));
+                                 "xna: clamp at 1.0 between passes, as 8-bit render targets did", FALSE,
+                                 GB_FLAGS));
     install(oc, PROP_ATTENUATION,
             g_param_spec_double("attenuation", "Attenuation",
-                                "attenuation: a of max(lerp(1, depth, a), max-reduction)", 0.0, 1.0,
-                                0.75, GB_CTRL));
+                                "attenuation: a of max(lerp(1, depth, a), max-reduction)", 0.0, 1.0, 0.75,
+                                GB_CTRL));
     install(oc, PROP_MAX_REDUCTION,
             g_param_spec_double("max-reduction", "Maximum reduction",
-                                "attenuation: r, the floor of the depth factor", 0.0, 1.0, 0.25,
-                                GB_CTRL));
-    install(oc, PROP_TINT,
-            g_param_spec_string("tint", "Tint", "cod, arm: glow colour \"R,G,B\", each 0..1", "1,1,1",
-                                GB_FLAGS));
+                                "attenuation: r, the floor of the depth factor", 0.0, 1.0, 0.25, GB_CTRL));
+    install(
+        oc, PROP_TINT,
+        g_param_spec_string("tint", "Tint", "cod, arm: glow colour \"R,G,B\", each 0..1", "1,1,1", GB_FLAGS));
     install(oc, PROP_WEIGHTS,
             g_param_spec_string("weights", "Level weights",
                                 "cod: blend factors \"c0,c1,...\" (1..16 values, each 0..1; c0 is "
@@ -326,8 +373,7 @@ void gst_bloom_install_properties(GObjectClass *oc)
             g_param_spec_boolean("in-place", "In place",
                                  "Work in the input buffer (GstBaseTransform copies it first when it "
                                  "is not writable); false: write a new buffer (better after a tee)",
-                                 TRUE,
-                                 G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS | GST_PARAM_MUTABLE_READY));
+                                 TRUE, G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS | GST_PARAM_MUTABLE_READY));
     gst_type_mark_as_plugin_api(GST_TYPE_BLOOM_PRESET, 0);
     gst_type_mark_as_plugin_api(GST_TYPE_BLOOM_VIEW, 0);
 }

@@ -41,11 +41,30 @@ GST_START_TEST(test_inspect_page)
     fail_unless(g_spawn_sync(NULL, argv, NULL, G_SPAWN_SEARCH_PATH, NULL, NULL, &out, &err, &status, &e),
                 "gst-inspect-1.0: %s", e ? e->message : "?");
     fail_unless(g_spawn_check_wait_status(status, NULL), "gst-inspect-1.0 bloom failed: %s", err);
-    static const char *const want[] = {"Filter/Effect/Video", "preset", "threshold", "knee",
-                                       "intensity", "levels", "view", "linear", "strength", "passes",
-                                       "saturate", "attenuation", "max-reduction", "tint", "weights",
-                                       "additive", "baked", "radius", "aux-location", "in-place",
-                                       "bloom-only", "cod", "RGB16", "BGRx",
+    static const char *const want[] = {"Filter/Effect/Video",
+                                       "preset",
+                                       "threshold",
+                                       "knee",
+                                       "intensity",
+                                       "levels",
+                                       "view",
+                                       "linear",
+                                       "strength",
+                                       "passes",
+                                       "saturate",
+                                       "attenuation",
+                                       "max-reduction",
+                                       "tint",
+                                       "weights",
+                                       "additive",
+                                       "baked",
+                                       "radius",
+                                       "aux-location",
+                                       "in-place",
+                                       "bloom-only",
+                                       "cod",
+                                       "RGB16",
+                                       "BGRx",
                                        "changeable in NULL, READY, PAUSED or PLAYING state"};
     for (gsize i = 0; i < G_N_ELEMENTS(want); i++)
         fail_unless(strstr(out, want[i]) != NULL, "gst-inspect-1.0 bloom does not show '%s'", want[i]);
@@ -88,9 +107,9 @@ GST_END_TEST;
  * the largest and the smallest sizes run. */
 GST_START_TEST(test_caps_sizes)
 {
-    static const int sizes[][3] = {{BLOOM_MAX_DIM + 1, 2, 0}, {2, BLOOM_MAX_DIM + 1, 0},
-                                   {BLOOM_MAX_DIM, 1, 1},     {1, 1, 1},
-                                   {1, 40, 1},                {1, BLOOM_MAX_DIM, 1}};
+    static const int sizes[][3] = {
+        {BLOOM_MAX_DIM + 1, 2, 0}, {2, BLOOM_MAX_DIM + 1, 0}, {BLOOM_MAX_DIM, 1, 1}, {1, 1, 1}, {1, 40, 1},
+        {1, BLOOM_MAX_DIM, 1}};
     const tg_fmt_t *f = &tg_fmts[0];
     for (gsize i = 0; i < G_N_ELEMENTS(sizes); i++) {
         const int w = sizes[i][0], h = sizes[i][1], stride = tg_default_stride(f, w, h);
@@ -134,9 +153,9 @@ GST_START_TEST(test_property_ranges)
         const char *name;
         double min, max, def, in, out;
     } d[] = {
-        {"threshold", 0, 256, 1.0, 0.6, 256.5},   {"knee", 0, 1, 0.5, 0.25, 1.01},
-        {"intensity", 0, 10, 1.0, 2.5, 10.01},    {"strength", 0, 16, 1.0, 3.0, 16.5},
-        {"attenuation", 0, 1, 0.75, 0.5, 1.5},    {"max-reduction", 0, 1, 0.25, 0.1, -0.1},
+        {"threshold", 0, 256, 1.0, 0.6, 256.5}, {"knee", 0, 1, 0.5, 0.25, 1.01},
+        {"intensity", 0, 10, 1.0, 2.5, 10.01},  {"strength", 0, 16, 1.0, 3.0, 16.5},
+        {"attenuation", 0, 1, 0.75, 0.5, 1.5},  {"max-reduction", 0, 1, 0.25, 0.1, -0.1},
     };
     static const struct {
         const char *name;

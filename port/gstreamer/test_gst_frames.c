@@ -36,7 +36,8 @@ GST_START_TEST(test_pipeline_presets)
         GstBuffer *out = tg_pipe_run(&p, f, W, H, px, stride);
         char *why = NULL;
         fail_unless(exp && out, "%s %s: no output", bloom_preset_name(pr), f->name);
-        fail_unless(tg_same(out, f, W, H, exp, stride, &why), "%s frame %d: %s", bloom_preset_name(pr), k, why);
+        fail_unless(tg_same(out, f, W, H, exp, stride, &why), "%s frame %d: %s", bloom_preset_name(pr), k,
+                    why);
         gst_buffer_unref(out);
         g_free(exp);
         g_free(px);
@@ -62,7 +63,8 @@ GST_START_TEST(test_pipeline_parameters)
     switch (__i__ / TG_NFMTS) {
     case 0:
         gst_util_set_object_arg(G_OBJECT(p.bloom), "view", "bloom-only");
-        g_object_set(p.bloom, "threshold", 0.6, "knee", 0.2, "intensity", 2.5, "levels", 3, "linear", TRUE, NULL);
+        g_object_set(p.bloom, "threshold", 0.6, "knee", 0.2, "intensity", 2.5, "levels", 3, "linear", TRUE,
+                     NULL);
         tg_config(&c, BLOOM_PRESET_UNITY, W, H, f->bf);
         c.threshold = BLOOM_Q16(0.6);
         c.soft_knee = BLOOM_Q16(0.2);
@@ -340,14 +342,17 @@ GST_START_TEST(test_launch_lines)
         const char *line, *want;
     } l[] = {
         {"videotestsrc num-buffers=5 ! video/x-raw,width=320,height=240 ! videoconvert ! bloom ! "
-         "videoconvert ! fakesink", "eos"},
+         "videoconvert ! fakesink",
+         "eos"},
         {"videotestsrc num-buffers=3 pattern=ball ! video/x-raw,width=160,height=120 ! videoconvert ! "
          "bloom preset=cod radius=20 tint=\"1,0.8,0.6\" ! videoconvert ! video/x-raw,format=I420 ! fakesink",
          "eos"},
         {"videotestsrc num-buffers=3 ! video/x-raw,format=RGB16,width=64,height=64 ! "
-         "bloom preset=gamedev strength=2 threshold=0.5 view=bloom-only ! fakesink", "eos"},
+         "bloom preset=gamedev strength=2 threshold=0.5 view=bloom-only ! fakesink",
+         "eos"},
         {"videotestsrc num-buffers=3 ! video/x-raw,width=64,height=64 ! videoconvert ! "
-         "bloom threshold=1.5 preset=xna ! videoconvert ! fakesink", "threshold above 256.0"},
+         "bloom threshold=1.5 preset=xna ! videoconvert ! fakesink",
+         "threshold above 256.0"},
     };
     for (gsize i = 0; i < G_N_ELEMENTS(l); i++) {
         GError *err = NULL;

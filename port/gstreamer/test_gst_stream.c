@@ -15,7 +15,8 @@
 
 /* ---- streaming: changes while playing, flushing ---------------------------------------- */
 
-static void run_check(tg_pipe_t *p, const tg_fmt_t *f, const bloom_config_t *c, guint32 seed, const char *what)
+static void run_check(tg_pipe_t *p, const tg_fmt_t *f, const bloom_config_t *c, guint32 seed,
+                      const char *what)
 {
     const int stride = tg_default_stride(f, W, H);
     guint8 *px = tg_frame(f, W, H, stride, seed);
@@ -54,13 +55,15 @@ GST_START_TEST(test_change_while_playing)
     gst_util_set_object_arg(G_OBJECT(p.bloom), "preset", "xna");
     run_check(&p, f, &c, 4, "after a refused change");
     char *t = tg_bus_text(p.bus, GST_MESSAGE_WARNING, 5 * GST_SECOND);
-    fail_unless(t && strstr(t, bloom_status_str(BLOOM_E_THRESHOLD)) && strstr(t, "previous configuration is kept"),
+    fail_unless(t && strstr(t, bloom_status_str(BLOOM_E_THRESHOLD)) &&
+                    strstr(t, "previous configuration is kept"),
                 "warning: %s", t ? t : "none");
     g_free(t);
     int preset;
     double th;
     g_object_get(p.bloom, "preset", &preset, "threshold", &th, NULL);
-    fail_unless(preset == BLOOM_PRESET_COD && th == 0.5, "after the refusal: preset %d threshold %g", preset, th);
+    fail_unless(preset == BLOOM_PRESET_COD && th == 0.5, "after the refusal: preset %d threshold %g", preset,
+                th);
     g_object_set(p.bloom, "threshold", 0.3, NULL);
     c.threshold = BLOOM_Q16(0.3);
     run_check(&p, f, &c, 5, "a good change after the refused one");
@@ -155,7 +158,8 @@ GST_START_TEST(test_changes_racing)
         GstBuffer *out = tg_pipe_run(&p, f, W, H, px, stride);
         char *wa = NULL, *wb = NULL;
         fail_unless(out && ea && eb, "frame %d: no output", k);
-        const int is_a = tg_same(out, f, W, H, ea, stride, &wa), is_b = tg_same(out, f, W, H, eb, stride, &wb);
+        const int is_a = tg_same(out, f, W, H, ea, stride, &wa),
+                  is_b = tg_same(out, f, W, H, eb, stride, &wb);
         fail_unless(is_a || is_b, "frame %d is neither unity's (%s) nor cod's (%s)", k, wa, wb);
         seen[is_b]++;
         g_free(wa);

@@ -33,8 +33,7 @@ void tg_config(bloom_config_t *c, bloom_preset_t p, int w, int h, bloom_format_t
     fail_unless(bloom_config_preset(c, p) == BLOOM_OK, "preset %d not in this build", (int)p);
 }
 
-guint8 *tg_engine(const bloom_config_t *cfg, const guint8 *src, int stride, const guint8 *aux,
-                  int aux_stride)
+guint8 *tg_engine(const bloom_config_t *cfg, const guint8 *src, int stride, const guint8 *aux, int aux_stride)
 {
     bloom_info_t info;
     bloom_t *b;
@@ -75,8 +74,8 @@ GstBuffer *tg_buffer(const tg_fmt_t *f, int w, int h, int stride, const guint8 *
     if (stride != tg_default_stride(f, w, h)) {
         gsize offset[GST_VIDEO_MAX_PLANES] = {0};
         gint strides[GST_VIDEO_MAX_PLANES] = {stride};
-        gst_buffer_add_video_meta_full(b, GST_VIDEO_FRAME_FLAG_NONE, f->vf, (guint)w, (guint)h, 1,
-                                       offset, strides);
+        gst_buffer_add_video_meta_full(b, GST_VIDEO_FRAME_FLAG_NONE, f->vf, (guint)w, (guint)h, 1, offset,
+                                       strides);
     }
     return b;
 }
@@ -96,10 +95,11 @@ gboolean tg_same(GstBuffer *buf, const tg_fmt_t *f, int w, int h, const guint8 *
     const int stride = GST_VIDEO_FRAME_PLANE_STRIDE(&fr, 0);
     for (int y = 0; y < h && !*why; y++)
         for (int x = 0; x < w * f->bpp; x++) {
-            const guint8 a = d[(gsize)y * (gsize)stride + (gsize)x], e = exp[(gsize)y * (gsize)exp_stride + (gsize)x];
+            const guint8 a = d[(gsize)y * (gsize)stride + (gsize)x],
+                         e = exp[(gsize)y * (gsize)exp_stride + (gsize)x];
             if (a != e) {
-                *why = g_strdup_printf("%s %dx%d: row %d byte %d is %u, the engine's %u", f->name, w, h,
-                                       y, x, a, e);
+                *why = g_strdup_printf("%s %dx%d: row %d byte %d is %u, the engine's %u", f->name, w, h, y, x,
+                                       a, e);
                 break;
             }
         }

@@ -25,34 +25,34 @@ enum cam_pixfmt { CAM_FMT_YUYV = 1, CAM_FMT_RGB24, CAM_FMT_GREY };
 enum cam_mode { CAM_MODE_BLOOM = 0, CAM_MODE_OFF, CAM_MODE_BLOOM_ONLY, CAM_MODE_COUNT };
 
 typedef struct {
-    char chip[64];  /* "gpiochip0", "0", or a chip label */
-    char line[64];  /* offset ("17") or line name ("GPIO17") */
+    char chip[64]; /* "gpiochip0", "0", or a chip label */
+    char line[64]; /* offset ("17") or line name ("GPIO17") */
     int set;
 } cam_gpio_spec_t;
 
 typedef struct {
-    const char *device;       /* --device, default /dev/video0 */
-    const char *fb;           /* --fb, default /dev/fb0; "none": off-screen */
-    int width, height;        /* --size WxH, default 640x480 */
-    enum cam_pixfmt format;   /* --format, default yuyv */
-    bloom_preset_t preset;    /* --preset NAME, default unity */
-    int levels;               /* bloom parameters: the preset's defaults (bloom_config_preset) */
+    const char *device;     /* --device, default /dev/video0 */
+    const char *fb;         /* --fb, default /dev/fb0; "none": off-screen */
+    int width, height;      /* --size WxH, default 640x480 */
+    enum cam_pixfmt format; /* --format, default yuyv */
+    bloom_preset_t preset;  /* --preset NAME, default unity */
+    int levels;             /* bloom parameters: the preset's defaults (bloom_config_preset) */
     uint32_t threshold, knee, intensity; /* Q16.16 */ /* unless given on the command line */
-    bloom_preset_params_t params; /* the preset's parameters, defaults (at --size) then the options */
+    bloom_preset_params_t params;       /* the preset's parameters, defaults (at --size) then the options */
     bloom_preset_params_t given_params; /* the preset options given (given_mask: CAM_P_*) */
     unsigned given_mask;
-    int given_weights;        /* --weights: level_weight[0 .. given_weights-1] */
-    uint32_t preset_flags;    /* BLOOM_FLAG_SATURATE / _BAKED / _ADDITIVE */
+    int given_weights;          /* --weights: level_weight[0 .. given_weights-1] */
+    uint32_t preset_flags;      /* BLOOM_FLAG_SATURATE / _BAKED / _ADDITIVE */
     bloom_aux_format_t aux_fmt; /* what the preset reads by default (U8 until --aux is read) */
-    const char *aux;          /* --aux FILE: the preset's plane, read once after S_FMT */
-    long frames;              /* --frames N, 0 = until a signal */
-    int buffers;              /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
-    int timeout_ms;           /* --timeout MS for poll (default 2000) */
-    enum cam_mode mode;       /* --mode bloom|off|bloom-only */
-    int stats;                /* --stats */
-    int quiet;                /* -q */
-    const char *record;       /* --record FILE */
-    const char *dump_fb;      /* --dump-fb FILE: the last frame shown, as drawn */
+    const char *aux;            /* --aux FILE: the preset's plane, read once after S_FMT */
+    long frames;                /* --frames N, 0 = until a signal */
+    int buffers;                /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
+    int timeout_ms;             /* --timeout MS for poll (default 2000) */
+    enum cam_mode mode;         /* --mode bloom|off|bloom-only */
+    int stats;                  /* --stats */
+    int quiet;                  /* -q */
+    const char *record;         /* --record FILE */
+    const char *dump_fb;        /* --dump-fb FILE: the last frame shown, as drawn */
     cam_gpio_spec_t gpio_frame, gpio_button;
 } cam_opts_t;
 
@@ -65,8 +65,13 @@ const char *cam_mode_name(enum cam_mode m);
 /* The engine configuration of the options for a w x h RGB888 frame: the
  * preset's defaults for that size (some depend on it: cod's level weights),
  * then the options given. */
-enum { CAM_P_STRENGTH = 1u, CAM_P_PASSES = 2u, CAM_P_ATTENUATION = 4u, CAM_P_MAX_REDUCTION = 8u,
-       CAM_P_TINT = 16u };
+enum {
+    CAM_P_STRENGTH = 1u,
+    CAM_P_PASSES = 2u,
+    CAM_P_ATTENUATION = 4u,
+    CAM_P_MAX_REDUCTION = 8u,
+    CAM_P_TINT = 16u
+};
 void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg);
 
 /* ---- the aux plane (cam_aux.c) ------------------------------------------- */
@@ -75,8 +80,8 @@ void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg);
  * maxval is below. The plane must be w x h (the capture size after
  * VIDIOC_S_FMT). Returns 0, or -1 with err naming the file and the
  * problem. *data is malloc'd (w * bytes per sample per row). */
-int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_t **data,
-                 char *err, size_t errlen);
+int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_t **data, char *err,
+                 size_t errlen);
 
 /* ---- pure helpers (cam_conv.c) ------------------------------------------- */
 /* One row of YUYV (BT.601 limited range, the simulator's integer rule) to
@@ -138,8 +143,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
 int cam_v4l2_start(cam_v4l2_t *c);
 /* Wait for and dequeue one frame: 0 got one, 1 interrupted by a signal
  * (nothing dequeued), -1 fault (message printed). */
-int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready,
-                     cam_frame_t *f);
+int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready, cam_frame_t *f);
 int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
 void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
 /* ioctl(2), retried while it fails with EINTR. */
@@ -152,9 +156,9 @@ typedef struct {
     size_t mem_len;
     int xres, yres, line_length, bpp; /* bytes per pixel */
     bloom_format_t format;
-    int pages, page;              /* 2 when double-buffering with FBIOPAN_DISPLAY */
-    unsigned xoffset, yoffset;    /* of the page on show */
-    int changed_var;              /* var screeninfo changed, restore on close */
+    int pages, page;                    /* 2 when double-buffering with FBIOPAN_DISPLAY */
+    unsigned xoffset, yoffset;          /* of the page on show */
+    int changed_var;                    /* var screeninfo changed, restore on close */
     struct fb_var_screeninfo saved_var; /* as found */
     char id[17];
 } cam_fb_t;
@@ -162,8 +166,8 @@ typedef struct {
 /* path "none": an off-screen XRGB8888 surface of w x h (for measuring). */
 int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h);
 uint8_t *cam_fb_draw_page(cam_fb_t *fb); /* first byte of the page to draw */
-int cam_fb_show(cam_fb_t *fb);          /* pan to the page just drawn */
-void cam_fb_close(cam_fb_t *fb);        /* restore pan and var, unmap, close */
+int cam_fb_show(cam_fb_t *fb);           /* pan to the page just drawn */
+void cam_fb_close(cam_fb_t *fb);         /* restore pan and var, unmap, close */
 
 /* ---- GPIO (gpio.c) ------------------------------------------------------- */
 typedef struct cam_gpio cam_gpio_t;

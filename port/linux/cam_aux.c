@@ -52,8 +52,8 @@ static long header_num(FILE *f, int last)
     return v;
 }
 
-int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_t **data,
-                 char *err, size_t errlen)
+int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_t **data, char *err,
+                 size_t errlen)
 {
     *data = NULL;
     FILE *f = fopen(path, "rb");
@@ -67,8 +67,8 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
         const int c = fgetc(f);
         ok = is_space(c) || (c == '#' && ungetc(c, f) != EOF);
     }
-    ok = ok && (pw = header_num(f, 0)) >= 1 && (ph = header_num(f, 0)) >= 1 &&
-         (mv = header_num(f, 1)) >= 1 && mv <= 65535;
+    ok = ok && (pw = header_num(f, 0)) >= 1 && (ph = header_num(f, 0)) >= 1 && (mv = header_num(f, 1)) >= 1 &&
+         mv <= 65535;
     if (!ok) {
         fclose(f);
         return fail(err, errlen,
@@ -116,8 +116,8 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
         if (c > (uint32_t)mv) {
             free(raw);
             free(out);
-            return fail(err, errlen, "--aux %s: sample %zu is %u, above maxval %ld", path, i,
-                        (unsigned)c, mv);
+            return fail(err, errlen, "--aux %s: sample %zu is %u, above maxval %ld", path, i, (unsigned)c,
+                        mv);
         }
         if ((uint32_t)mv != top)
             c = (c * top + (uint32_t)mv / 2u) / (uint32_t)mv; /* round half up */

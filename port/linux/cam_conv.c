@@ -62,9 +62,9 @@ bloom_format_t cam_fb_format(const cam_fb_layout_t *l, char *why, size_t whylen)
         else if (l->red_len == 5 && l->green_len == 5 && l->blue_len == 5)
             snprintf(why, whylen, "16 bpp RGB555");
         else
-            snprintf(why, whylen, "16 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off,
-                     (unsigned)l->red_len, (unsigned)l->green_off, (unsigned)l->green_len,
-                     (unsigned)l->blue_off, (unsigned)l->blue_len);
+            snprintf(why, whylen, "16 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off, (unsigned)l->red_len,
+                     (unsigned)l->green_off, (unsigned)l->green_len, (unsigned)l->blue_off,
+                     (unsigned)l->blue_len);
         return (bloom_format_t)0;
     }
     if (l->bits_per_pixel == 32) {
@@ -74,9 +74,9 @@ bloom_format_t cam_fb_format(const cam_fb_layout_t *l, char *why, size_t whylen)
         if (l->blue_off == 16 && l->red_off == 0 && l->red_len == 8)
             snprintf(why, whylen, "32 bpp XBGR8888");
         else
-            snprintf(why, whylen, "32 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off,
-                     (unsigned)l->red_len, (unsigned)l->green_off, (unsigned)l->green_len,
-                     (unsigned)l->blue_off, (unsigned)l->blue_len);
+            snprintf(why, whylen, "32 bpp R%u:%u G%u:%u B%u:%u", (unsigned)l->red_off, (unsigned)l->red_len,
+                     (unsigned)l->green_off, (unsigned)l->green_len, (unsigned)l->blue_off,
+                     (unsigned)l->blue_len);
         return (bloom_format_t)0;
     }
     snprintf(why, whylen, "%u bpp", (unsigned)l->bits_per_pixel);

@@ -50,9 +50,12 @@ void cam_usage(void *stream)
 const char *cam_format_name(enum cam_pixfmt f)
 {
     switch (f) {
-    case CAM_FMT_YUYV: return "yuyv";
-    case CAM_FMT_RGB24: return "rgb24";
-    case CAM_FMT_GREY: return "grey";
+    case CAM_FMT_YUYV:
+        return "yuyv";
+    case CAM_FMT_RGB24:
+        return "rgb24";
+    case CAM_FMT_GREY:
+        return "grey";
     }
     return "?";
 }
@@ -60,10 +63,14 @@ const char *cam_format_name(enum cam_pixfmt f)
 const char *cam_mode_name(enum cam_mode m)
 {
     switch (m) {
-    case CAM_MODE_BLOOM: return "bloom";
-    case CAM_MODE_OFF: return "off";
-    case CAM_MODE_BLOOM_ONLY: return "bloom-only";
-    case CAM_MODE_COUNT: break;
+    case CAM_MODE_BLOOM:
+        return "bloom";
+    case CAM_MODE_OFF:
+        return "off";
+    case CAM_MODE_BLOOM_ONLY:
+        return "bloom-only";
+    case CAM_MODE_COUNT:
+        break;
     }
     return "?";
 }
@@ -131,10 +138,10 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
 }
 
 static const char *const with_value[] = {
-    "--device", "--fb", "--size", "--format", "--levels", "--threshold", "--knee",
-    "--intensity", "--mode", "--frames", "--buffers", "--timeout", "--gpio-frame",
-    "--gpio-button", "--record", "--dump-fb", "--preset", "--strength", "--passes",
-    "--attenuation", "--max-reduction", "--aux", "--tint", "--weights", "--radius", NULL};
+    "--device",    "--fb",      "--size",    "--format",   "--levels",  "--threshold",   "--knee",
+    "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
+    "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
+    "--aux",       "--tint",    "--weights", "--radius",   NULL};
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -156,11 +163,21 @@ static int parse_list01(const char *s, uint32_t *out, int max)
 /* The options given, applied over the preset's defaults at the end; a
  * preset parameter's bit is its BLOOM_PARAM_* bit. */
 enum {
-    G_STRENGTH = BLOOM_PARAM_STRENGTH, G_PASSES = BLOOM_PARAM_PASSES, G_SATURATE = BLOOM_PARAM_SATURATE,
-    G_ATTENUATION = BLOOM_PARAM_ATTENUATION, G_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION, G_AUX = BLOOM_PARAM_AUX,
-    G_TINT = BLOOM_PARAM_TINT, G_WEIGHTS = BLOOM_PARAM_WEIGHTS, G_ADDITIVE = BLOOM_PARAM_ADDITIVE,
-    G_BAKED = BLOOM_PARAM_BAKED, G_RADIUS = BLOOM_PARAM_RADIUS,
-    G_LEVELS = 1u << 16, G_THRESHOLD = 1u << 17, G_KNEE = 1u << 18, G_INTENSITY = 1u << 19
+    G_STRENGTH = BLOOM_PARAM_STRENGTH,
+    G_PASSES = BLOOM_PARAM_PASSES,
+    G_SATURATE = BLOOM_PARAM_SATURATE,
+    G_ATTENUATION = BLOOM_PARAM_ATTENUATION,
+    G_MAX_REDUCTION = BLOOM_PARAM_MAX_REDUCTION,
+    G_AUX = BLOOM_PARAM_AUX,
+    G_TINT = BLOOM_PARAM_TINT,
+    G_WEIGHTS = BLOOM_PARAM_WEIGHTS,
+    G_ADDITIVE = BLOOM_PARAM_ADDITIVE,
+    G_BAKED = BLOOM_PARAM_BAKED,
+    G_RADIUS = BLOOM_PARAM_RADIUS,
+    G_LEVELS = 1u << 16,
+    G_THRESHOLD = 1u << 17,
+    G_KNEE = 1u << 18,
+    G_INTENSITY = 1u << 19
 };
 /* The option of each preset parameter; the presets that do not read it
  * (bloom_preset_params) refuse it by name. */
@@ -168,10 +185,17 @@ static const struct {
     unsigned bit;
     const char *opt;
 } param_opt[] = {
-    {G_STRENGTH, "--strength"}, {G_PASSES, "--passes"}, {G_SATURATE, "--saturate"},
-    {G_ATTENUATION, "--attenuation"}, {G_MAX_REDUCTION, "--max-reduction"}, {G_AUX, "--aux"},
-    {G_TINT, "--tint"}, {G_WEIGHTS, "--weights"}, {G_ADDITIVE, "--additive"},
-    {G_BAKED, "--baked"}, {G_RADIUS, "--radius"},
+    {G_STRENGTH, "--strength"},
+    {G_PASSES, "--passes"},
+    {G_SATURATE, "--saturate"},
+    {G_ATTENUATION, "--attenuation"},
+    {G_MAX_REDUCTION, "--max-reduction"},
+    {G_AUX, "--aux"},
+    {G_TINT, "--tint"},
+    {G_WEIGHTS, "--weights"},
+    {G_ADDITIVE, "--additive"},
+    {G_BAKED, "--baked"},
+    {G_RADIUS, "--radius"},
 };
 
 /* "unity, attenuation": the presets this build carries. */
@@ -314,8 +338,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             char list[128];
             available(list, sizeof list);
             if (p < 0)
-                return fail(err, errlen, "--preset: unknown preset '%s' (this build has: %s)", v,
-                            list);
+                return fail(err, errlen, "--preset: unknown preset '%s' (this build has: %s)", v, list);
             if (!bloom_preset_available((bloom_preset_t)p))
                 return fail(err, errlen,
                             "--preset: '%s' is compiled out of this build (BLOOM_USE_*); this "
@@ -392,8 +415,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
                 if (bloom_preset_params((bloom_preset_t)q) & param_opt[k].bit)
                     n += (size_t)snprintf(who + n, sizeof who - n, "%s%s", n ? " or " : "",
                                           bloom_preset_name((bloom_preset_t)q));
-            return fail(err, errlen, "%s applies to the %s preset, not %s (give --preset)",
-                        param_opt[k].opt, who, pn);
+            return fail(err, errlen, "%s applies to the %s preset, not %s (give --preset)", param_opt[k].opt,
+                        who, pn);
         }
     if ((given & G_RADIUS) && (given & G_LEVELS))
         return fail(err, errlen, "--radius chooses the level count: give --radius or --levels");
@@ -407,7 +430,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     o->given_params = gv.p;
     o->given_mask = ((given & G_STRENGTH) ? CAM_P_STRENGTH : 0u) | ((given & G_PASSES) ? CAM_P_PASSES : 0u) |
                     ((given & G_ATTENUATION) ? CAM_P_ATTENUATION : 0u) |
-                    ((given & G_MAX_REDUCTION) ? CAM_P_MAX_REDUCTION : 0u) | ((given & G_TINT) ? CAM_P_TINT : 0u);
+                    ((given & G_MAX_REDUCTION) ? CAM_P_MAX_REDUCTION : 0u) |
+                    ((given & G_TINT) ? CAM_P_TINT : 0u);
     o->given_weights = nweights;
     o->params = d.p;
     given_params(o, &o->params);
@@ -439,8 +463,9 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
                         "--preset %s: %s: give its %s with --aux FILE (an 8- or 16-bit PGM of "
                         "the capture size)",
                         pn, bloom_status_str(st),
-                        o->preset == BLOOM_PRESET_ATTENUATION ? "depth plane"
-                        : (o->preset_flags & BLOOM_FLAG_BAKED) ? "baked bloom map" : "plane");
+                        o->preset == BLOOM_PRESET_ATTENUATION  ? "depth plane"
+                        : (o->preset_flags & BLOOM_FLAG_BAKED) ? "baked bloom map"
+                                                               : "plane");
         o->aux_fmt = BLOOM_AUX_NONE; /* optional: run without */
     } else if (o->aux && o->aux_fmt == BLOOM_AUX_NONE) {
         o->aux_fmt = BLOOM_AUX_U8; /* the preset reads an optional plane: this one */
@@ -456,7 +481,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     if (o->format == CAM_FMT_YUYV && (o->width & 1))
         return fail(err, errlen, "--size: YUYV needs an even width, not %d", o->width);
     if ((o->gpio_frame.set || o->gpio_button.set) && !cam_gpio_available)
-        return fail(err, errlen, "--gpio-frame/--gpio-button: built without libgpiod "
-                                 "(install libgpiod-dev and rebuild)");
+        return fail(err, errlen,
+                    "--gpio-frame/--gpio-button: built without libgpiod "
+                    "(install libgpiod-dev and rebuild)");
     return 0;
 }

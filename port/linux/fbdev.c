@@ -50,11 +50,10 @@ static int try_layout(cam_fb_t *fb, struct fb_fix_screeninfo *fix, struct fb_var
         if (cam_xioctl(fb->fd, FBIOPUT_VSCREENINFO, &v))
             continue;
         fb->changed_var = 2; /* the layout: put the old var back on close */
-        if (cam_xioctl(fb->fd, FBIOGET_VSCREENINFO, var) ||
-            cam_xioctl(fb->fd, FBIOGET_FSCREENINFO, fix))
+        if (cam_xioctl(fb->fd, FBIOGET_VSCREENINFO, var) || cam_xioctl(fb->fd, FBIOGET_FSCREENINFO, fix))
             return 0;
-        cam_fb_layout_t l = {var->bits_per_pixel, var->grayscale, var->nonstd,
-                             var->red.offset,     var->red.length, var->green.offset,
+        cam_fb_layout_t l = {var->bits_per_pixel, var->grayscale,   var->nonstd,
+                             var->red.offset,     var->red.length,  var->green.offset,
                              var->green.length,   var->blue.offset, var->blue.length};
         char why[64];
         if (cam_fb_format(&l, why, sizeof why))
@@ -100,25 +99,26 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
     fb->id[16] = '\0';
 
     if (fix.type != FB_TYPE_PACKED_PIXELS || fix.visual != FB_VISUAL_TRUECOLOR) {
-        fprintf(stderr, "%s: FBIOGET_FSCREENINFO: %s (%s) is not packed-pixel true colour "
-                        "(type %u, visual %u)\n",
+        fprintf(stderr,
+                "%s: FBIOGET_FSCREENINFO: %s (%s) is not packed-pixel true colour "
+                "(type %u, visual %u)\n",
                 CAM_PROG, path, fb->id, (unsigned)fix.type, (unsigned)fix.visual);
         return -1;
     }
-    cam_fb_layout_t l = {var.bits_per_pixel, var.grayscale, var.nonstd,
-                         var.red.offset,     var.red.length, var.green.offset,
+    cam_fb_layout_t l = {var.bits_per_pixel, var.grayscale,   var.nonstd,
+                         var.red.offset,     var.red.length,  var.green.offset,
                          var.green.length,   var.blue.offset, var.blue.length};
     char why[64];
     fb->format = cam_fb_format(&l, why, sizeof why);
     if (!fb->format && try_layout(fb, &fix, &var))
-        fb->format = cam_fb_format(&(cam_fb_layout_t){var.bits_per_pixel, var.grayscale,
-                                                      var.nonstd, var.red.offset, var.red.length,
-                                                      var.green.offset, var.green.length,
-                                                      var.blue.offset, var.blue.length},
+        fb->format = cam_fb_format(&(cam_fb_layout_t){var.bits_per_pixel, var.grayscale, var.nonstd,
+                                                      var.red.offset, var.red.length, var.green.offset,
+                                                      var.green.length, var.blue.offset, var.blue.length},
                                    why, sizeof why);
     if (!fb->format) {
-        fprintf(stderr, "%s: FBIOGET_VSCREENINFO: %s (%s) is %s; only 16 bpp RGB565 and "
-                        "32 bpp XRGB8888 are supported (and the driver would not switch)\n",
+        fprintf(stderr,
+                "%s: FBIOGET_VSCREENINFO: %s (%s) is %s; only 16 bpp RGB565 and "
+                "32 bpp XRGB8888 are supported (and the driver would not switch)\n",
                 CAM_PROG, path, fb->id, why);
         return -1;
     }
@@ -126,11 +126,11 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
     fb->xres = (int)var.xres;
     fb->yres = (int)var.yres;
     fb->line_length = (int)fix.line_length;
-    if (fb->line_length < fb->xres * fb->bpp ||
-        (size_t)fix.line_length * var.yres_virtual > fix.smem_len || var.xres_virtual < var.xres ||
-        var.yres_virtual < var.yres) {
-        fprintf(stderr, "%s: FBIOGET_FSCREENINFO: %s: inconsistent geometry "
-                        "(line_length %u, virtual %ux%u, smem_len %u)\n",
+    if (fb->line_length < fb->xres * fb->bpp || (size_t)fix.line_length * var.yres_virtual > fix.smem_len ||
+        var.xres_virtual < var.xres || var.yres_virtual < var.yres) {
+        fprintf(stderr,
+                "%s: FBIOGET_FSCREENINFO: %s: inconsistent geometry "
+                "(line_length %u, virtual %ux%u, smem_len %u)\n",
                 CAM_PROG, path, (unsigned)fix.line_length, (unsigned)var.xres_virtual,
                 (unsigned)var.yres_virtual, (unsigned)fix.smem_len);
         return -1;
@@ -145,8 +145,7 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
     fb->xoffset = var.xoffset;
     fb->yoffset = var.yoffset;
     /* Two pages side by side vertically: pan between them. */
-    if (var.yres_virtual >= 2 * var.yres && var.xoffset + var.xres <= var.xres_virtual &&
-        fix.ypanstep != 0) {
+    if (var.yres_virtual >= 2 * var.yres && var.xoffset + var.xres <= var.xres_virtual && fix.ypanstep != 0) {
         fb->pages = 2;
         fb->page = var.yoffset >= var.yres ? 0 : 1; /* draw the page not on show */
     }
@@ -154,8 +153,8 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
     for (int p = 0; p < fb->pages; p++) {
         unsigned y0 = fb->pages == 2 ? (unsigned)p * var.yres : var.yoffset;
         for (unsigned y = 0; y < var.yres; y++)
-            memset(fb->mem + (size_t)(y0 + y) * fix.line_length + (size_t)var.xoffset * fb->bpp,
-                   0, (size_t)fb->xres * (size_t)fb->bpp);
+            memset(fb->mem + (size_t)(y0 + y) * fix.line_length + (size_t)var.xoffset * fb->bpp, 0,
+                   (size_t)fb->xres * (size_t)fb->bpp);
     }
     return 0;
 }
@@ -195,8 +194,8 @@ void cam_fb_close(cam_fb_t *fb)
             fb_fail("FBIOPAN_DISPLAY (restoring)");
         struct fb_var_screeninfo now;
         if (!cam_xioctl(fb->fd, FBIOGET_VSCREENINFO, &now) &&
-            (fb->changed_var == 2 || now.xres != v.xres || now.yres != v.yres || now.bits_per_pixel != v.bits_per_pixel ||
-             now.yres_virtual != v.yres_virtual) &&
+            (fb->changed_var == 2 || now.xres != v.xres || now.yres != v.yres ||
+             now.bits_per_pixel != v.bits_per_pixel || now.yres_virtual != v.yres_virtual) &&
             cam_xioctl(fb->fd, FBIOPUT_VSCREENINFO, &v))
             fb_fail("FBIOPUT_VSCREENINFO (restoring)");
         fb->changed_var = 0;

@@ -56,8 +56,7 @@ struct cam_gpio {
     int frame_high;
 };
 
-static struct gpiod_line *find_line(struct gpiod_chip **chip, const cam_gpio_spec_t *s,
-                                    const char *opt)
+static struct gpiod_line *find_line(struct gpiod_chip **chip, const cam_gpio_spec_t *s, const char *opt)
 {
     *chip = gpiod_chip_open_lookup(s->chip);
     if (!*chip) {
@@ -100,8 +99,8 @@ int cam_gpio_open(cam_gpio_t **out, const cam_gpio_spec_t *frame, const cam_gpio
         if (!g->frame)
             return -1;
         if (gpiod_line_request_output(g->frame, CAM_PROG " frame", 0)) {
-            fprintf(stderr, "%s: --gpio-frame: gpiod_line_request_output %s:%s: %s\n", CAM_PROG,
-                    frame->chip, frame->line, strerror(errno));
+            fprintf(stderr, "%s: --gpio-frame: gpiod_line_request_output %s:%s: %s\n", CAM_PROG, frame->chip,
+                    frame->line, strerror(errno));
             g->frame = NULL;
             return -1;
         }
@@ -110,13 +109,13 @@ int cam_gpio_open(cam_gpio_t **out, const cam_gpio_spec_t *frame, const cam_gpio
         g->button = find_line(&g->button_chip, button, "--gpio-button");
         if (!g->button)
             return -1;
-        int r = gpiod_line_request_falling_edge_events_flags(
-            g->button, CAM_PROG " button", GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP);
+        int r = gpiod_line_request_falling_edge_events_flags(g->button, CAM_PROG " button",
+                                                             GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP);
         if (r && errno == EINVAL) /* kernels before 5.5 know no bias flags */
             r = gpiod_line_request_falling_edge_events(g->button, CAM_PROG " button");
         if (r) {
-            fprintf(stderr, "%s: --gpio-button: gpiod_line_request_falling_edge_events %s:%s: %s\n",
-                    CAM_PROG, button->chip, button->line, strerror(errno));
+            fprintf(stderr, "%s: --gpio-button: gpiod_line_request_falling_edge_events %s:%s: %s\n", CAM_PROG,
+                    button->chip, button->line, strerror(errno));
             g->button = NULL;
             return -1;
         }

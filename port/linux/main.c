@@ -31,8 +31,8 @@ typedef struct {
     cam_gpio_t *gpio;
     bloom_t *eng[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show (skipped) */
     void *ws[CAM_MODE_COUNT];
-    int eng_aux[CAM_MODE_COUNT];  /* the engine reads the aux plane with each row */
-    uint8_t *aux;                 /* --aux plane, capture size, read once */
+    int eng_aux[CAM_MODE_COUNT]; /* the engine reads the aux plane with each row */
+    uint8_t *aux;                /* --aux plane, capture size, read once */
     size_t aux_stride;
     uint8_t *line;    /* one converted source row (RGB888) */
     uint8_t *scratch; /* one output row the screen does not fully show */
@@ -99,14 +99,13 @@ static int make_engines(cam_t *c)
         bloom_status_t st = bloom_query(&cfg, &info);
         if (st != BLOOM_OK && m == CAM_MODE_BLOOM_ONLY && c->o.mode != CAM_MODE_BLOOM_ONLY) {
             if (!c->o.quiet)
-                fprintf(stderr, "%s: preset %s: no bloom-only view (%s); the button skips it\n",
-                        CAM_PROG, bloom_preset_name(cfg.preset), bloom_status_str(st));
+                fprintf(stderr, "%s: preset %s: no bloom-only view (%s); the button skips it\n", CAM_PROG,
+                        bloom_preset_name(cfg.preset), bloom_status_str(st));
             continue;
         }
         if (st != BLOOM_OK) {
-            fprintf(stderr, "%s: bloom_query (preset %s%s): %s\n", CAM_PROG,
-                    bloom_preset_name(cfg.preset), m == CAM_MODE_BLOOM_ONLY ? ", bloom-only" : "",
-                    bloom_status_str(st));
+            fprintf(stderr, "%s: bloom_query (preset %s%s): %s\n", CAM_PROG, bloom_preset_name(cfg.preset),
+                    m == CAM_MODE_BLOOM_ONLY ? ", bloom-only" : "", bloom_status_str(st));
             return -1;
         }
         c->eng_aux[m] = cfg.aux_fmt != BLOOM_AUX_NONE;
@@ -196,15 +195,15 @@ static int process(cam_t *c, enum cam_mode mode, const uint8_t *data, uint8_t *p
     return pull_rows(c, b, page);
 }
 
-static void stats_line(const char *what, long frames, long dropped, double t0, double t1,
-                       double proc_sum, double proc_min, double proc_max)
+static void stats_line(const char *what, long frames, long dropped, double t0, double t1, double proc_sum,
+                       double proc_min, double proc_max)
 {
     double el = t1 - t0;
-    fprintf(stderr, "%s: %s: %ld frames, %.2f fps, %ld dropped, processing %.2f ms/frame "
-                    "(min %.2f, max %.2f)\n",
+    fprintf(stderr,
+            "%s: %s: %ld frames, %.2f fps, %ld dropped, processing %.2f ms/frame "
+            "(min %.2f, max %.2f)\n",
             CAM_PROG, what, frames, el > 0 ? (double)frames / el : 0.0, dropped,
-            frames ? proc_sum * 1e3 / (double)frames : 0.0, frames ? proc_min * 1e3 : 0.0,
-            proc_max * 1e3);
+            frames ? proc_sum * 1e3 / (double)frames : 0.0, frames ? proc_min * 1e3 : 0.0, proc_max * 1e3);
 }
 
 static int run(cam_t *c)
@@ -286,8 +285,7 @@ static int run(cam_t *c)
         }
     }
     if (stop_signal && !c->o.quiet)
-        fprintf(stderr, "%s: stopping on %s\n", CAM_PROG,
-                stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
+        fprintf(stderr, "%s: stopping on %s\n", CAM_PROG, stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
     if (c->o.stats || !c->o.quiet)
         stats_line("total", frames, dropped, t_start, frames ? now_s() : t_start, psum, pmin, pmax);
     return fault ? -1 : 0;
@@ -298,8 +296,9 @@ static int dump_fb(cam_t *c)
     int fd = open(c->o.dump_fb, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     int bad = fd < 0;
     for (int y = 0; !bad && c->last_page && y < c->place.h; y++)
-        bad = write_all(fd, c->last_page + (size_t)(c->place.dst_y + y) * c->fb.line_length +
-                                (size_t)c->place.dst_x * c->fb.bpp,
+        bad = write_all(fd,
+                        c->last_page + (size_t)(c->place.dst_y + y) * c->fb.line_length +
+                            (size_t)c->place.dst_x * c->fb.bpp,
                         (size_t)c->place.w * (size_t)c->fb.bpp);
     if (fd >= 0 && close(fd))
         bad = 1;
@@ -361,11 +360,11 @@ int main(int argc, char **argv)
                 "%s: %s (%s, %s): %dx%d %s, bytesperline %u, sizeimage %u, %d buffers\n"
                 "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown\n",
                 CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height,
-                cam_format_name(c.o.format), (unsigned)c.cap.bytesperline,
-                (unsigned)c.cap.sizeimage, c.cap.nbufs, CAM_PROG, c.o.fb, c.fb.id, c.fb.xres,
-                c.fb.yres, c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888",
-                c.fb.line_length, c.fb.pages == 2 ? "double-buffered" : "single-buffered",
-                c.place.dst_x, c.place.dst_y, c.place.w, c.place.h);
+                cam_format_name(c.o.format), (unsigned)c.cap.bytesperline, (unsigned)c.cap.sizeimage,
+                c.cap.nbufs, CAM_PROG, c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
+                c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
+                c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
+                c.place.w, c.place.h);
     status = run(&c) ? 1 : 0;
     if (c.o.dump_fb && dump_fb(&c))
         status = 1;

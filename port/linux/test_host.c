@@ -19,9 +19,7 @@
 #include "harness.h"
 #include "sim.h"
 
-
-static int parse(cam_opts_t *o, char *err, const char *a0, const char *a1, const char *a2,
-                 const char *a3)
+static int parse(cam_opts_t *o, char *err, const char *a0, const char *a1, const char *a2, const char *a3)
 {
     char *argv[6] = {(char *)"bloom_cam", (char *)a0, (char *)a1, (char *)a2, (char *)a3, NULL};
     int argc = 1;
@@ -37,29 +35,46 @@ static void test_opts(void)
     char err[256];
     CHECKF(parse(&o, err, NULL, NULL, NULL, NULL) == 0, "no options: %s", err);
     CHECKF(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
-              o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
-              o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) &&
-              o.intensity == BLOOM_Q16(1.0) && o.frames == 0 && o.buffers == 4 &&
-              o.mode == CAM_MODE_BLOOM && !o.stats && !o.record,
-          "defaults");
+               o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
+               o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) && o.intensity == BLOOM_Q16(1.0) &&
+               o.frames == 0 && o.buffers == 4 && o.mode == CAM_MODE_BLOOM && !o.stats && !o.record,
+           "defaults");
 
-    char *argv[] = {"bloom_cam", "--device", "/dev/video3", "--fb=/dev/fb1", "--size",
-                    "320x240", "--format=rgb24", "--levels", "3", "--threshold=0.8",
-                    "--knee", "0.25", "--intensity", "1.5", "--frames", "10", "--stats",
-                    "--record", "out.raw", "--mode=bloom-only", "--buffers", "3",
-                    "--timeout=500", "-q", NULL};
+    char *argv[] = {"bloom_cam",
+                    "--device",
+                    "/dev/video3",
+                    "--fb=/dev/fb1",
+                    "--size",
+                    "320x240",
+                    "--format=rgb24",
+                    "--levels",
+                    "3",
+                    "--threshold=0.8",
+                    "--knee",
+                    "0.25",
+                    "--intensity",
+                    "1.5",
+                    "--frames",
+                    "10",
+                    "--stats",
+                    "--record",
+                    "out.raw",
+                    "--mode=bloom-only",
+                    "--buffers",
+                    "3",
+                    "--timeout=500",
+                    "-q",
+                    NULL};
     int argc = (int)(sizeof argv / sizeof argv[0]) - 1;
     int r = cam_parse_opts(&o, argc, argv, err, sizeof err);
     CHECKF(r == 0, "full command line: %s", err);
     CHECKF(!strcmp(o.device, "/dev/video3") && !strcmp(o.fb, "/dev/fb1") && o.width == 320 &&
-              o.height == 240 && o.format == CAM_FMT_RGB24 && o.levels == 3 &&
-              o.threshold == BLOOM_Q16(0.8) && o.knee == BLOOM_Q16(0.25) &&
-              o.intensity == BLOOM_Q16(1.5) && o.frames == 10 && o.stats &&
-              !strcmp(o.record, "out.raw") && o.mode == CAM_MODE_BLOOM_ONLY && o.buffers == 3 &&
-              o.timeout_ms == 500 && o.quiet,
-          "full command line values");
-    CHECKF(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY,
-          "grey");
+               o.height == 240 && o.format == CAM_FMT_RGB24 && o.levels == 3 &&
+               o.threshold == BLOOM_Q16(0.8) && o.knee == BLOOM_Q16(0.25) && o.intensity == BLOOM_Q16(1.5) &&
+               o.frames == 10 && o.stats && !strcmp(o.record, "out.raw") && o.mode == CAM_MODE_BLOOM_ONLY &&
+               o.buffers == 3 && o.timeout_ms == 500 && o.quiet,
+           "full command line values");
+    CHECKF(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY, "grey");
     CHECKF(parse(&o, err, "--help", NULL, NULL, NULL) == 1, "help");
 
     static const struct {
@@ -87,10 +102,10 @@ static void test_opts(void)
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         r = parse(&o, err, bad[i].a0, bad[i].a1, bad[i].a2, bad[i].a3);
         CHECKF(r == -1 && strstr(err, bad[i].msg), "%s %s: got %d '%s', want '%s'", bad[i].a0,
-              bad[i].a1 ? bad[i].a1 : "", r, err, bad[i].msg);
+               bad[i].a1 ? bad[i].a1 : "", r, err, bad[i].msg);
     }
     CHECKF(parse(&o, err, "--size", "641x480", "--format", "rgb24") == 0 && o.width == 641,
-          "odd width for rgb24");
+           "odd width for rgb24");
 }
 
 static void test_yuv(void)
@@ -110,8 +125,7 @@ static void test_yuv(void)
                     const double yy = (y - 16) * 255.0 / 219.0, u = (cb - 128) * 255.0 / 224.0,
                                  v = (cr - 128) * 255.0 / 224.0;
                     const double rf[3] = {yy + 1.402 * v,
-                                          yy - 0.114 * 1.772 / 0.587 * u -
-                                              0.299 * 1.402 / 0.587 * v,
+                                          yy - 0.114 * 1.772 / 0.587 * u - 0.299 * 1.402 / 0.587 * v,
                                           yy + 1.772 * u};
                     for (int c = 0; c < 3; c++) {
                         double e = rf[c] < 0 ? 0 : rf[c] > 255 ? 255 : rf[c];
@@ -168,8 +182,7 @@ static void test_fb_format(void)
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
         char why[64] = "";
         bloom_format_t f = cam_fb_format(&t[i].l, why, sizeof why);
-        CHECKF(f == t[i].want && (f || !strcmp(why, t[i].why)), "layout %zu: format %d '%s'", i,
-              (int)f, why);
+        CHECKF(f == t[i].want && (f || !strcmp(why, t[i].why)), "layout %zu: format %d '%s'", i, (int)f, why);
     }
 }
 
@@ -179,21 +192,16 @@ static void test_place(void)
         int fw, fh, sw, sh;
         cam_place_t want;
     } t[] = {
-        {640, 480, 640, 480, {0, 0, 0, 0, 640, 480}},
-        {640, 480, 800, 600, {80, 60, 0, 0, 640, 480}},
-        {320, 240, 1024, 768, {352, 264, 0, 0, 320, 240}},
-        {641, 481, 800, 600, {79, 59, 0, 0, 641, 481}},
-        {1280, 720, 640, 480, {0, 0, 320, 120, 640, 480}},
-        {1280, 240, 640, 480, {0, 120, 320, 0, 640, 240}},
-        {320, 720, 640, 480, {160, 0, 0, 120, 320, 480}},
-        {641, 480, 640, 480, {0, 0, 0, 0, 640, 480}},
+        {640, 480, 640, 480, {0, 0, 0, 0, 640, 480}},      {640, 480, 800, 600, {80, 60, 0, 0, 640, 480}},
+        {320, 240, 1024, 768, {352, 264, 0, 0, 320, 240}}, {641, 481, 800, 600, {79, 59, 0, 0, 641, 481}},
+        {1280, 720, 640, 480, {0, 0, 320, 120, 640, 480}}, {1280, 240, 640, 480, {0, 120, 320, 0, 640, 240}},
+        {320, 720, 640, 480, {160, 0, 0, 120, 320, 480}},  {641, 480, 640, 480, {0, 0, 0, 0, 640, 480}},
     };
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
         cam_place_t p;
         cam_place(t[i].fw, t[i].fh, t[i].sw, t[i].sh, &p);
-        CHECKF(!memcmp(&p, &t[i].want, sizeof p),
-              "%dx%d on %dx%d: dst %d,%d src %d,%d size %dx%d", t[i].fw, t[i].fh, t[i].sw,
-              t[i].sh, p.dst_x, p.dst_y, p.src_x, p.src_y, p.w, p.h);
+        CHECKF(!memcmp(&p, &t[i].want, sizeof p), "%dx%d on %dx%d: dst %d,%d src %d,%d size %dx%d", t[i].fw,
+               t[i].fh, t[i].sw, t[i].sh, p.dst_x, p.dst_y, p.src_x, p.src_y, p.w, p.h);
     }
 }
 
@@ -210,7 +218,7 @@ static void test_line_feed(void)
         for (int x = 0; x < 2 * W; x++) {
             seed = seed * 1103515245u + 12345u;
             int v = (int)(seed >> 16) & 255;
-            if ((x & 1) == 0)                           /* luma: a few bright spots */
+            if ((x & 1) == 0) /* luma: a few bright spots */
                 v = ((x / 2 - 30) * (x / 2 - 30) + (y - 20) * (y - 20) < 60) ? 235 : v / 3;
             yuyv[y][x] = (uint8_t)v;
         }
@@ -289,8 +297,7 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 {
     (void)fd;
     fake_ioctls++;
-    if (req != (unsigned long)VIDIOC_DQBUF || fake_at >= fake_n ||
-        fake_script[fake_at].kind != STEP_DQBUF) {
+    if (req != (unsigned long)VIDIOC_DQBUF || fake_at >= fake_n || fake_script[fake_at].kind != STEP_DQBUF) {
         fake_unexpected++;
         errno = EIO;
         return -1;
@@ -369,11 +376,10 @@ static void test_dequeue_faults(void)
     };
     int r = run_dequeue(eintr, 3, &f, msg, sizeof msg);
     CHECKF(r == 0 && f.index == 2 && f.sequence == 7 && f.bytesused == FULL &&
-              (size_t)f.data == 2 * (size_t)FULL && !msg[0],
-          "EINTR retried: r %d index %d sequence %u msg '%s'", r, f.index, (unsigned)f.sequence,
-          msg);
+               (size_t)f.data == 2 * (size_t)FULL && !msg[0],
+           "EINTR retried: r %d index %d sequence %u msg '%s'", r, f.index, (unsigned)f.sequence, msg);
     CHECKF(fake_polls == 1 && fake_ioctls == 2 && !fake_unexpected && fake_at == 3,
-          "EINTR: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
+           "EINTR: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
 
     /* EAGAIN from DQBUF after a plain POLLIN: poll again, then the frame. */
     static const fake_step_t eagain[] = {
@@ -383,10 +389,10 @@ static void test_dequeue_faults(void)
         {STEP_DQBUF, 0, 0, 0, 1, FULL, 0, 8},
     };
     r = run_dequeue(eagain, 4, &f, msg, sizeof msg);
-    CHECKF(r == 0 && f.index == 1 && f.sequence == 8 && !msg[0],
-          "EAGAIN waits again: r %d index %d msg '%s'", r, f.index, msg);
+    CHECKF(r == 0 && f.index == 1 && f.sequence == 8 && !msg[0], "EAGAIN waits again: r %d index %d msg '%s'",
+           r, f.index, msg);
     CHECKF(fake_polls == 2 && fake_ioctls == 2 && !fake_unexpected && fake_at == 4,
-          "EAGAIN: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
+           "EAGAIN: %d polls, %d ioctls, %d unexpected", fake_polls, fake_ioctls, fake_unexpected);
 
     /* A signal during poll: 1, nothing dequeued, no message. */
     static const fake_step_t sig[] = {{STEP_POLL, -1, EINTR, 0, 0, 0, 0, 0}};
@@ -402,8 +408,7 @@ static void test_dequeue_faults(void)
          "bloom_cam: VIDIOC_DQBUF: short frame: 127 bytes, 128 expected (sequence 3)\n"},
         {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 0, 0, 0, 4}},
          "bloom_cam: VIDIOC_DQBUF: short frame: 0 bytes"},
-        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
-          {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 5}},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 5}},
          "bloom_cam: VIDIOC_DQBUF: buffer 1 (sequence 5) flagged V4L2_BUF_FLAG_ERROR\n"},
         {{{STEP_POLL, 1, 0, POLLIN | POLLERR, 0, 0, 0, 0}, {STEP_DQBUF, -1, ENODEV, 0, 0, 0, 0, 0}},
          "bloom_cam: VIDIOC_DQBUF: No such device\n"},
@@ -422,13 +427,12 @@ static void test_dequeue_faults(void)
         int lines = 0;
         for (const char *p = msg; *p; p++)
             lines += *p == '\n';
-        CHECKF(r == -1 && !strncmp(msg, bad[i].want, strlen(bad[i].want)) && lines == 1 &&
-                  fake_at == steps && !fake_unexpected,
-              "fault %zu: r %d, %d of %d steps, message '%s', want '%s'", i, r, fake_at, steps,
-              msg, bad[i].want);
+        CHECKF(r == -1 && !strncmp(msg, bad[i].want, strlen(bad[i].want)) && lines == 1 && fake_at == steps &&
+                   !fake_unexpected,
+               "fault %zu: r %d, %d of %d steps, message '%s', want '%s'", i, r, fake_at, steps, msg,
+               bad[i].want);
     }
-    CHECKF(strstr(bad[0].want, "VIDIOC_DQBUF") && strstr(bad[0].want, "short"),
-          "short-frame message");
+    CHECKF(strstr(bad[0].want, "VIDIOC_DQBUF") && strstr(bad[0].want, "short"), "short-frame message");
 }
 
 /* --preset and its options: the preset's defaults, then the options given;
@@ -441,19 +445,19 @@ static void test_presets(void)
     cam_opts_t o;
     char err[256];
     CHECKF(parse(&o, err, "--preset", "unity", NULL, NULL) == 0 && o.preset == BLOOM_PRESET_UNITY &&
-              o.levels == 5 && o.threshold == BLOOM_Q16(1.0) && o.aux_fmt == BLOOM_AUX_NONE,
-          "--preset unity: %s", err);
+               o.levels == 5 && o.threshold == BLOOM_Q16(1.0) && o.aux_fmt == BLOOM_AUX_NONE,
+           "--preset unity: %s", err);
     CHECKF(parse(&o, err, "--preset", "bogus", NULL, NULL) == -1 &&
-              strstr(err, "--preset: unknown preset 'bogus' (this build has: unity"),
-          "unknown preset: '%s'", err);
+               strstr(err, "--preset: unknown preset 'bogus' (this build has: unity"),
+           "unknown preset: '%s'", err);
     CHECKF(parse(&o, err, "--preset=", NULL, NULL, NULL) == -1 && strstr(err, "unknown preset ''"),
-          "empty preset: '%s'", err);
+           "empty preset: '%s'", err);
     for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
         const char *name = bloom_preset_name((bloom_preset_t)p);
         int r = parse(&o, err, "--preset", name, NULL, NULL);
         if (!bloom_preset_available((bloom_preset_t)p)) {
             CHECKF(r == -1 && strstr(err, "compiled out") && strstr(err, "this build has: unity"),
-                  "compiled-out %s: '%s'", name, err);
+                   "compiled-out %s: '%s'", name, err);
             continue;
         }
         /* available: runs as it is, or says which plane it lacks */
@@ -461,46 +465,47 @@ static void test_presets(void)
         bloom_config_default(&d, 640, 480);
         bloom_config_preset(&d, (bloom_preset_t)p);
         CHECKF(r == 0 || (strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "--aux FILE")),
-              "--preset %s: %d '%s'", name, r, err);
+               "--preset %s: %d '%s'", name, r, err);
         if (r == 0) {
             CHECKF(o.preset == (bloom_preset_t)p && o.levels == d.levels && o.threshold == d.threshold &&
-                      o.intensity == d.intensity && !memcmp(&o.params, &d.p, sizeof d.p),
-                  "--preset %s takes the preset's defaults", name);
+                       o.intensity == d.intensity && !memcmp(&o.params, &d.p, sizeof d.p),
+                   "--preset %s takes the preset's defaults", name);
             /* at run time, the defaults of the capture's own size */
             bloom_config_t c, e;
             bloom_config_default(&e, 40, 6);
             bloom_config_preset(&e, (bloom_preset_t)p);
             cam_opts_config(&o, 40, 6, &c);
             CHECKF(c.preset == e.preset && !memcmp(&c.p, &e.p, sizeof e.p) && c.flags == e.flags,
-                  "--preset %s: the configuration for a 40x6 capture", name);
+                   "--preset %s: the configuration for a 40x6 capture", name);
         }
     }
     CHECKF(parse(&o, err, "--passes", "3", NULL, NULL) == -1 &&
-              strstr(err, "--passes applies to the xna preset, not unity"),
-          "option of another preset: '%s'", err);
+               strstr(err, "--passes applies to the xna preset, not unity"),
+           "option of another preset: '%s'", err);
     CHECKF(parse(&o, err, "--aux", "d.pgm", NULL, NULL) == -1 && strstr(err, "--aux applies to"),
-          "--aux with unity: '%s'", err);
+           "--aux with unity: '%s'", err);
     CHECKF(parse(&o, err, "--tint", "1,2,3", "--preset", "cod") == -1, "bad tint");
 #if BLOOM_USE_ARM
     CHECKF(parse(&o, err, "--preset", "arm", "--baked", NULL) == -1 &&
-              strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "baked bloom map with --aux FILE"),
-          "arm --baked without --aux: '%s'", err);
+               strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "baked bloom map with --aux FILE"),
+           "arm --baked without --aux: '%s'", err);
     CHECKF(parse(&o, err, "--preset", "arm", "--aux", "mask.pgm") == 0 && o.aux_fmt == BLOOM_AUX_U8,
-          "arm with a mask: '%s'", err);
+           "arm with a mask: '%s'", err);
     CHECKF(parse(&o, err, "--preset", "arm", NULL, NULL) == 0 && o.aux_fmt == BLOOM_AUX_NONE,
-          "arm without a mask: '%s'", err);
+           "arm without a mask: '%s'", err);
 #endif
 #if BLOOM_USE_ATTENUATION
     CHECKF(parse(&o, err, "--preset", "attenuation", NULL, NULL) == -1 &&
-              strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "depth plane with --aux FILE"),
-          "attenuation without --aux: '%s'", err);
+               strstr(err, bloom_status_str(BLOOM_E_AUX)) && strstr(err, "depth plane with --aux FILE"),
+           "attenuation without --aux: '%s'", err);
     {
-        char *argv[] = {"bloom_cam", "--attenuation", "0.5", "--preset", "attenuation", "--aux",
-                        "depth.pgm", "--threshold", "0.7", "--max-reduction=0.125", NULL};
+        char *argv[] = {"bloom_cam", "--attenuation", "0.5",         "--preset", "attenuation",
+                        "--aux",     "depth.pgm",     "--threshold", "0.7",      "--max-reduction=0.125",
+                        NULL};
         CHECKF(cam_parse_opts(&o, 10, argv, err, sizeof err) == 0 && o.preset == BLOOM_PRESET_ATTENUATION &&
-                  o.params.attenuation == BLOOM_Q16(0.5) && o.params.max_reduction == BLOOM_Q16(0.125) &&
-                  o.threshold == BLOOM_Q16(0.7) && !strcmp(o.aux, "depth.pgm") && o.aux_fmt == BLOOM_AUX_U8,
-              "attenuation options in any order: '%s'", err);
+                   o.params.attenuation == BLOOM_Q16(0.5) && o.params.max_reduction == BLOOM_Q16(0.125) &&
+                   o.threshold == BLOOM_Q16(0.7) && !strcmp(o.aux, "depth.pgm") && o.aux_fmt == BLOOM_AUX_U8,
+               "attenuation options in any order: '%s'", err);
         bloom_config_t c;
         cam_opts_config(&o, 64, 48, &c);
         CHECK(c.preset == BLOOM_PRESET_ATTENUATION && c.p.attenuation == BLOOM_Q16(0.5) &&
@@ -523,7 +528,8 @@ static void test_presets(void)
         {"a8.pgm", "P5\n2 1\n255\n\x00\xff", 13, 2, 1, NULL, BLOOM_AUX_U8, 0, 255},
         {"a4.pgm", "P5 # comment\n2 1 15\n\x0f\x07", 22, 2, 1, NULL, BLOOM_AUX_U8, 255, 119},
         {"a16.pgm", "P5\n1 1\n65535\n\x12\x34", 15, 1, 1, NULL, BLOOM_AUX_U16, 0x34, 0x12},
-        {"size.pgm", "P5\n2 1\n255\n\x00\xff", 13, 4, 3, "the plane is 2x1 but the capture is 4x3", BLOOM_AUX_U8, 0, 0},
+        {"size.pgm", "P5\n2 1\n255\n\x00\xff", 13, 4, 3, "the plane is 2x1 but the capture is 4x3",
+         BLOOM_AUX_U8, 0, 0},
         {"ppm.ppm", "P6\n1 1\n255\nabc", 14, 1, 1, "not a binary PGM", BLOOM_AUX_U8, 0, 0},
         {"short.pgm", "P5\n2 2\n255\nab", 13, 2, 2, "truncated", BLOOM_AUX_U8, 0, 0},
         {"over.pgm", "P5\n1 1\n9\n\x0a", 10, 1, 1, "above maxval", BLOOM_AUX_U8, 0, 0},
@@ -540,11 +546,10 @@ static void test_presets(void)
         int r = cam_aux_load(path, files[i].w, files[i].h, &fmt, &data, err, sizeof err);
         if (files[i].err)
             CHECKF(r == -1 && !data && strstr(err, path) && strstr(err, files[i].err), "%s: %d '%s'",
-                  files[i].name, r, err);
+                   files[i].name, r, err);
         else
-            CHECKF(r == 0 && data && fmt == files[i].fmt && data[0] == files[i].s0 &&
-                      data[1] == files[i].s1,
-                  "%s: %d '%s' %d %d", files[i].name, r, err, data ? data[0] : -1, data ? data[1] : -1);
+            CHECKF(r == 0 && data && fmt == files[i].fmt && data[0] == files[i].s0 && data[1] == files[i].s1,
+                   "%s: %d '%s' %d %d", files[i].name, r, err, data ? data[0] : -1, data ? data[1] : -1);
         free(data);
         remove(path);
     }
@@ -564,7 +569,8 @@ int main(void)
     test_place();
     test_line_feed();
     test_dequeue_faults();
-    printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, line feed,\n"
+    printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, "
+           "line feed,\n"
            "  capture faults (EINTR, EAGAIN, short bytesused, V4L2_BUF_FLAG_ERROR, ENODEV, timeout)\n");
     return harness_finish();
 }

@@ -58,9 +58,12 @@ static struct v4l2_buffer mmap_buffer(int index)
 static uint32_t fourcc_of(enum cam_pixfmt f)
 {
     switch (f) {
-    case CAM_FMT_YUYV: return V4L2_PIX_FMT_YUYV;
-    case CAM_FMT_RGB24: return V4L2_PIX_FMT_RGB24;
-    case CAM_FMT_GREY: return V4L2_PIX_FMT_GREY;
+    case CAM_FMT_YUYV:
+        return V4L2_PIX_FMT_YUYV;
+    case CAM_FMT_RGB24:
+        return V4L2_PIX_FMT_RGB24;
+    case CAM_FMT_GREY:
+        return V4L2_PIX_FMT_GREY;
     }
     return 0;
 }
@@ -89,13 +92,12 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     snprintf(c->card, sizeof c->card, "%s", (const char *)cap.card);
     snprintf(c->driver, sizeof c->driver, "%s", (const char *)cap.driver);
     if (!(caps & V4L2_CAP_VIDEO_CAPTURE)) {
-        fprintf(stderr, "%s: VIDIOC_QUERYCAP: %s is not a single-planar video capture device\n",
-                CAM_PROG, dev);
+        fprintf(stderr, "%s: VIDIOC_QUERYCAP: %s is not a single-planar video capture device\n", CAM_PROG,
+                dev);
         return -1;
     }
     if (!(caps & V4L2_CAP_STREAMING)) {
-        fprintf(stderr, "%s: VIDIOC_QUERYCAP: %s does not support streaming I/O\n", CAM_PROG,
-                dev);
+        fprintf(stderr, "%s: VIDIOC_QUERYCAP: %s does not support streaming I/O\n", CAM_PROG, dev);
         return -1;
     }
 
@@ -110,13 +112,12 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
         return sys_fail("VIDIOC_S_FMT");
     /* What the driver chose is what counts. */
     if (f.fmt.pix.pixelformat != fourcc_of(fmt)) {
-        fprintf(stderr, "%s: VIDIOC_S_FMT: %s does not deliver %s\n", CAM_PROG, dev,
-                cam_format_name(fmt));
+        fprintf(stderr, "%s: VIDIOC_S_FMT: %s does not deliver %s\n", CAM_PROG, dev, cam_format_name(fmt));
         return -1;
     }
     if (f.fmt.pix.field != V4L2_FIELD_NONE && f.fmt.pix.field != V4L2_FIELD_ANY) {
-        fprintf(stderr, "%s: VIDIOC_S_FMT: interlaced field order %u is not supported\n",
-                CAM_PROG, (unsigned)f.fmt.pix.field);
+        fprintf(stderr, "%s: VIDIOC_S_FMT: interlaced field order %u is not supported\n", CAM_PROG,
+                (unsigned)f.fmt.pix.field);
         return -1;
     }
     c->width = (int)f.fmt.pix.width;
@@ -130,9 +131,8 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     if (c->width < 2 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM ||
         (c->pixelformat == V4L2_PIX_FMT_YUYV && (c->width & 1)) ||
         c->sizeimage < c->bytesperline * (uint32_t)c->height) {
-        fprintf(stderr, "%s: VIDIOC_S_FMT: unusable format %dx%d, bytesperline %u, sizeimage %u\n",
-                CAM_PROG, c->width, c->height, (unsigned)c->bytesperline,
-                (unsigned)c->sizeimage);
+        fprintf(stderr, "%s: VIDIOC_S_FMT: unusable format %dx%d, bytesperline %u, sizeimage %u\n", CAM_PROG,
+                c->width, c->height, (unsigned)c->bytesperline, (unsigned)c->sizeimage);
         return -1;
     }
 
@@ -144,8 +144,8 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     if (xioctl(c, VIDIOC_REQBUFS, &rb))
         return sys_fail("VIDIOC_REQBUFS");
     if (rb.count < 2 || rb.count > CAM_MAX_BUFFERS) {
-        fprintf(stderr, "%s: VIDIOC_REQBUFS: the driver gave %u buffers (2..%d needed)\n",
-                CAM_PROG, (unsigned)rb.count, CAM_MAX_BUFFERS);
+        fprintf(stderr, "%s: VIDIOC_REQBUFS: the driver gave %u buffers (2..%d needed)\n", CAM_PROG,
+                (unsigned)rb.count, CAM_MAX_BUFFERS);
         c->nbufs = (int)(rb.count > CAM_MAX_BUFFERS ? 0 : rb.count);
         return -1;
     }
@@ -155,8 +155,8 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
         if (xioctl(c, VIDIOC_QUERYBUF, &b))
             return sys_fail("VIDIOC_QUERYBUF");
         if (b.length < c->sizeimage) {
-            fprintf(stderr, "%s: VIDIOC_QUERYBUF: buffer %d holds %u bytes, a frame %u\n",
-                    CAM_PROG, i, (unsigned)b.length, (unsigned)c->sizeimage);
+            fprintf(stderr, "%s: VIDIOC_QUERYBUF: buffer %d holds %u bytes, a frame %u\n", CAM_PROG, i,
+                    (unsigned)b.length, (unsigned)c->sizeimage);
             return -1;
         }
         void *p = mmap(NULL, b.length, PROT_READ | PROT_WRITE, MAP_SHARED, c->fd, b.m.offset);
@@ -188,8 +188,7 @@ int cam_v4l2_start(cam_v4l2_t *c)
     return 0;
 }
 
-int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready,
-                     cam_frame_t *f)
+int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready, cam_frame_t *f)
 {
     for (;;) {
         struct pollfd p[2] = {{c->fd, POLLIN, 0}, {extra_fd, POLLIN, 0}};
@@ -200,8 +199,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             return sys_fail("poll");
         }
         if (r == 0) {
-            fprintf(stderr, "%s: poll: no frame from the device within %d ms\n", CAM_PROG,
-                    timeout_ms);
+            fprintf(stderr, "%s: poll: no frame from the device within %d ms\n", CAM_PROG, timeout_ms);
             return -1;
         }
         if (extra_fd >= 0 && (p[1].revents & POLLIN))
@@ -215,15 +213,14 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             if (errno == EAGAIN && !(p[0].revents & (POLLERR | POLLHUP | POLLNVAL)))
                 continue; /* nothing after all: wait again */
             if (errno == EAGAIN) {
-                fprintf(stderr, "%s: poll: the device reports an error (revents 0x%x)\n",
-                        CAM_PROG, (unsigned)p[0].revents);
+                fprintf(stderr, "%s: poll: the device reports an error (revents 0x%x)\n", CAM_PROG,
+                        (unsigned)p[0].revents);
                 return -1;
             }
             return sys_fail("VIDIOC_DQBUF");
         }
         if (b.index >= (uint32_t)c->nbufs) {
-            fprintf(stderr, "%s: VIDIOC_DQBUF: buffer index %u out of range\n", CAM_PROG,
-                    (unsigned)b.index);
+            fprintf(stderr, "%s: VIDIOC_DQBUF: buffer index %u out of range\n", CAM_PROG, (unsigned)b.index);
             return -1;
         }
         f->index = (int)b.index;
@@ -236,9 +233,9 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             return -1;
         }
         if (b.bytesused < c->bytesperline * (uint32_t)c->height) {
-            fprintf(stderr, "%s: VIDIOC_DQBUF: short frame: %u bytes, %u expected (sequence %u)\n",
-                    CAM_PROG, (unsigned)b.bytesused,
-                    (unsigned)(c->bytesperline * (uint32_t)c->height), (unsigned)b.sequence);
+            fprintf(stderr, "%s: VIDIOC_DQBUF: short frame: %u bytes, %u expected (sequence %u)\n", CAM_PROG,
+                    (unsigned)b.bytesused, (unsigned)(c->bytesperline * (uint32_t)c->height),
+                    (unsigned)b.sequence);
             return -1;
         }
         return 0;

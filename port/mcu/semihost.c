@@ -29,8 +29,8 @@ _Noreturn void semi_exit(int status)
     const uint32_t block[2] = {ADP_STOPPED_APPLICATION_EXIT, (uint32_t)status};
     semi_call(SYS_EXIT_EXTENDED, block);
     /* only reached if the host lacks SYS_EXIT_EXTENDED: pass/fail at least */
-    semi_call(SYS_EXIT, (const void *)(uintptr_t)(status ? ADP_STOPPED_RUNTIME_ERROR
-                                                         : ADP_STOPPED_APPLICATION_EXIT));
+    semi_call(SYS_EXIT,
+              (const void *)(uintptr_t)(status ? ADP_STOPPED_RUNTIME_ERROR : ADP_STOPPED_APPLICATION_EXIT));
     for (;;)
         __asm__ volatile("wfi");
 }

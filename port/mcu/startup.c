@@ -20,8 +20,8 @@ typedef struct {
 /* No interrupts are enabled, so the system exceptions are all there is. */
 __attribute__((section(".vectors"), used)) const fw_vectors_t fw_vectors = {
     __stack_top,
-    {fw_reset, fw_fault, fw_fault, fw_fault, fw_fault, fw_fault, 0, 0, 0, 0, fw_fault, fw_fault, 0,
-     fw_fault, fw_fault},
+    {fw_reset, fw_fault, fw_fault, fw_fault, fw_fault, fw_fault, 0, 0, 0, 0, fw_fault, fw_fault, 0, fw_fault,
+     fw_fault},
 };
 
 void fw_reset(void)

@@ -22,9 +22,6 @@
 #include "scene.h"
 #include "variants.h"
 
-
-
-
 row_t rows[MAX_ROWS];
 int nrows;
 
@@ -133,8 +130,8 @@ static void ring_alloc(ring_t *r, size_t bytes)
 
 /* Slots of slot_bytes (rounded up to pages) for input and output frames;
  * the input slots get frame (frame_bytes); refilled when fmt/size change. */
-static void ring_prepare(ring_t *r, const uint8_t *frame, size_t frame_bytes, size_t slot_bytes,
-                         int fmt, size_t wh)
+static void ring_prepare(ring_t *r, const uint8_t *frame, size_t frame_bytes, size_t slot_bytes, int fmt,
+                         size_t wh)
 {
     const size_t slot = (slot_bytes + 4095u) & ~(size_t)4095u;
     if (r->slot != slot) {
@@ -243,7 +240,8 @@ static void paired(ring_t *r, const contender_t *c, int nc, int rounds, int w, i
         row->median_ms = 1e3 * median(q, rounds);
         row->min_ms = 1e3 * q[0];
         row->cpu_ms = -1.0;
-        snprintf(row->note, sizeof row->note, "ratios: median over %d rounds of the ratio within a round", rounds);
+        snprintf(row->note, sizeof row->note, "ratios: median over %d rounds of the ratio within a round",
+                 rounds);
     }
     free(t);
     free(q);
@@ -363,8 +361,7 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
     if (st != BLOOM_OK)
         die("bloom_query: %s", bloom_status_str(st));
     if (cfg0.in_fmt != BLOOM_FMT_RGB888 || cfg0.out_fmt != BLOOM_FMT_RGB888)
-        die("the first engine row (%s) must be RGB888->RGB888: it is the reference",
-            bench_engines[0].name);
+        die("the first engine row (%s) must be RGB888->RGB888: it is the reference", bench_engines[0].name);
     uint8_t *ref = xmalloc(rgb_bytes), *out = xmalloc(rgb_bytes);
     {
         void *ws = xmalloc(info0.workspace_bytes);
@@ -494,7 +491,8 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
             /* the reference row, then the RGB888 row without AVX2 if there is one */
             if (i > 0 && !(e->flags == BLOOM_FLAG_NO_AVX2 && !e->setup))
                 continue;
-            if (bench_engine_config(e, w, h, &cfg) || cfg.in_fmt != BLOOM_FMT_RGB888 || cfg.out_fmt != BLOOM_FMT_RGB888)
+            if (bench_engine_config(e, w, h, &cfg) || cfg.in_fmt != BLOOM_FMT_RGB888 ||
+                cfg.out_fmt != BLOOM_FMT_RGB888)
                 continue;
             bloom_info_t info;
             if ((st = bloom_query(&cfg, &info)) != BLOOM_OK)
@@ -582,8 +580,8 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         if (q->threads == 1 && enr && enr->cpu_ms > 0.0)
             q->xc_engine = q->cpu_ms / enr->cpu_ms;
     }
-    printf("   %-44s %3s %4s %10s %9s %9s %9s %8s %8s %9s %17s\n", "variant", "thr", "runs",
-           "median ms", "CPU ms", "x memcpy", "x engine", "max LSB", "exact %", "signed", "above / below");
+    printf("   %-44s %3s %4s %10s %9s %9s %9s %8s %8s %9s %17s\n", "variant", "thr", "runs", "median ms",
+           "CPU ms", "x memcpy", "x engine", "max LSB", "exact %", "signed", "above / below");
     for (int i = first_row; i < nrows; i++) {
         const row_t *q = &rows[i];
         char nm[45];
@@ -592,8 +590,8 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
             printf("   %-44s %s\n", nm, q->note);
             continue;
         }
-        printf("   %-44s %3d %4d %10.3f %9.3f %9.2f %9.3f", nm, q->threads, q->runs, q->median_ms,
-               q->cpu_ms, q->x_memcpy, q->x_engine);
+        printf("   %-44s %3d %4d %10.3f %9.3f %9.2f %9.3f", nm, q->threads, q->runs, q->median_ms, q->cpu_ms,
+               q->x_memcpy, q->x_engine);
         if (q->agree_max >= 0)
             printf(" %8d %8.3f %+9.5f %8lld/%-8lld\n", q->agree_max, q->agree_exact, q->agree_signed,
                    q->agree_above, q->agree_below);
@@ -607,7 +605,6 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
 }
 
 /* ---- main ------------------------------------------------------------------------ */
-
 
 int main(int argc, char **argv)
 {
@@ -678,8 +675,8 @@ int main(int argc, char **argv)
     const char *cv_version = bcv_version(), *cv_parallel = bcv_parallel_framework();
     printf("bloom_bench: %s\n  CPU %s, %d CPUs online, LLC L%d %zu KiB (sysfs) / %zu KiB (sysconf)\n"
            "  rings 2 x %zu MiB; engine built by %s %s with %s\n  OpenCV %s (%s)\n",
-           date_utc, cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10,
-           ring_bytes >> 20, BENCH_CC, __VERSION__, BENCH_FLAGS, cv_version, cv_parallel);
+           date_utc, cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10, ring_bytes >> 20,
+           BENCH_CC, __VERSION__, BENCH_FLAGS, cv_version, cv_parallel);
     fflush(stdout);
 
     ring_t ring;

@@ -25,10 +25,10 @@ typedef struct {
     int threads;
     int runs;
     double median_ms, min_ms;
-    double cpu_ms;    /* median process CPU time (every thread) per run */
+    double cpu_ms;               /* median process CPU time (every thread) per run */
     double x_memcpy, x_engine;   /* wall-time ratios */
     double xc_memcpy, xc_engine; /* CPU-time ratios, single-threaded rows; -1 otherwise */
-    int agree_max; /* -1: not compared */
+    int agree_max;               /* -1: not compared */
     double agree_exact;
     /* engine - this row, per byte: mean, and the bytes with engine > this
      * row, engine < this row (a bias hides in the two figures above) */
@@ -65,7 +65,7 @@ const char *bench_cv_row_name(int i); /* the OpenCV variants, in table order */
 double loadavg1(void);
 void bench_read_machine(void); /* fills cpu_model, ncpu, llc_* (bench_machine.c) */
 void write_csv(const char *path);
-void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
-              size_t ring_bytes, const char *cv_version, const char *cv_parallel);
+void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o, size_t ring_bytes,
+              const char *cv_version, const char *cv_parallel);
 
 #endif

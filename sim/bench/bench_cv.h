@@ -26,14 +26,14 @@ enum {
 #define BCV_MAX_LEVELS 16
 
 typedef struct {
-    int levels;                          /* L actually built (bloom_query) */
+    int levels;                                                   /* L actually built (bloom_query) */
     int level_w[BCV_MAX_LEVELS + 1], level_h[BCV_MAX_LEVELS + 1]; /* [0] = frame */
-    float decode_lut[256];               /* sRGB code -> linear light */
-    double threshold, knee;              /* t and t*s of the knee, linear */
-    double intensity;                    /* linear I of the composite */
-    int tutorial_code;                   /* tutorial threshold, 8-bit sRGB code */
-    double tutorial_sigma;               /* tutorial Gaussian sigma, full-resolution pixels */
-    double tutorial_weight;              /* tutorial addWeighted weight of the glow */
+    float decode_lut[256];                                        /* sRGB code -> linear light */
+    double threshold, knee;                                       /* t and t*s of the knee, linear */
+    double intensity;                                             /* linear I of the composite */
+    int tutorial_code;                                            /* tutorial threshold, 8-bit sRGB code */
+    double tutorial_sigma;  /* tutorial Gaussian sigma, full-resolution pixels */
+    double tutorial_weight; /* tutorial addWeighted weight of the glow */
 } bcv_params_t;
 
 typedef struct bcv_ctx bcv_ctx_t;
@@ -49,8 +49,7 @@ int bcv_set_threads(int threads);
  * would keep them). NULL on failure (bcv_error says why). */
 bcv_ctx_t *bcv_create(int w, int h, const bcv_params_t *p);
 /* One frame. Returns 0, or -1 (bcv_error says why). */
-int bcv_run(bcv_ctx_t *c, int kind, const uint8_t *src, size_t src_stride, uint8_t *dst,
-            size_t dst_stride);
+int bcv_run(bcv_ctx_t *c, int kind, const uint8_t *src, size_t src_stride, uint8_t *dst, size_t dst_stride);
 void bcv_destroy(bcv_ctx_t *c);
 const char *bcv_error(void);
 

@@ -47,18 +47,19 @@
 #include <stdexcept>
 #include <string>
 
-namespace {
+namespace
+{
 
 std::string g_error;
 std::string g_version;
 std::string g_parallel;
 
 struct Level {
-    cv::Mat pad, box;  // BOXFILTER: padded input, full box-filtered level
-    cv::Mat D;         // BOXFILTER: D_k
-    cv::Mat P;         // AREA: D_k with its replicated border; D_k = P(1, 1, w, h)
-    cv::Mat area;      // AREA: INTER_AREA result of this level's P (next level + 1)
-    cv::Mat N, T;      // tent up onto this level: nearest-upsampled, filtered
+    cv::Mat pad, box; // BOXFILTER: padded input, full box-filtered level
+    cv::Mat D;        // BOXFILTER: D_k
+    cv::Mat P;        // AREA: D_k with its replicated border; D_k = P(1, 1, w, h)
+    cv::Mat area;     // AREA: INTER_AREA result of this level's P (next level + 1)
+    cv::Mat N, T;     // tent up onto this level: nearest-upsampled, filtered
 };
 
 } // namespace
@@ -74,7 +75,8 @@ struct bcv_ctx {
     cv::Mat small, bright, blur, up;                  // tutorial
 };
 
-namespace {
+namespace
+{
 
 cv::Mat inner(const cv::Mat &P, int w, int h)
 {
@@ -182,8 +184,7 @@ void run_area(bcv_ctx &c, const cv::Mat &src, cv::Mat &dst)
         const int w = c.p.level_w[k], h = c.p.level_h[k];
         cv::resize(c.lv[k - 1].P, c.lv[k - 1].area, cv::Size(w + 1, h + 1), 0, 0, cv::INTER_AREA);
         cv::Mat box = c.lv[k].P(cv::Rect(1, 1, w + 1, h + 1));
-        cv::boxFilter(c.lv[k - 1].area, box, -1, cv::Size(2, 2), cv::Point(0, 0), true,
-                      cv::BORDER_REPLICATE);
+        cv::boxFilter(c.lv[k - 1].area, box, -1, cv::Size(2, 2), cv::Point(0, 0), true, cv::BORDER_REPLICATE);
         D[k] = inner(c.lv[k].P, w, h);
         if (k == 1)
             knee(c, D[1]);
@@ -264,8 +265,7 @@ bcv_ctx_t *bcv_create(int w, int h, const bcv_params_t *p)
     return c;
 }
 
-int bcv_run(bcv_ctx_t *c, int kind, const uint8_t *src, size_t src_stride, uint8_t *dst,
-            size_t dst_stride)
+int bcv_run(bcv_ctx_t *c, int kind, const uint8_t *src, size_t src_stride, uint8_t *dst, size_t dst_stride)
 {
     try {
         const cv::Mat s(c->h, c->w, CV_8UC3, const_cast<uint8_t *>(src), src_stride);

@@ -8,7 +8,6 @@
 #include "scene.h"
 #include "variants.h"
 
-
 /* ---- output files ------------------------------------------------------------- */
 
 char date_utc[64];
@@ -38,13 +37,13 @@ void write_csv(const char *path)
                "agree_signed_mean_lsb,agree_n_above,agree_n_below\n");
     for (int i = 0; i < nrows; i++) {
         const row_t *r = &rows[i];
-        fprintf(f, "%s,\"%s\",%d,%d,%s,\"%s\",%d,%d,", date_utc, cpu_model, r->w, r->h, r->group,
-                r->name, r->threads, r->runs);
+        fprintf(f, "%s,\"%s\",%d,%d,%s,\"%s\",%d,%d,", date_utc, cpu_model, r->w, r->h, r->group, r->name,
+                r->threads, r->runs);
         if (r->runs && r->cpu_ms < 0.0) /* paired rows: no CPU time */
             fprintf(f, "%.4f,%.4f,,%.4f,%.4f,", r->median_ms, r->min_ms, r->x_memcpy, r->x_engine);
         else if (r->runs)
-            fprintf(f, "%.4f,%.4f,%.4f,%.4f,%.4f,", r->median_ms, r->min_ms, r->cpu_ms,
-                    r->x_memcpy, r->x_engine);
+            fprintf(f, "%.4f,%.4f,%.4f,%.4f,%.4f,", r->median_ms, r->min_ms, r->cpu_ms, r->x_memcpy,
+                    r->x_engine);
         else
             fprintf(f, ",,,,,");
         if (r->xc_memcpy >= 0.0)
@@ -91,8 +90,8 @@ static const row_t *find_row(int w, int h, const char *group, const char *name, 
     return NULL;
 }
 
-void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o,
-              size_t ring_bytes, const char *cv_version, const char *cv_parallel)
+void write_md(const char *path, const int *sw, const int *sh, int nsizes, const opts_t *o, size_t ring_bytes,
+              const char *cv_version, const char *cv_parallel)
 {
     char tmp[1024];
     FILE *f = open_tmp(path, tmp, sizeof tmp);
@@ -103,32 +102,38 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
                "below the tables. Times are medians of the runs shown, on this machine only; "
                "compare runs by the ratios.\n\n");
     fprintf(f, "- Date: %s\n", date_utc);
-    fprintf(f, "- CPU: %s, %d logical CPUs online; last-level cache (L%d) %zu KiB per sysfs, "
-               "%zu KiB per sysconf\n",
+    fprintf(f,
+            "- CPU: %s, %d logical CPUs online; last-level cache (L%d) %zu KiB per sysfs, "
+            "%zu KiB per sysconf\n",
             cpu_model, ncpu, llc_level, llc_sysfs >> 10, llc_sysconf >> 10);
-    fprintf(f, "- Cold frames: every run reads its input from, and writes its output to, the next "
-               "slot of two rings of %zu MiB each (at least 4x the larger cache figure)\n",
+    fprintf(f,
+            "- Cold frames: every run reads its input from, and writes its output to, the next "
+            "slot of two rings of %zu MiB each (at least 4x the larger cache figure)\n",
             ring_bytes >> 20);
-    fprintf(f, "- Engine: `src/` as it was at run time, compiled by %s %s with `%s`; "
-               "5 levels requested, threshold %.2f, soft knee %.2f, intensity %.2f "
-               "(`bloom_config_default` except the threshold)\n",
+    fprintf(f,
+            "- Engine: `src/` as it was at run time, compiled by %s %s with `%s`; "
+            "5 levels requested, threshold %.2f, soft knee %.2f, intensity %.2f "
+            "(`bloom_config_default` except the threshold)\n",
             BENCH_CC, __VERSION__, BENCH_FLAGS, BENCH_THRESHOLD, c.soft_knee / 65536.0,
             c.intensity / 65536.0);
-    fprintf(f, "- OpenCV %s, parallel framework %s, default threads %d; \"1\" in the threads "
-               "column is `cv::setNumThreads(0)` (sequential)\n",
+    fprintf(f,
+            "- OpenCV %s, parallel framework %s, default threads %d; \"1\" in the threads "
+            "column is `cv::setNumThreads(0)` (sequential)\n",
             cv_version, cv_parallel, opencv_threads_default);
-    fprintf(f, "- Scene: `%s`%s%s%s %s; parameters chosen so that the bloom is active on it "
-               "(figures per size below)\n",
+    fprintf(f,
+            "- Scene: `%s`%s%s%s %s; parameters chosen so that the bloom is active on it "
+            "(figures per size below)\n",
             o->image, strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : " (",
             strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : SCENE_IMAGE_DEFAULT_ABOUT,
             strcmp(o->image, SCENE_IMAGE_DEFAULT) ? "" : ")", scene_description);
-    fprintf(f, "- Runs: median of %d runs after %d warm-up(s) (%d runs when the last warm-up took "
-               "over %.2f s); \"median ms\" is wall time, \"CPU ms\" the median process CPU "
-               "time of the same runs (every thread: above the wall time when OpenCV's "
-               "threads work in parallel, below it when other processes took the CPU); "
-               "\"x\" columns divide wall times, \"x ..., CPU\" columns CPU times, for "
-               "single-threaded rows only (the CSV also has the minimum wall time); the float "
-               "model: one run, at the sizes listed in its rows only\n",
+    fprintf(f,
+            "- Runs: median of %d runs after %d warm-up(s) (%d runs when the last warm-up took "
+            "over %.2f s); \"median ms\" is wall time, \"CPU ms\" the median process CPU "
+            "time of the same runs (every thread: above the wall time when OpenCV's "
+            "threads work in parallel, below it when other processes took the CPU); "
+            "\"x\" columns divide wall times, \"x ..., CPU\" columns CPU times, for "
+            "single-threaded rows only (the CSV also has the minimum wall time); the float "
+            "model: one run, at the sizes listed in its rows only\n",
             o->runs, o->warm, SLOW_RUNS, SLOW_RUN_S);
     if (load_start >= 0.0 && load_end >= 0.0)
         fprintf(f, "- Load average (1 min) of the machine at start / end: %.2f / %.2f on %d CPUs%s\n",
@@ -146,10 +151,10 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
     for (int s = 0; s < nsizes; s++) {
         const int w = sw[s], h = sh[s];
         fprintf(f, "## %dx%d\n\n", w, h);
-        fprintf(f, "RGB888 frame %d bytes; pyramid levels built: %d; %.2f %% of source pixels "
-                   "above the knee's lower edge; the bloom changes %.2f %% of the output bytes.\n\n",
-                w * h * 3, size_info[s].levels, size_info[s].active_src_pct,
-                size_info[s].changed_out_pct);
+        fprintf(f,
+                "RGB888 frame %d bytes; pyramid levels built: %d; %.2f %% of source pixels "
+                "above the knee's lower edge; the bloom changes %.2f %% of the output bytes.\n\n",
+                w * h * 3, size_info[s].levels, size_info[s].active_src_pct, size_info[s].changed_out_pct);
         fprintf(f, "| group | variant | threads | runs | median ms | CPU ms | x cold memcpy | "
                    "x engine | x cold memcpy, CPU | x engine, CPU | max LSB vs engine | "
                    "exact %% | signed mean LSB, engine - variant | engine above / below |\n");
@@ -195,9 +200,10 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
     const row_t *tu = find_row(w, h, "opencv", bench_cv_row_name(4), 1);
     fprintf(f, "## Issue 7 targets at %dx%d (reported, not asserted)\n\n", w, h);
     if (mc && en) {
-        fprintf(f, "Engine row: %s, one thread. Ratios of wall times (the tables), and of CPU "
-                   "times of the same runs, which leave out time lost to other processes on a "
-                   "busy machine (every row compared here is single-threaded).\n\n",
+        fprintf(f,
+                "Engine row: %s, one thread. Ratios of wall times (the tables), and of CPU "
+                "times of the same runs, which leave out time lost to other processes on a "
+                "busy machine (every row compared here is single-threaded).\n\n",
                 en->name);
         /* paired rounds (bench.c, paired()): ratios within a round, median over rounds */
         const row_t *pe = find_row(w, h, "paired", en->name, -1);
@@ -232,16 +238,18 @@ void write_md(const char *path, const int *sw, const int *sh, int nsizes, const 
             const double ac = bx->cpu_ms / en->cpu_ms, bc = ar->cpu_ms / en->cpu_ms;
             xw = a < b ? a : b;
             xc = ac < bc ? ac : bc;
-            fprintf(f, "| engine at least 10x faster than the same algorithm in OpenCV, one "
-                       "thread (the faster route counts; boxFilter route %.2fx, INTER_AREA route "
-                       "%.2fx wall; paired: boxFilter / INTER_AREA in brackets) | %.2fx | %.2fx | %s | %s |\n",
+            fprintf(f,
+                    "| engine at least 10x faster than the same algorithm in OpenCV, one "
+                    "thread (the faster route counts; boxFilter route %.2fx, INTER_AREA route "
+                    "%.2fx wall; paired: boxFilter / INTER_AREA in brackets) | %.2fx | %.2fx | %s | %s |\n",
                     a, b, xw, xc, pw[1], pv[1] < 0 ? "-" : met(pv[1] >= 10.0));
         }
         if (tu) {
             xw = tu->median_ms / en->median_ms;
             xc = tu->cpu_ms / en->cpu_ms;
-            fprintf(f, "| engine at least 3x faster than the OpenCV tutorial bloom, one thread | "
-                       "%.2fx | %.2fx | %s | %s |\n",
+            fprintf(f,
+                    "| engine at least 3x faster than the OpenCV tutorial bloom, one thread | "
+                    "%.2fx | %.2fx | %s | %s |\n",
                     xw, xc, pw[2], pv[2] < 0 ? "-" : met(pv[2] >= 3.0));
         }
         fprintf(f, "| at most 40 instructions per pixel | see `sim/docs/icount.md` "

@@ -72,8 +72,7 @@ static void stretch(const uint8_t *s, int sw, int sh, uint8_t *d, int w, int h)
 static void spots(uint8_t *rgb, int w, int h)
 {
     static const uint8_t palette[6][3] = {
-        {255, 255, 255}, {255, 200, 120}, {120, 220, 255},
-        {255, 80, 60},   {140, 255, 120}, {255, 170, 40},
+        {255, 255, 255}, {255, 200, 120}, {120, 220, 255}, {255, 80, 60}, {140, 255, 120}, {255, 170, 40},
     };
     uint32_t seed = 0x2545F491u;
     for (int i = 0; i < SCENE_SPOTS; i++) {
@@ -129,8 +128,7 @@ int scene_make(const char *image_path, int w, int h, uint8_t *rgb, char *err, si
     return 0;
 }
 
-int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t *dst,
-                  size_t stride)
+int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t *dst, size_t stride)
 {
     for (int y = 0; y < h; y++) {
         const uint8_t *s = rgb + (size_t)y * (size_t)w * 3u;

@@ -22,8 +22,7 @@ int scene_make(const char *image_path, int w, int h, uint8_t *rgb, char *err, si
 
 /* Converts the RGB888 scene to fmt (RGB888, XRGB8888 or RGB565), rows
  * stride bytes apart. Returns 0, or -1 for a format it does not produce. */
-int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t *dst,
-                  size_t stride);
+int scene_convert(const uint8_t *rgb, int w, int h, bloom_format_t fmt, uint8_t *dst, size_t stride);
 
 int scene_parse_sizes(const char *s, int *w, int *h, int max); /* "WxH,...", "none" */
 

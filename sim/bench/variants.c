@@ -56,7 +56,8 @@ const bench_engine_t bench_engines[] = {
     {"preset-cod", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, preset_cod, NULL},
     {"preset-gamedev,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_gamedev, NULL},
     {"preset-xna,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_xna, NULL},
-    {"preset-attenuation,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_attenuation, NULL},
+    {"preset-attenuation,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_attenuation,
+     NULL},
     {"preset-arm,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_arm, NULL},
     {"preset-cod,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, preset_cod, NULL},
 };

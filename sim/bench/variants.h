@@ -14,9 +14,9 @@
 #define BENCH_THRESHOLD 0.6
 
 typedef struct {
-    const char *name;               /* row label and icount key, no spaces */
+    const char *name; /* row label and icount key, no spaces */
     bloom_format_t in_fmt, out_fmt;
-    uint32_t flags;                 /* BLOOM_FLAG_* added to the defaults */
+    uint32_t flags; /* BLOOM_FLAG_* added to the defaults */
     /* Extension point for presets and SIMD switches: called after the
      * defaults are in cfg and before bloom_init; may change cfg or a
      * process-wide switch. Returns 0, or -1 to skip the row (feature not

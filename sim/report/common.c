@@ -46,8 +46,7 @@ bloom_status_t rengine_run(const bloom_config_t *c, const void *src, size_t src_
     return st;
 }
 
-int rmodel_run(const bloom_config_t *c, const uint32_t *codes, int src_max, uint32_t *out,
-               int dst_max)
+int rmodel_run(const bloom_config_t *c, const uint32_t *codes, int src_max, uint32_t *out, int dst_max)
 {
     bloom_model_params_t p;
     memset(&p, 0, sizeof p);
@@ -246,7 +245,6 @@ int rrun_engine(void *ctx, const uint8_t *src, uint8_t *dst)
 }
 
 /* ---- misc ---------------------------------------------------------------------- */
-
 
 FILE *ropen(const char *path, char *tmp, size_t tmplen)
 {

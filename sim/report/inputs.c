@@ -55,8 +55,7 @@ static void set_rgb(rin_t *f, const uint8_t *rgb)
 
 /* A real image, nearest-neighbour to w x h: PPM to RGB888 (8-bit codes),
  * PFM to RGBQ16 through img_float_to_q16. */
-static int from_file(rin_t *f, const char *name, const char *path, int w, int h, char *err,
-                     size_t errlen)
+static int from_file(rin_t *f, const char *name, const char *path, int w, int h, char *err, size_t errlen)
 {
     img_t im;
     if (img_read(path, &im, err, errlen))
@@ -99,8 +98,7 @@ static void disc(uint8_t *rgb, int w, int h, double cx, double cy, double r)
         }
 }
 
-int rin_make(rin_t *f, const char *name, const char *data_dir, int w, int h, char *err,
-             size_t errlen)
+int rin_make(rin_t *f, const char *name, const char *data_dir, int w, int h, char *err, size_t errlen)
 {
     static const struct {
         const char *name, *file;

@@ -16,11 +16,11 @@
 typedef struct {
     char name[32];
     int w, h;
-    bloom_format_t fmt;     /* RGB888 or RGBQ16 */
-    size_t stride, bytes;   /* packed rows */
-    uint8_t *p;             /* the frame in fmt */
-    uint32_t *codes;        /* w*h*3 model input: 8-bit codes or Q16.16 words */
-    int src_max;            /* 255, or 0 for Q16.16 words (bloom_model_run) */
+    bloom_format_t fmt;   /* RGB888 or RGBQ16 */
+    size_t stride, bytes; /* packed rows */
+    uint8_t *p;           /* the frame in fmt */
+    uint32_t *codes;      /* w*h*3 model input: 8-bit codes or Q16.16 words */
+    int src_max;          /* 255, or 0 for Q16.16 words (bloom_model_run) */
 } rin_t;
 
 /* Builds input `name` at w x h:
@@ -35,8 +35,7 @@ typedef struct {
  *   point, hdr-point        black with a 3x3 block in the centre at 1.0
  *                           (RGB888 255) or 255.99998 (RGBQ16 2^24 - 1)
  * Returns 0, or -1 with a message in err. */
-int rin_make(rin_t *f, const char *name, const char *data_dir, int w, int h, char *err,
-             size_t errlen);
+int rin_make(rin_t *f, const char *name, const char *data_dir, int w, int h, char *err, size_t errlen);
 /* An RGBQ16 frame from words (w*h*3), taken over. */
 int rin_from_words(rin_t *f, const char *name, int w, int h, uint32_t *words);
 void rin_free(rin_t *f);
@@ -50,8 +49,7 @@ bloom_status_t rengine_run(const bloom_config_t *c, const void *src, size_t src_
                            size_t dst_stride);
 /* Float model of config c on codes (src_max as bloom_model_run), output codes
  * of dst_max (255, or 0 = Q16.16 words) into out (w*h*3). Returns L or -1. */
-int rmodel_run(const bloom_config_t *c, const uint32_t *codes, int src_max, uint32_t *out,
-               int dst_max);
+int rmodel_run(const bloom_config_t *c, const uint32_t *codes, int src_max, uint32_t *out, int dst_max);
 
 /* ---- error statistics ----------------------------------------------------- */
 
@@ -63,8 +61,8 @@ typedef struct {
     long long above, below;     /* samples with eng > ref, eng < ref */
     long long sat_eng, sat_ref; /* samples at the top code */
     double sum_abs, sum_sq, sum_signed;
-    double peak_rel;            /* largest |eng - ref| / ref over ref >= rel_floor */
-    long long rel_floor;        /* set before adding; 0 counts as 1 */
+    double peak_rel;     /* largest |eng - ref| / ref over ref >= rel_floor */
+    long long rel_floor; /* set before adding; 0 counts as 1 */
 } rstat_t;
 
 void rstat_add(rstat_t *s, long long eng, long long ref, long long top);
@@ -72,8 +70,8 @@ void rstat_merge(rstat_t *into, const rstat_t *s);
 double rstat_mean(const rstat_t *s);        /* mean |eng - ref| */
 double rstat_signed_mean(const rstat_t *s); /* mean (eng - ref) */
 double rstat_mse(const rstat_t *s);
-double rstat_exact(const rstat_t *s);   /* percent */
-double rstat_psnr(const rstat_t *s);    /* dB for 8-bit codes; INFINITY when exact */
+double rstat_exact(const rstat_t *s); /* percent */
+double rstat_psnr(const rstat_t *s);  /* dB for 8-bit codes; INFINITY when exact */
 /* "inf" or "%.2f" of a PSNR. */
 const char *rpsnr_str(double psnr, char *buf, size_t n);
 
@@ -101,9 +99,9 @@ typedef int (*rrun_fn)(void *ctx, const uint8_t *src, uint8_t *dst);
 typedef struct {
     rrun_fn fn;
     void *ctx;
-    int inplace;               /* dst = src slot */
-    double wall_ms, cpu_ms;    /* medians */
-    const uint8_t *last_dst;   /* output of the last run */
+    int inplace;             /* dst = src slot */
+    double wall_ms, cpu_ms;  /* medians */
+    const uint8_t *last_dst; /* output of the last run */
 } rtimer_t;
 
 /* `warm` + `runs` rounds; a round runs every timer once, each on its own

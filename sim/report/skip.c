@@ -147,32 +147,30 @@ int main(int argc, char **argv)
             const long long ic2 = icount(tsv, w, h, scenes[si], "noskip");
             const double act = active_rows(&in, &c);
             fprintf(csv, "%d,%d,%s,%.2f,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,", w, h,
-                    scenes[si], act, r, t[0].wall_ms, t[0].cpu_ms, t[1].wall_ms, t[1].cpu_ms,
-                    t[2].wall_ms, t[2].cpu_ms, t[1].wall_ms / t[2].wall_ms, t[1].cpu_ms / t[2].cpu_ms,
+                    scenes[si], act, r, t[0].wall_ms, t[0].cpu_ms, t[1].wall_ms, t[1].cpu_ms, t[2].wall_ms,
+                    t[2].cpu_ms, t[1].wall_ms / t[2].wall_ms, t[1].cpu_ms / t[2].cpu_ms,
                     t[1].wall_ms / t[0].wall_ms, t[1].cpu_ms / t[0].cpu_ms);
             if (dark)
-                fprintf(csv, "%.4f,%.4f,%.4f,%.4f,", t[3].wall_ms, t[3].cpu_ms,
-                        t[3].wall_ms / t[0].wall_ms, t[3].cpu_ms / t[0].cpu_ms);
+                fprintf(csv, "%.4f,%.4f,%.4f,%.4f,", t[3].wall_ms, t[3].cpu_ms, t[3].wall_ms / t[0].wall_ms,
+                        t[3].cpu_ms / t[0].cpu_ms);
             else
                 fprintf(csv, ",,,,");
             fprintf(csv, "%lld,%lld,%s,%s\n", ic1, ic2, same ? "yes" : "NO", is_input ? "yes" : "no");
             fprintf(md, "| %dx%d | %s | %.1f %% | %.3f (%.3f) | %.2f (%.2f) | ", w, h, about[si], act,
-                    t[1].cpu_ms / t[2].cpu_ms, t[1].wall_ms / t[2].wall_ms,
-                    t[1].cpu_ms / t[0].cpu_ms, t[1].wall_ms / t[0].wall_ms);
+                    t[1].cpu_ms / t[2].cpu_ms, t[1].wall_ms / t[2].wall_ms, t[1].cpu_ms / t[0].cpu_ms,
+                    t[1].wall_ms / t[0].wall_ms);
             if (ic1 > 0 && ic2 > 0)
                 fprintf(md, "%lld / %lld | %.4f | ", ic1, ic2, (double)ic1 / (double)ic2);
             else
                 fprintf(md, "- | - | ");
-            fprintf(md, "%s%s |\n", same ? "identical" : "**DIFFERENT**",
-                    is_input ? " (and = input)" : "");
+            fprintf(md, "%s%s |\n", same ? "identical" : "**DIFFERENT**", is_input ? " (and = input)" : "");
             if (dark)
-                fprintf(md, "| %dx%d | dark, in place (dst = src) | | | %.2f (%.2f) | | | %s |\n",
-                        w, h, t[3].cpu_ms / t[0].cpu_ms, t[3].wall_ms / t[0].wall_ms,
+                fprintf(md, "| %dx%d | dark, in place (dst = src) | | | %.2f (%.2f) | | | %s |\n", w, h,
+                        t[3].cpu_ms / t[0].cpu_ms, t[3].wall_ms / t[0].wall_ms,
                         !memcmp(o3, in.p, bytes) ? "untouched (= input)" : "**changed**");
-            printf("skip %dx%d %-7s skip/full %.3f (CPU %.3f), skip x memcpy %.2f (CPU %.2f), %s\n", w,
-                   h, scenes[si], t[1].wall_ms / t[2].wall_ms, t[1].cpu_ms / t[2].cpu_ms,
-                   t[1].wall_ms / t[0].wall_ms, t[1].cpu_ms / t[0].cpu_ms,
-                   same ? "identical" : "DIFFERENT");
+            printf("skip %dx%d %-7s skip/full %.3f (CPU %.3f), skip x memcpy %.2f (CPU %.2f), %s\n", w, h,
+                   scenes[si], t[1].wall_ms / t[2].wall_ms, t[1].cpu_ms / t[2].cpu_ms,
+                   t[1].wall_ms / t[0].wall_ms, t[1].cpu_ms / t[0].cpu_ms, same ? "identical" : "DIFFERENT");
             fflush(stdout);
             free(o1);
             free(o2);
@@ -183,8 +181,9 @@ int main(int argc, char **argv)
             rin_free(&in);
         }
     }
-    fprintf(md, "\nSkip and full-path outputs %s in every row (each scene run once more "
-                "outside the ring, out of place and in place, and compared byte for byte).\n",
+    fprintf(md,
+            "\nSkip and full-path outputs %s in every row (each scene run once more "
+            "outside the ring, out of place and in place, and compared byte for byte).\n",
             all_identical ? "are identical" : "**differ**");
     rclose(csv, ctmp, cpath);
     rclose(md, mtmp, mpath);

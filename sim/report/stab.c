@@ -33,8 +33,8 @@ static void track(const char *cas, const rin_t *in, const bloom_config_t *c, con
     }
     tr.ok++;
     char what[240];
-    snprintf(what, sizeof what, "%s (%s %dx%d, N %d, intensity %.1f)", cas, in->name, in->w, in->h,
-             c->levels, c->intensity / 65536.0);
+    snprintf(what, sizeof what, "%s (%s %dx%d, N %d, intensity %.1f)", cas, in->name, in->w, in->h, c->levels,
+             c->intensity / 65536.0);
     if (c->out_fmt == BLOOM_FMT_RGBQ16) {
         if (r->s.peak_rel > tr.worst_rel) {
             tr.worst_rel = r->s.peak_rel;
@@ -63,23 +63,26 @@ static void track(const char *cas, const rin_t *in, const bloom_config_t *c, con
 
 static void summary(FILE *f)
 {
-    fprintf(f, "Cases run: %lld, refused as out of range (as they should be): %lld. Largest error "
-               "with RGB888 output: **%lld LSB** (first reached by %s). ",
+    fprintf(f,
+            "Cases run: %lld, refused as out of range (as they should be): %lld. Largest error "
+            "with RGB888 output: **%lld LSB** (first reached by %s). ",
             tr.ok, tr.refused, tr.worst8, tr.worst8_case);
     if (tr.over1[0])
         fprintf(f, "Cases above 1 LSB: %s. ", tr.over1);
     else
         fprintf(f, "No case exceeds 1 LSB. ");
     if (tr.worst_bias_case[0])
-        fprintf(f, "Largest bias (signed mean of the largest magnitude) with RGB888 output: "
-                   "%+.5f LSB (%s). ", tr.worst_bias, tr.worst_bias_case);
+        fprintf(f,
+                "Largest bias (signed mean of the largest magnitude) with RGB888 output: "
+                "%+.5f LSB (%s). ",
+                tr.worst_bias, tr.worst_bias_case);
     else
         fprintf(f, "No RGB888 case has a bias (every signed mean is 0). ");
-    fprintf(f, "Largest relative error with RGBQ16 output: %.2g (%s). ", tr.worst_rel,
-            tr.worst_rel_case);
+    fprintf(f, "Largest relative error with RGBQ16 output: %.2g (%s). ", tr.worst_rel, tr.worst_rel_case);
     if (tr.sat_rows)
-        fprintf(f, "Saturation: in %lld cases the engine and the model put a different number "
-                   "of samples at the top code, by at most %lld samples.\n",
+        fprintf(f,
+                "Saturation: in %lld cases the engine and the model put a different number "
+                "of samples at the top code, by at most %lld samples.\n",
                 tr.sat_rows, tr.sat_diff);
     else
         fprintf(f, "Saturation: engine and model put the same number of samples at the top "
@@ -150,12 +153,12 @@ void stab_emit(const char *section, const char *cas, const rin_t *in, const bloo
 {
     const double t = c->threshold / 65536.0, k = c->soft_knee / 65536.0, I = c->intensity / 65536.0;
     track(cas, in, c, r);
-    fprintf(csv, "%s,\"%s\",%s,%d,%d,%s,%s,%s,%d,%.6f,%.6f,%.6f,\"%s\"", section, cas, in->name,
-            in->w, in->h, fmt_name(in->fmt), fmt_name(c->out_fmt), levels, r->built, t, k, I,
+    fprintf(csv, "%s,\"%s\",%s,%d,%d,%s,%s,%s,%d,%.6f,%.6f,%.6f,\"%s\"", section, cas, in->name, in->w, in->h,
+            fmt_name(in->fmt), fmt_name(c->out_fmt), levels, r->built, t, k, I,
             r->st == BLOOM_OK ? "ok" : bloom_status_str(r->st));
     if (r->st == BLOOM_OK)
-        fprintf(csv, ",%lld,%.6f,%.6f,%.4f,%lld,%lld,%.3g", r->s.peak, rstat_mean(&r->s),
-                rstat_mse(&r->s), rstat_exact(&r->s), r->s.sat_eng, r->s.sat_ref, r->s.peak_rel);
+        fprintf(csv, ",%lld,%.6f,%.6f,%.4f,%lld,%lld,%.3g", r->s.peak, rstat_mean(&r->s), rstat_mse(&r->s),
+                rstat_exact(&r->s), r->s.sat_eng, r->s.sat_ref, r->s.peak_rel);
     else
         fprintf(csv, ",,,,,,,");
     if (r->has_raw)
@@ -173,30 +176,29 @@ void stab_emit(const char *section, const char *cas, const rin_t *in, const bloo
     else
         fprintf(csv, ",,,\n");
 
-    fprintf(md, "| %s | %s | %dx%d %s | %s (%d) | %s | ", cas, in->name, in->w, in->h,
-            fmt_name(in->fmt), levels, r->built, fmt_name(c->out_fmt));
+    fprintf(md, "| %s | %s | %dx%d %s | %s (%d) | %s | ", cas, in->name, in->w, in->h, fmt_name(in->fmt),
+            levels, r->built, fmt_name(c->out_fmt));
     if (r->st != BLOOM_OK) {
         fprintf(md, "refused: %s | | | | | | %s |\n", bloom_status_str(r->st), note ? note : "");
         return;
     }
-    fprintf(md, "%lld | %.5f | %.3f | %+.5f | %lld / %lld | %lld / %lld | ", r->s.peak,
-            rstat_mean(&r->s), rstat_exact(&r->s), rstat_signed_mean(&r->s), r->s.above, r->s.below,
-            r->s.sat_eng, r->s.sat_ref);
+    fprintf(md, "%lld | %.5f | %.3f | %+.5f | %lld / %lld | %lld / %lld | ", r->s.peak, rstat_mean(&r->s),
+            rstat_exact(&r->s), rstat_signed_mean(&r->s), r->s.above, r->s.below, r->s.sat_eng, r->s.sat_ref);
     char notes[512] = "";
     size_t nk = 0;
     if (c->out_fmt == BLOOM_FMT_RGBQ16)
         nk += (size_t)snprintf(notes + nk, sizeof notes - nk, "; relative error where v >= 1.0: %.2g",
-                              r->s.peak_rel);
+                               r->s.peak_rel);
     if (r->has_raw && nk < sizeof notes)
         nk += (size_t)snprintf(notes + nk, sizeof notes - nk,
-                              "; vs unclamped words: peak %lld, mean \\|e\\| %.3f, signed mean %+.3f "
-                              "(%lld above, %lld below), model top %lld",
-                              r->raw.peak, rstat_mean(&r->raw), rstat_signed_mean(&r->raw),
-                              r->raw.above, r->raw.below, r->raw.sat_ref);
+                               "; vs unclamped words: peak %lld, mean \\|e\\| %.3f, signed mean %+.3f "
+                               "(%lld above, %lld below), model top %lld",
+                               r->raw.peak, rstat_mean(&r->raw), rstat_signed_mean(&r->raw), r->raw.above,
+                               r->raw.below, r->raw.sat_ref);
     if (r->changed >= 0 && nk < sizeof notes)
         nk += r->changed ? (size_t)snprintf(notes + nk, sizeof notes - nk,
-                                           "; %lld samples differ from the input", r->changed)
-                        : (size_t)snprintf(notes + nk, sizeof notes - nk, "; output = input");
+                                            "; %lld samples differ from the input", r->changed)
+                         : (size_t)snprintf(notes + nk, sizeof notes - nk, "; output = input");
     if (note && nk < sizeof notes)
         snprintf(notes + nk, sizeof notes - nk, "; %s", note);
     fprintf(md, "%s |\n", notes[0] ? notes + 2 : "");
@@ -239,11 +241,11 @@ static const char *curve_inputs[] = {"rocket", "hubble", "scene-hubble", "studio
 static void summary_line(const char *what, const char *input, const rstat_t *lo, const rstat_t *hi,
                          long long peak_all, double mean_max, const rstat_t *all)
 {
-    fprintf(md, "| %s | %s | %lld / %.5f / %+.5f | %lld / %.5f / %+.5f | %lld | %.5f | %+.5f | "
-                "%lld / %lld |\n",
+    fprintf(md,
+            "| %s | %s | %lld / %.5f / %+.5f | %lld / %.5f / %+.5f | %lld | %.5f | %+.5f | "
+            "%lld / %lld |\n",
             what, input, lo->peak, rstat_mean(lo), rstat_signed_mean(lo), hi->peak, rstat_mean(hi),
-            rstat_signed_mean(hi), peak_all, mean_max, rstat_signed_mean(all), all->above,
-            all->below);
+            rstat_signed_mean(hi), peak_all, mean_max, rstat_signed_mean(all), all->above, all->below);
 }
 
 static void curves(const char *dir, int with_md)
@@ -283,9 +285,9 @@ static void curves(const char *dir, int with_md)
             if (r.st != BLOOM_OK)
                 rdie("level curve: %s", bloom_status_str(r.st));
             track("level curve", &in, &c, &r);
-            fprintf(f, "%d,%s,%d,%d,%d,%d,%lld,%.6f,%.6f,%.4f,%.6f,%lld,%lld\n", BLOOM_LIN_BITS,
-                    in.name, in.w, in.h, n, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s),
-                    rstat_exact(&r.s), rstat_signed_mean(&r.s), r.s.above, r.s.below);
+            fprintf(f, "%d,%s,%d,%d,%d,%d,%lld,%.6f,%.6f,%.4f,%.6f,%lld,%lld\n", BLOOM_LIN_BITS, in.name,
+                    in.w, in.h, n, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s), rstat_exact(&r.s),
+                    rstat_signed_mean(&r.s), r.s.above, r.s.below);
             if (n == 1)
                 first = r.s;
             last = r.s;
@@ -317,10 +319,10 @@ static void curves(const char *dir, int with_md)
             if (r.st != BLOOM_OK)
                 rdie("intensity curve: %s", bloom_status_str(r.st));
             track("intensity curve", &in, &c, &r);
-            fprintf(f, "%d,%s,%d,%d,%.2f,%d,%lld,%.6f,%.6f,%.4f,%lld,%lld,%.6f,%lld,%lld\n",
-                    BLOOM_LIN_BITS, in.name, in.w, in.h, s * 0.5, r.built, r.s.peak, rstat_mean(&r.s),
-                    rstat_mse(&r.s), rstat_exact(&r.s), r.s.sat_eng, r.s.sat_ref,
-                    rstat_signed_mean(&r.s), r.s.above, r.s.below);
+            fprintf(f, "%d,%s,%d,%d,%.2f,%d,%lld,%.6f,%.6f,%.4f,%lld,%lld,%.6f,%lld,%lld\n", BLOOM_LIN_BITS,
+                    in.name, in.w, in.h, s * 0.5, r.built, r.s.peak, rstat_mean(&r.s), rstat_mse(&r.s),
+                    rstat_exact(&r.s), r.s.sat_eng, r.s.sat_ref, rstat_signed_mean(&r.s), r.s.above,
+                    r.s.below);
             if (s == 0)
                 first = r.s;
             last = r.s;

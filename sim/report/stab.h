@@ -11,11 +11,11 @@ extern const char *stab_data_dir, *stab_out_dir;
 
 typedef struct {
     bloom_status_t st;
-    int built;           /* L */
-    rstat_t s;           /* against the model on the input as the engine sees it */
-    rstat_t raw;         /* against the model on unclamped words (has_raw) */
+    int built;   /* L */
+    rstat_t s;   /* against the model on the input as the engine sees it */
+    rstat_t raw; /* against the model on unclamped words (has_raw) */
     int has_raw;
-    long long changed;   /* output samples that differ from the input; -1: not comparable */
+    long long changed; /* output samples that differ from the input; -1: not comparable */
 } res_t;
 
 /* Engine and float model on in with config c; with_raw: also the model on

@@ -35,7 +35,10 @@ void stab_params(FILE *md)
             for (int ti = 0; ti < 4; ti++) {
                 stab_config(&c, &in, 5, ts[ti], ks[ki], 1.0, BLOOM_FMT_RGB888);
                 snprintf(cas, sizeof cas, "knee %.1f, threshold %s", ks[ki],
-                         ti == 3 ? "above max" : ti == 0 ? "0" : ti == 1 ? "0.6" : "1.0");
+                         ti == 3   ? "above max"
+                         : ti == 0 ? "0"
+                         : ti == 1 ? "0.6"
+                                   : "1.0");
                 const res_t r = stab_run(&in, &c, 0);
                 stab_emit("params", cas, &in, &c, "5", &r, NULL);
             }
@@ -104,9 +107,12 @@ void stab_hdr(FILE *md)
         const char *name;
         uint32_t v;
     } vs[] = {
-        {"disc 1.0", ONE},           {"disc 16.0", 16u * ONE},
-        {"disc 255.99998 (2^24-1)", BLOOM_MAX_LINEAR}, {"disc 256.0 (2^24)", 1u << 24},
-        {"disc 4096.0 (2^28)", 1u << 28}, {"disc 65536.0 (2^32-1)", 0xFFFFFFFFu},
+        {"disc 1.0", ONE},
+        {"disc 16.0", 16u * ONE},
+        {"disc 255.99998 (2^24-1)", BLOOM_MAX_LINEAR},
+        {"disc 256.0 (2^24)", 1u << 24},
+        {"disc 4096.0 (2^28)", 1u << 28},
+        {"disc 65536.0 (2^32-1)", 0xFFFFFFFFu},
     };
     for (size_t vi = 0; vi < sizeof vs / sizeof vs[0]; vi++) {
         rin_t in;
@@ -131,8 +137,9 @@ void stab_hdr(FILE *md)
             bloom_config_t c;
             stab_config(&c, &in, 16, 0.0, 0.5, 10.0, oi ? BLOOM_FMT_RGBQ16 : BLOOM_FMT_RGB888);
             const res_t r = stab_run(&in, &c, 1);
-            stab_emit("hdr", fi ? "every word 2^32-1, threshold 0, intensity 10"
-                                : "every word 2^24-1, threshold 0, intensity 10",
+            stab_emit("hdr",
+                      fi ? "every word 2^32-1, threshold 0, intensity 10"
+                         : "every word 2^24-1, threshold 0, intensity 10",
                       &in, &c, "16", &r, NULL);
         }
         rin_free(&in);
@@ -147,9 +154,15 @@ void stab_float(FILE *md)
         const char *name;
         float v;
     } cls[] = {
-        {"NaN", NAN},          {"+Inf", INFINITY},       {"-Inf", -INFINITY},
-        {"-1.0", -1.0f},       {"-0.0", -0.0f},          {"denormal 1e-40", 1e-40f},
-        {"1e-6 (below 2^-17)", 1e-6f}, {"255.99998", 255.99998f}, {"256.0", 256.0f},
+        {"NaN", NAN},
+        {"+Inf", INFINITY},
+        {"-Inf", -INFINITY},
+        {"-1.0", -1.0f},
+        {"-0.0", -0.0f},
+        {"denormal 1e-40", 1e-40f},
+        {"1e-6 (below 2^-17)", 1e-6f},
+        {"255.99998", 255.99998f},
+        {"256.0", 256.0f},
         {"1e30", 1e30f},
     };
     enum { NCLS = sizeof cls / sizeof cls[0] };
@@ -205,8 +218,8 @@ void stab_float(FILE *md)
             neg += v < 0.0f;
             big += v >= 256.0f;
         }
-        snprintf(note, sizeof note, "file samples: %lld negative, %lld NaN, %lld Inf, %lld >= 256",
-                 neg, nan, inf, big);
+        snprintf(note, sizeof note, "file samples: %lld negative, %lld NaN, %lld Inf, %lld >= 256", neg, nan,
+                 inf, big);
         stab_input(&in, files[fi][0], im.width, im.height);
         for (int oi = 0; oi < 2; oi++) {
             bloom_config_t c;
@@ -268,8 +281,8 @@ void stab_shapes(FILE *md)
                     r = stab_run(&in, &c, 0);
                 }
                 /* a group ends where the pyramid (or the result) changes */
-                if (n > 1 && (n > BLOOM_MAX_LEVELS || r.built != prev.built ||
-                              r.st != prev.st || r.s.sum_sq != prev.s.sum_sq)) {
+                if (n > 1 && (n > BLOOM_MAX_LEVELS || r.built != prev.built || r.st != prev.st ||
+                              r.s.sum_sq != prev.s.sum_sq)) {
                     char lv[16], cas[64];
                     snprintf(lv, sizeof lv, from == n - 1 ? "%d" : "%d-%d", from, n - 1);
                     snprintf(cas, sizeof cas, "%dx%d, intensity %.0f", fr[fi].w, fr[fi].h, I);
@@ -348,16 +361,17 @@ void stab_stress(FILE *md)
     FILE *f = ropen(path, tmp, sizeof tmp);
     fprintf(f, "F,input,width,height,levels,levels_built,peak,mean,exact_pct,db,bound,worst_case_bound,"
                "signed_mean,n_above,n_below\n");
-    stab_table("The stiffest case: a light on black at the largest intensity",
-               "A 3x3 light (1.0 in RGB888, 255.99998 in RGBQ16) on black and the 24 lights on "
-               "the Hubble field, intensity 10.0 (linear I = 223.8), threshold 0.6, soft knee "
-               "0.5, every level the frame builds (N above the last row builds the same "
-               "pyramid). Notes: `dB` is the largest error of the bloom term B where the "
-               "output is below the top code, in units of 2^-F (bit-true against exact "
-               "pyramid of the model); `bound` is 1 + floor(3295 * ((I * dB + 1) * 2^-F + "
-               "2^-17 / I)): 3295 = 255 * 12.92 codes per unit of linear light is the steepest "
-               "slope of the sRGB encoder (at black), + 1 covers the roundings of S and P, "
-               "2^-17 / I the quantized intensity (correctly rounded: within half a Q16 LSB) times B < 1 / I.");
+    stab_table(
+        "The stiffest case: a light on black at the largest intensity",
+        "A 3x3 light (1.0 in RGB888, 255.99998 in RGBQ16) on black and the 24 lights on "
+        "the Hubble field, intensity 10.0 (linear I = 223.8), threshold 0.6, soft knee "
+        "0.5, every level the frame builds (N above the last row builds the same "
+        "pyramid). Notes: `dB` is the largest error of the bloom term B where the "
+        "output is below the top code, in units of 2^-F (bit-true against exact "
+        "pyramid of the model); `bound` is 1 + floor(3295 * ((I * dB + 1) * 2^-F + "
+        "2^-17 / I)): 3295 = 255 * 12.92 codes per unit of linear light is the steepest "
+        "slope of the sRGB encoder (at black), + 1 covers the roundings of S and P, "
+        "2^-17 / I the quantized intensity (correctly rounded: within half a Q16 LSB) times B < 1 / I.");
     static const struct {
         const char *input;
         int w, h;
@@ -387,10 +401,11 @@ void stab_stress(FILE *md)
         rin_free(&in);
     }
     rclose(f, tmp, path);
-    fprintf(md, "\nEvery row's peak is %s the bound computed from its own dB.\n\n"
-                "Worst case by construction (F = %d): dB <= 3.625 L + L(L-1)/4 + L + "
-                "2^(F-17)/I, and the output bound above with it:\n\n| L | dB worst case | "
-                "bound at intensity 1 | 3 | 5 | 10 |\n|---:|---:|---:|---:|---:|---:|\n",
+    fprintf(md,
+            "\nEvery row's peak is %s the bound computed from its own dB.\n\n"
+            "Worst case by construction (F = %d): dB <= 3.625 L + L(L-1)/4 + L + "
+            "2^(F-17)/I, and the output bound above with it:\n\n| L | dB worst case | "
+            "bound at intensity 1 | 3 | 5 | 10 |\n|---:|---:|---:|---:|---:|---:|\n",
             within ? "within" : "**not within**", BLOOM_LIN_BITS);
     const double is[4] = {1.0, 3.0, 5.0, 10.0};
     for (int L = 1; L <= BLOOM_MAX_LEVELS; L++) {

@@ -56,8 +56,8 @@ static uint8_t *reference(const opts_t *o, const rin_t *in, const bloom_config_t
 {
     char path[1024], tmp[1100];
     const size_t n = (size_t)in->w * (size_t)in->h * 3u;
-    snprintf(path, sizeof path, "%s/%s-%dx%d-L%d-t%u.u8", o->ref, in->name, in->w, in->h,
-             c->levels, (unsigned)c->threshold);
+    snprintf(path, sizeof path, "%s/%s-%dx%d-L%d-t%u.u8", o->ref, in->name, in->w, in->h, c->levels,
+             (unsigned)c->threshold);
     uint8_t *ref = rxmalloc(n);
     FILE *f = fopen(path, "rb");
     if (f) {
@@ -78,17 +78,17 @@ static uint8_t *reference(const opts_t *o, const rin_t *in, const bloom_config_t
     return ref;
 }
 
-static void csv_row(FILE *f, int w, int h, int lv, const char *input, const char *fmt,
-                    const row_t *a)
+static void csv_row(FILE *f, int w, int h, int lv, const char *input, const char *fmt, const row_t *a)
 {
     char ps[32];
     /* the bias fields last: sweep.awk reads the columns by index */
-    fprintf(f, "%d,%d,%d,%d,%d,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%lld,%.6f,%.6f,%s,%.4f,%zu,"
-               "%.6f,%lld,%lld\n",
-            BLOOM_LIN_BITS, w, h, lv, a->built, input, fmt, a->runs, a->eng_ms, a->eng_cpu,
-            a->mc_ms, a->mc_cpu, a->x_wall, a->x_cpu, a->st.peak,
-            rstat_mean(&a->st), rstat_mse(&a->st), rpsnr_str(rstat_psnr(&a->st), ps, sizeof ps),
-            rstat_exact(&a->st), a->ws, rstat_signed_mean(&a->st), a->st.above, a->st.below);
+    fprintf(f,
+            "%d,%d,%d,%d,%d,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%lld,%.6f,%.6f,%s,%.4f,%zu,"
+            "%.6f,%lld,%lld\n",
+            BLOOM_LIN_BITS, w, h, lv, a->built, input, fmt, a->runs, a->eng_ms, a->eng_cpu, a->mc_ms,
+            a->mc_cpu, a->x_wall, a->x_cpu, a->st.peak, rstat_mean(&a->st), rstat_mse(&a->st),
+            rpsnr_str(rstat_psnr(&a->st), ps, sizeof ps), rstat_exact(&a->st), a->ws,
+            rstat_signed_mean(&a->st), a->st.above, a->st.below);
 }
 
 static void sweep_size(const opts_t *o, int w, int h, rring_t *ring, FILE *csv)

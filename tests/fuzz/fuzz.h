@@ -37,18 +37,18 @@ void fz_fail(const char *fmt, ...)
     __attribute__((format(printf, 1, 2), noreturn))
 #endif
     ;
-#define FZ_CHECK(cond)                                                                \
-    do {                                                                              \
-        if (!(cond))                                                                  \
-            fz_fail("%s:%d: check failed: %s", __FILE__, __LINE__, #cond);            \
+#define FZ_CHECK(cond)                                                                                       \
+    do {                                                                                                     \
+        if (!(cond))                                                                                         \
+            fz_fail("%s:%d: check failed: %s", __FILE__, __LINE__, #cond);                                   \
     } while (0)
 /* The same with a message: FZ_CHECKF(cond, "fmt", ...). */
-#define FZ_CHECKF(cond, ...)                                                          \
-    do {                                                                              \
-        if (!(cond)) {                                                                \
-            fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);  \
-            fz_fail(__VA_ARGS__);                                                     \
-        }                                                                             \
+#define FZ_CHECKF(cond, ...)                                                                                 \
+    do {                                                                                                     \
+        if (!(cond)) {                                                                                       \
+            fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);                         \
+            fz_fail(__VA_ARGS__);                                                                            \
+        }                                                                                                    \
     } while (0)
 
 /* Canaries: n bytes of a fixed pattern, poisoned for ASan (any access by

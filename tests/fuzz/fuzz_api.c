@@ -45,7 +45,10 @@ static void buf_new(buf_t *b, size_t row, size_t stride, int rows)
             fz_canary_set(b->p + (size_t)r * stride + row, stride - row);
 }
 
-static uint8_t *buf_row(const buf_t *b, int y) { return b->p + (size_t)y * b->stride; }
+static uint8_t *buf_row(const buf_t *b, int y)
+{
+    return b->p + (size_t)y * b->stride;
+}
 
 static void buf_check(const buf_t *b, const char *what, const char *after)
 {
@@ -103,8 +106,8 @@ static void check_all(const run_t *r)
 
 static void expect_row(const run_t *r, const uint8_t *got, int y)
 {
-    FZ_CHECKF(!memcmp(got, buf_row(&r->ref, y), r->dst.row), "output row %d (by %s) differs from the whole frame's",
-              y, r->op);
+    FZ_CHECKF(!memcmp(got, buf_row(&r->ref, y), r->dst.row),
+              "output row %d (by %s) differs from the whole frame's", y, r->op);
 }
 
 /* No output row is ready that the API did not give: output row y is ready
@@ -123,13 +126,19 @@ static void check_drained(const run_t *r)
 static uint32_t pick(fz_in_t *in, uint32_t def, uint32_t max)
 {
     switch (fz_u8(in) % 8) {
-    case 0: return 0;
-    case 1: return max;
-    case 2: return max + 1; /* just out of range */
+    case 0:
+        return 0;
+    case 1:
+        return max;
+    case 2:
+        return max + 1; /* just out of range */
     case 3:
-    case 4: return fz_u32(in) % (max + 1);
-    case 5: return fz_u32(in);
-    default: return def;
+    case 4:
+        return fz_u32(in) % (max + 1);
+    case 5:
+        return fz_u32(in);
+    default:
+        return def;
     }
 }
 
@@ -183,17 +192,39 @@ static int make_config(fz_in_t *in, bloom_config_t *c)
     for (unsigned n = 1 + fz_u8(in) % 4; n; n--) {
         const unsigned k = fz_u8(in) % 11;
         switch (k) {
-        case 0: c->threshold = pick(in, c->threshold, BLOOM_MAX_THRESHOLD); break;
-        case 1: c->soft_knee = pick(in, c->soft_knee, BLOOM_ONE); break;
-        case 2: c->intensity = pick(in, c->intensity, BLOOM_MAX_INTENSITY); break;
-        case 3: c->p.strength = pick(in, c->p.strength, 16u << 16); break;
-        case 4: c->p.passes = (int)(fz_u8(in) % 11) - 1; break;
-        case 5: c->p.attenuation = pick(in, c->p.attenuation, BLOOM_ONE); break;
-        case 6: c->p.max_reduction = pick(in, c->p.max_reduction, BLOOM_ONE); break;
-        case 7: c->p.tint[fz_u8(in) % 3] = pick(in, 0, BLOOM_ONE); break;
-        case 8: c->p.level_weight[fz_u8(in) % BLOOM_MAX_LEVELS] = pick(in, 0, BLOOM_ONE); break;
-        case 9: c->aux_fmt = (bloom_aux_format_t)(fz_u8(in) % 4); break;
-        default: c->preset = (bloom_preset_t)((int)(fz_u8(in) % 8) - 1); break;
+        case 0:
+            c->threshold = pick(in, c->threshold, BLOOM_MAX_THRESHOLD);
+            break;
+        case 1:
+            c->soft_knee = pick(in, c->soft_knee, BLOOM_ONE);
+            break;
+        case 2:
+            c->intensity = pick(in, c->intensity, BLOOM_MAX_INTENSITY);
+            break;
+        case 3:
+            c->p.strength = pick(in, c->p.strength, 16u << 16);
+            break;
+        case 4:
+            c->p.passes = (int)(fz_u8(in) % 11) - 1;
+            break;
+        case 5:
+            c->p.attenuation = pick(in, c->p.attenuation, BLOOM_ONE);
+            break;
+        case 6:
+            c->p.max_reduction = pick(in, c->p.max_reduction, BLOOM_ONE);
+            break;
+        case 7:
+            c->p.tint[fz_u8(in) % 3] = pick(in, 0, BLOOM_ONE);
+            break;
+        case 8:
+            c->p.level_weight[fz_u8(in) % BLOOM_MAX_LEVELS] = pick(in, 0, BLOOM_ONE);
+            break;
+        case 9:
+            c->aux_fmt = (bloom_aux_format_t)(fz_u8(in) % 4);
+            break;
+        default:
+            c->preset = (bloom_preset_t)((int)(fz_u8(in) % 8) - 1);
+            break;
         }
     }
     return 0;
@@ -253,7 +284,8 @@ static void check_pure(fz_in_t *in)
     const int any = (int)fz_u32(in);
     const int known = any >= 0 && any < BLOOM_PRESET_COUNT;
     FZ_CHECK(!bloom_preset_name((bloom_preset_t)any) == !known);
-    FZ_CHECK(known || (bloom_preset_params((bloom_preset_t)any) == 0 && !bloom_preset_available((bloom_preset_t)any)));
+    FZ_CHECK(known ||
+             (bloom_preset_params((bloom_preset_t)any) == 0 && !bloom_preset_available((bloom_preset_t)any)));
     const int lv = bloom_levels_for_radius(any);
     FZ_CHECK(lv >= 1 && lv <= BLOOM_MAX_LEVELS);
     FZ_CHECK(bloom_status_str((bloom_status_t)any) != NULL);
@@ -273,10 +305,17 @@ static void fill(uint8_t *p, size_t n, int bpp12, unsigned pattern)
     for (size_t i = 0; i < n; i++) {
         const uint32_t v = rng();
         switch (pattern % 4) {
-        case 0: p[i] = (uint8_t)v; break;                        /* noise */
-        case 1: p[i] = (v & 63) == 0 ? 0xFF : (uint8_t)(v & 7);  /* dark, a few lights */
-        case 2: p[i] = 0xFF; break;                              /* all at the top */
-        default: p[i] = (uint8_t)(i * 7); break;                 /* ramps */
+        case 0:
+            p[i] = (uint8_t)v;
+            break; /* noise */
+        case 1:
+            p[i] = (v & 63) == 0 ? 0xFF : (uint8_t)(v & 7); /* dark, a few lights */
+        case 2:
+            p[i] = 0xFF;
+            break; /* all at the top */
+        default:
+            p[i] = (uint8_t)(i * 7);
+            break; /* ramps */
         }
     }
     if (bpp12 && pattern % 4 == 2) /* Q16.16 words: keep some above 2^24 and some at 1.0 */
@@ -301,7 +340,8 @@ static void make_reference(run_t *r, uint32_t flip)
     if (r->aux_bpp)
         FZ_CHECK(bloom_set_aux(b, r->aux.p, (ptrdiff_t)r->aux.stride) == BLOOM_OK);
     buf_new(&r->ref, r->dst.row, r->dst.stride, r->h);
-    const bloom_status_t st = bloom_process(b, r->src.p, (ptrdiff_t)r->src.stride, r->ref.p, (ptrdiff_t)r->ref.stride);
+    const bloom_status_t st =
+        bloom_process(b, r->src.p, (ptrdiff_t)r->src.stride, r->ref.p, (ptrdiff_t)r->ref.stride);
     FZ_CHECKF(st == BLOOM_OK, "whole frame: %s", bloom_status_str(st));
     FZ_CHECK(bloom_rows_in(b) == r->h && bloom_rows_out(b) == r->h);
     free(ws);
@@ -352,8 +392,9 @@ static void check_alias(const run_t *r, unsigned pick)
      * same rows in another format */
     const int same = r->c.in_fmt == r->c.out_fmt, n = same ? 2 : 1, shift = same ? 1 : 0;
     if (r->in + n <= r->h) {
-        const bloom_status_t st = bloom_run_rows(r->b, r->src.p, (ptrdiff_t)r->src.stride, n,
-                                                 r->src.p + (size_t)shift * r->src.stride, (ptrdiff_t)r->src.stride);
+        const bloom_status_t st =
+            bloom_run_rows(r->b, r->src.p, (ptrdiff_t)r->src.stride, n,
+                           r->src.p + (size_t)shift * r->src.stride, (ptrdiff_t)r->src.stride);
         FZ_CHECKF(st == BLOOM_E_ALIAS, "a band written over its source (%d rows down): %s", shift,
                   bloom_status_str(st));
     }
@@ -421,10 +462,11 @@ static void push(run_t *r, int misuse, int priv)
 static void band(run_t *r, int n, buf_t *dst)
 {
     const int out0 = r->out;
-    const bloom_status_t st = bloom_run_rows(r->b, r->src.p, (ptrdiff_t)r->src.stride, n, dst->p,
-                                             (ptrdiff_t)dst->stride);
+    const bloom_status_t st =
+        bloom_run_rows(r->b, r->src.p, (ptrdiff_t)r->src.stride, n, dst->p, (ptrdiff_t)dst->stride);
     if (n < 0 || r->in + n > r->h) {
-        FZ_CHECKF(st == BLOOM_E_STATE, "a band of %d rows after %d of %d: %s", n, r->in, r->h, bloom_status_str(st));
+        FZ_CHECKF(st == BLOOM_E_STATE, "a band of %d rows after %d of %d: %s", n, r->in, r->h,
+                  bloom_status_str(st));
         return;
     }
     if (r->aux_bpp && !r->aux_set) {
@@ -521,7 +563,7 @@ static void run_frames(run_t *r, fz_in_t *in)
             r->op = "NULL handles";
             check_nulls(r);
             break;
-        default: /* 11 and 13 */
+        default:             /* 11 and 13 */
             if (op & 0x10) { /* bloom_init over the running engine: a fresh start */
                 r->op = "bloom_init again";
                 FZ_CHECK(bloom_init(&r->b, r->ws.p, r->info.workspace_bytes, &r->c) == BLOOM_OK);
@@ -530,7 +572,8 @@ static void run_frames(run_t *r, fz_in_t *in)
             }
             if (r->aux_bpp && !r->aux_set) { /* a whole frame without the plane: refused */
                 r->op = "bloom_process without bloom_set_aux";
-                st = bloom_process(r->b, r->src.p, (ptrdiff_t)r->src.stride, r->dst.p, (ptrdiff_t)r->dst.stride);
+                st = bloom_process(r->b, r->src.p, (ptrdiff_t)r->src.stride, r->dst.p,
+                                   (ptrdiff_t)r->dst.stride);
                 FZ_CHECKF(st == BLOOM_E_AUX, "%s", bloom_status_str(st));
                 r->in = r->out = 0;
                 break;

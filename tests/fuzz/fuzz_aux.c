@@ -14,8 +14,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     /* IHDR is the first chunk: a large plane the engine takes is skipped */
     if (size >= 24 && !memcmp(data + 12, "IHDR", 4)) {
-        const uint32_t w = (uint32_t)data[16] << 24 | (uint32_t)data[17] << 16 | (uint32_t)data[18] << 8 | data[19];
-        const uint32_t h = (uint32_t)data[20] << 24 | (uint32_t)data[21] << 16 | (uint32_t)data[22] << 8 | data[23];
+        const uint32_t w =
+            (uint32_t)data[16] << 24 | (uint32_t)data[17] << 16 | (uint32_t)data[18] << 8 | data[19];
+        const uint32_t h =
+            (uint32_t)data[20] << 24 | (uint32_t)data[21] << 16 | (uint32_t)data[22] << 8 | data[23];
         if (w <= BLOOM_MAX_DIM && h <= BLOOM_MAX_DIM && (uint64_t)w * h > FZ_MAX_PIXELS)
             return 0;
     }
@@ -53,7 +55,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* a binary PGM the simulator takes, the camera takes too, the same codes */
     if (ra == 0 && size >= 2 && data[0] == 'P' && data[1] == '5') {
         FZ_CHECKF(rc == 0, "the simulator reads it, bloom_cam does not: %s", err);
-        FZ_CHECK(fmt == a.fmt && !memcmp(plane, a.data, (size_t)w * (size_t)h * (fmt == BLOOM_AUX_U16 ? 2u : 1u)));
+        FZ_CHECK(fmt == a.fmt &&
+                 !memcmp(plane, a.data, (size_t)w * (size_t)h * (fmt == BLOOM_AUX_U16 ? 2u : 1u)));
     }
     free(plane);
     plane = NULL;

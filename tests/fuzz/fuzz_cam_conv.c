@@ -83,9 +83,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_in_t in = {data, size};
     while (in.n) {
         switch (fz_u8(&in) % 3) {
-        case 0: rows(&in); break;
-        case 1: layout(&in); break;
-        default: place(&in); break;
+        case 0:
+            rows(&in);
+            break;
+        case 1:
+            layout(&in);
+            break;
+        default:
+            place(&in);
+            break;
         }
     }
     /* one pixel at a time too: every (Y, Cb, Cr) the input names */

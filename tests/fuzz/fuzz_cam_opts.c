@@ -41,7 +41,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_CHECK(o.format == CAM_FMT_YUYV || o.format == CAM_FMT_RGB24 || o.format == CAM_FMT_GREY);
         FZ_CHECK(o.format != CAM_FMT_YUYV || o.width % 2 == 0);
         FZ_CHECK(o.levels >= 1 && o.levels <= BLOOM_MAX_LEVELS);
-        FZ_CHECK(o.threshold <= BLOOM_MAX_THRESHOLD && o.knee <= BLOOM_ONE && o.intensity <= BLOOM_MAX_INTENSITY);
+        FZ_CHECK(o.threshold <= BLOOM_MAX_THRESHOLD && o.knee <= BLOOM_ONE &&
+                 o.intensity <= BLOOM_MAX_INTENSITY);
         FZ_CHECK(o.buffers >= 2 && o.buffers <= CAM_MAX_BUFFERS && o.timeout_ms >= 1);
         FZ_CHECK((unsigned)o.mode < CAM_MODE_COUNT && o.frames >= 0);
         FZ_CHECK(bloom_preset_available(o.preset));

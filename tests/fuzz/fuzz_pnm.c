@@ -11,8 +11,7 @@
 /* What a successful read must hold. */
 static void check_img(const img_t *im)
 {
-    FZ_CHECK(im->width >= 1 && im->width <= BLOOM_MAX_DIM && im->height >= 1 &&
-             im->height <= BLOOM_MAX_DIM);
+    FZ_CHECK(im->width >= 1 && im->width <= BLOOM_MAX_DIM && im->height >= 1 && im->height <= BLOOM_MAX_DIM);
     FZ_CHECK(im->channels == 1 || im->channels == 3);
     FZ_CHECK(!im->u16 != !im->f32);
     const size_t n = (size_t)im->width * (size_t)im->height * (size_t)im->channels;

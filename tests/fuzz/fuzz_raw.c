@@ -3,33 +3,9 @@
  * input's first 7 bytes, the rest being the dump, on a regular file and on
  * a pipe: the same frames either way, an error naming the frame. */
 #include "fuzz.h"
-#include "sim.h"
+#include "fuzz_img_common.h"
 
 #include <string.h>
-
-#define MAX_FRAMES 64
-
-static long read_all(sim_source_t *s, uint64_t *sum)
-{
-    char err[SIM_ERRLEN];
-    sim_frame_t f;
-    memset(&f, 0, sizeof f);
-    long n = 0;
-    int r;
-    while (n < MAX_FRAMES && (r = sim_source_read(s, &f, err, sizeof err)) == 1) {
-        for (size_t i = 0; i < (size_t)f.w * (size_t)f.h * 3u; i++) {
-            FZ_CHECK(f.px[i] <= (uint32_t)f.max[i % 3]);
-            *sum = *sum * 31u + f.px[i];
-        }
-        n++;
-    }
-    if (n < MAX_FRAMES && r < 0) {
-        FZ_CHECKF(strstr(err, ": frame ") != NULL, "%s", err);
-        n = -1;
-    }
-    sim_frame_free(&f);
-    return n;
-}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -56,18 +32,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     long nf = -2, np = -2;
     if (sim_source_open(&s, fz_file(in.p, in.n), &o, err, sizeof err) == 0) {
         const long frames = sim_source_frames(s);
-        nf = read_all(s, &sum_file);
-        if (frames <= MAX_FRAMES)
+        nf = fz_read_frames(s, &sum_file);
+        if (frames <= FZ_MAX_FRAMES)
             FZ_CHECKF(nf == frames, "%ld of %ld frames", nf, frames);
         sim_source_close(s);
     } else {
         FZ_CHECK(strstr(err, ": frame ") != NULL);
     }
     if (sim_source_open(&s, fz_pipe(in.p, in.n), &o, err, sizeof err) == 0) {
-        np = read_all(s, &sum_pipe);
+        np = fz_read_frames(s, &sum_pipe);
         sim_source_close(s);
     }
-    if (nf >= 0 && nf < MAX_FRAMES)
+    if (nf >= 0 && nf < FZ_MAX_FRAMES)
         FZ_CHECKF(np == nf && sum_pipe == sum_file, "pipe %ld frames, file %ld", np, nf);
     return 0;
 }

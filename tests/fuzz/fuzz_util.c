@@ -70,7 +70,8 @@ FILE *fz_mem_stream(const uint8_t *data, size_t size)
 {
     /* fmemopen refuses a zero size: an empty stream is a one-byte buffer read past */
     static const uint8_t none[1];
-    FILE *f = size ? fmemopen((void *)(uintptr_t)data, size, "rb") : fmemopen((void *)(uintptr_t)none, 1, "rb");
+    FILE *f =
+        size ? fmemopen((void *)(uintptr_t)data, size, "rb") : fmemopen((void *)(uintptr_t)none, 1, "rb");
     if (!f)
         fz_fail("fmemopen failed");
     if (!size)

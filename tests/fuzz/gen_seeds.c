@@ -87,7 +87,8 @@ static uint32_t crc32_of(const uint8_t *p, size_t n)
 }
 
 /* A copy of a PNG with its IHDR size (and interlace flag) replaced, CRC mended. */
-static void png_resized(const uint8_t *png, size_t len, uint32_t w, uint32_t h, int interlace, const char *name)
+static void png_resized(const uint8_t *png, size_t len, uint32_t w, uint32_t h, int interlace,
+                        const char *name)
 {
     uint8_t *b = malloc(len);
     memcpy(b, png, len);
@@ -104,8 +105,8 @@ static void png_resized(const uint8_t *png, size_t len, uint32_t w, uint32_t h, 
 
 #define W 16
 #define H 12
-static uint8_t pic[W * H * 3];  /* 8-bit codes around the brightest spot of rocket_floodlights */
-static float hdr[W * H * 3];    /* linear floats around the brightest spot of studio_lamps */
+static uint8_t pic[W * H * 3]; /* 8-bit codes around the brightest spot of rocket_floodlights */
+static float hdr[W * H * 3];   /* linear floats around the brightest spot of studio_lamps */
 
 static void cut_pictures(const char *data)
 {
@@ -126,7 +127,8 @@ static void cut_pictures(const char *data)
     y0 = y0 < 0 ? 0 : y0 > im.height - H ? im.height - H : y0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W * 3; x++)
-            pic[y * W * 3 + x] = (uint8_t)im.u16[((size_t)(y0 + y) * (size_t)im.width + (size_t)x0) * 3 + (size_t)x];
+            pic[y * W * 3 + x] =
+                (uint8_t)im.u16[((size_t)(y0 + y) * (size_t)im.width + (size_t)x0) * 3 + (size_t)x];
     img_free(&im);
     snprintf(p, sizeof p, "%s/studio_lamps.pfm", data);
     if (img_read(p, &im, err, sizeof err) || !im.f32) {
@@ -233,9 +235,12 @@ static void seeds_png(void)
     static const struct {
         int color, depth, interlace;
         const char *name;
-    } v[] = {{PNG_COLOR_TYPE_GRAY, 1, 0, "gen-grey1.png"},       {PNG_COLOR_TYPE_GRAY, 16, 0, "gen-grey16.png"},
-             {PNG_COLOR_TYPE_PALETTE, 4, 0, "gen-palette4-trns.png"}, {PNG_COLOR_TYPE_RGBA, 16, 0, "gen-rgba16.png"},
-             {PNG_COLOR_TYPE_GRAY_ALPHA, 8, 0, "gen-greyalpha8.png"},  {PNG_COLOR_TYPE_RGB, 8, 1, "gen-interlaced.png"}};
+    } v[] = {{PNG_COLOR_TYPE_GRAY, 1, 0, "gen-grey1.png"},
+             {PNG_COLOR_TYPE_GRAY, 16, 0, "gen-grey16.png"},
+             {PNG_COLOR_TYPE_PALETTE, 4, 0, "gen-palette4-trns.png"},
+             {PNG_COLOR_TYPE_RGBA, 16, 0, "gen-rgba16.png"},
+             {PNG_COLOR_TYPE_GRAY_ALPHA, 8, 0, "gen-greyalpha8.png"},
+             {PNG_COLOR_TYPE_RGB, 8, 1, "gen-interlaced.png"}};
     for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
         if (gs_png(t, pic, W, H, v[i].color, v[i].depth, v[i].interlace) == 0)
             free(adopt(t, "png", v[i].name, NULL, &len));
@@ -276,8 +281,11 @@ static void seeds_jpeg(void)
     static const struct {
         int grey, prog, arith, sub, restart;
         const char *name;
-    } v[] = {{0, 0, 0, 0, 0, "gen-444.jpg"}, {1, 0, 0, 0, 0, "gen-grey.jpg"}, {0, 0, 1, 1, 0, "gen-arith.jpg"},
-             {0, 1, 1, 0, 0, "gen-progressive-arith.jpg"}, {0, 0, 0, 1, 1, "gen-restart.jpg"}};
+    } v[] = {{0, 0, 0, 0, 0, "gen-444.jpg"},
+             {1, 0, 0, 0, 0, "gen-grey.jpg"},
+             {0, 0, 1, 1, 0, "gen-arith.jpg"},
+             {0, 1, 1, 0, 0, "gen-progressive-arith.jpg"},
+             {0, 0, 0, 1, 1, "gen-restart.jpg"}};
     for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
         if (gs_jpeg(t, pic, W, H, v[i].grey, v[i].prog, v[i].arith, v[i].sub, v[i].restart) == 0)
             free(adopt(t, "jpeg", v[i].name, NULL, &len));
@@ -306,8 +314,9 @@ static void seeds_exr(void)
     static const struct {
         int nch, half, comp, tile;
         const char *name;
-    } v[] = {{3, 0, 0, 0, "gen-float-none.exr"}, {3, 1, 3, 0, "gen-half-zip.exr"}, {3, 1, 1, 0, "gen-half-rle.exr"},
-             {3, 1, 4, 0, "gen-half-piz.exr"},   {1, 1, 2, 0, "gen-y-zips.exr"},    {4, 1, 5, 0, "gen-rgba-pxr24.exr"},
+    } v[] = {{3, 0, 0, 0, "gen-float-none.exr"}, {3, 1, 3, 0, "gen-half-zip.exr"},
+             {3, 1, 1, 0, "gen-half-rle.exr"},   {3, 1, 4, 0, "gen-half-piz.exr"},
+             {1, 1, 2, 0, "gen-y-zips.exr"},     {4, 1, 5, 0, "gen-rgba-pxr24.exr"},
              {3, 1, 6, 0, "gen-half-b44.exr"},   {3, 0, 0, 4, "gen-tiled.exr"}};
     for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
         if (gs_exr(t, hdr, W, H, v[i].nch, v[i].half, v[i].comp, v[i].tile) == 0) {
@@ -322,7 +331,8 @@ static void seeds_exr(void)
 
 /* ---- Y4M and raw dumps ---------------------------------------------------------------- */
 
-static void y4m(const char *name, const char *header, size_t frame, int frames, size_t cut, const char *frame_hdr)
+static void y4m(const char *name, const char *header, size_t frame, int frames, size_t cut,
+                const char *frame_hdr)
 {
     size_t hl = strlen(header), fl = strlen(frame_hdr);
     uint8_t *b = malloc(hl + (size_t)frames * (fl + frame));
@@ -340,9 +350,11 @@ static void y4m(const char *name, const char *header, size_t frame, int frames, 
 
 static void seeds_video(void)
 {
-    y4m("gen-420jpeg-2frames.y4m", "YUV4MPEG2 W16 H12 F30000:1001 Ip A1:1 C420jpeg\n", 16 * 12 + 2 * 8 * 6, 2, 0, "FRAME\n");
+    y4m("gen-420jpeg-2frames.y4m", "YUV4MPEG2 W16 H12 F30000:1001 Ip A1:1 C420jpeg\n", 16 * 12 + 2 * 8 * 6, 2,
+        0, "FRAME\n");
     y4m("gen-cut.y4m", "YUV4MPEG2 W16 H12 F25:1 C420jpeg\n", 16 * 12 + 2 * 8 * 6, 2, 50, "FRAME\n");
-    y4m("gen-420paldv-odd.y4m", "YUV4MPEG2 W7 H5 C420paldv XCOLORRANGE=FULL\n", 35 + 2 * 4 * 3, 1, 0, "FRAME Ixyz\n");
+    y4m("gen-420paldv-odd.y4m", "YUV4MPEG2 W7 H5 C420paldv XCOLORRANGE=FULL\n", 35 + 2 * 4 * 3, 1, 0,
+        "FRAME Ixyz\n");
     y4m("gen-422.y4m", "YUV4MPEG2 W8 H4 C422 XCOLORRANGE=LIMITED\n", 32 + 2 * 4 * 4, 1, 0, "FRAME\n");
     y4m("gen-444.y4m", "YUV4MPEG2 W6 H4 C444\n", 3 * 24, 1, 0, "FRAME\n");
     y4m("gen-mono.y4m", "YUV4MPEG2 W9 H3 Cmono\n", 27, 3, 0, "FRAME\n");

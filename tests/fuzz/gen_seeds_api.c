@@ -12,11 +12,15 @@ typedef struct {
     size_t n;
 } seed_t;
 
-static void add(seed_t *s, unsigned v) { s->b[s->n++] = (uint8_t)v; }
+static void add(seed_t *s, unsigned v)
+{
+    s->b[s->n++] = (uint8_t)v;
+}
 
 /* check_pure's bytes, the configuration (a preset's defaults), the frame
  * set-up; ops follow. fmt: 0 RGB888, 1 XRGB8888, 2 RGB565, 3 RGBQ16. */
-static void head(seed_t *s, int preset, int w, int h, int fin, int fout, int levels, unsigned flags, unsigned gaps)
+static void head(seed_t *s, int preset, int w, int h, int fin, int fout, int levels, unsigned flags,
+                 unsigned gaps)
 {
     s->n = 0;
     add(s, 0); /* no name */
@@ -29,7 +33,10 @@ static void head(seed_t *s, int preset, int w, int h, int fin, int fout, int lev
     add(s, (unsigned)preset % 4), add(s, 0xC3);
 }
 
-static void put_seed(const seed_t *s, const char *name) { gs_put("api", name, s->b, s->n); }
+static void put_seed(const seed_t *s, const char *name)
+{
+    gs_put("api", name, s->b, s->n);
+}
 
 void gs_seeds_api(void)
 {
@@ -42,7 +49,7 @@ void gs_seeds_api(void)
         head(&s, p, w, h, p % 4, (p + 1) % 4, 3 + p % 3, 0, 0);
         if (p == 3 || p == 4)
             add(&s, 9); /* bloom_set_aux */
-        add(&s, 4); /* pull before any push */
+        add(&s, 4);     /* pull before any push */
         for (int y = 0; y < h && s.n < sizeof s.b - 4; y++)
             add(&s, 1), add(&s, 7);
         add(&s, 7), add(&s, 4), add(&s, 1);
@@ -69,22 +76,81 @@ void gs_seeds_api(void)
     put_seed(&s, "gen-cod-one-row-debug-linear.bin");
 
     /* bloom_cam's command lines: arguments NUL-separated */
-#define ARGS(x) {x, sizeof x - 1}
+#define ARGS(x)                                                                                              \
+    {                                                                                                        \
+        x, sizeof x - 1                                                                                      \
+    }
     static const struct {
         const char *s;
         size_t n;
     } argv[] = {
-        ARGS("--size\0" "320x240\0" "--format\0" "grey\0" "--threshold=0.8\0" "--stats"),
-        ARGS("--preset\0" "cod\0" "--radius\0" "40\0" "--tint\0" "1,0.5,0.25\0" "--weights=0.1,0.2,0.3"),
-        ARGS("--preset=attenuation\0" "--aux\0" "d.pgm\0" "--attenuation\0" "0.7\0" "--max-reduction\0" "0.2"),
-        ARGS("--preset\0" "arm\0" "--baked\0" "--aux\0" "m.pgm\0" "--strength\0" "4"),
-        ARGS("--preset\0" "xna\0" "--passes\0" "3\0" "--saturate\0" "--mode\0" "bloom-only"),
-        ARGS("--preset\0" "gamedev\0" "--strength\0" "2.5\0" "--levels\0" "3\0" "--knee\0" "0"),
-        ARGS("--device\0" "/dev/video1\0" "--fb\0" "none\0" "--buffers\0" "16\0" "--timeout\0" "5\0" "--frames\0" "9"),
-        ARGS("--gpio-frame\0" "gpiochip0:17\0" "--gpio-button\0" "gpiochip0:27\0" "-q"),
-        ARGS("--size\0" "641x480"),
-        ARGS("--preset\0" "cod\0" "--radius\0" "40\0" "--levels\0" "3"),
-        ARGS("--passes\0" "2"),
+        ARGS("--size\0"
+             "320x240\0"
+             "--format\0"
+             "grey\0"
+             "--threshold=0.8\0"
+             "--stats"),
+        ARGS("--preset\0"
+             "cod\0"
+             "--radius\0"
+             "40\0"
+             "--tint\0"
+             "1,0.5,0.25\0"
+             "--weights=0.1,0.2,0.3"),
+        ARGS("--preset=attenuation\0"
+             "--aux\0"
+             "d.pgm\0"
+             "--attenuation\0"
+             "0.7\0"
+             "--max-reduction\0"
+             "0.2"),
+        ARGS("--preset\0"
+             "arm\0"
+             "--baked\0"
+             "--aux\0"
+             "m.pgm\0"
+             "--strength\0"
+             "4"),
+        ARGS("--preset\0"
+             "xna\0"
+             "--passes\0"
+             "3\0"
+             "--saturate\0"
+             "--mode\0"
+             "bloom-only"),
+        ARGS("--preset\0"
+             "gamedev\0"
+             "--strength\0"
+             "2.5\0"
+             "--levels\0"
+             "3\0"
+             "--knee\0"
+             "0"),
+        ARGS("--device\0"
+             "/dev/video1\0"
+             "--fb\0"
+             "none\0"
+             "--buffers\0"
+             "16\0"
+             "--timeout\0"
+             "5\0"
+             "--frames\0"
+             "9"),
+        ARGS("--gpio-frame\0"
+             "gpiochip0:17\0"
+             "--gpio-button\0"
+             "gpiochip0:27\0"
+             "-q"),
+        ARGS("--size\0"
+             "641x480"),
+        ARGS("--preset\0"
+             "cod\0"
+             "--radius\0"
+             "40\0"
+             "--levels\0"
+             "3"),
+        ARGS("--passes\0"
+             "2"),
     };
     for (size_t i = 0; i < sizeof argv / sizeof argv[0]; i++) {
         snprintf(name, sizeof name, "gen-args-%zu.bin", i);
@@ -93,10 +159,10 @@ void gs_seeds_api(void)
     uint8_t conv[96];
     for (size_t i = 0; i < sizeof conv; i++)
         conv[i] = (uint8_t)(i * 37 + 11);
-    conv[0] = 0, conv[1] = 7;   /* rows, 16 pixels */
+    conv[0] = 0, conv[1] = 7; /* rows, 16 pixels */
     gs_put("cam_conv", "gen-rows.bin", conv, sizeof conv);
-    conv[0] = 1, conv[1] = 2;   /* a layout: 16 bpp */
+    conv[0] = 1, conv[1] = 2; /* a layout: 16 bpp */
     gs_put("cam_conv", "gen-layout.bin", conv, 12);
-    conv[0] = 2;                /* placement */
+    conv[0] = 2; /* placement */
     gs_put("cam_conv", "gen-place.bin", conv, 9);
 }

@@ -47,8 +47,10 @@ int gs_png(const char *path, const uint8_t *rgb, int w, int h, int color, int de
     if (depth < 8)
         png_set_packing(png);
     const int passes = interlace ? png_set_interlace_handling(png) : 1;
-    const int ch = color == PNG_COLOR_TYPE_RGB ? 3 : color == PNG_COLOR_TYPE_RGBA ? 4
-                 : color == PNG_COLOR_TYPE_GRAY_ALPHA ? 2 : 1;
+    const int ch = color == PNG_COLOR_TYPE_RGB          ? 3
+                   : color == PNG_COLOR_TYPE_RGBA       ? 4
+                   : color == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                                                        : 1;
     const unsigned top = depth == 16 ? 65535u : (1u << depth) - 1u;
     for (int p = 0; p < passes; p++)
         for (int y = 0; y < h; y++) {
@@ -137,7 +139,8 @@ static void exr_point(exr_encode_pipeline_t *enc, const float *rgb, int w, int p
         ch->user_bytes_per_element = 4;
         ch->user_pixel_stride = 12;
         ch->user_line_stride = 12 * w;
-        ch->encode_from_ptr = (const uint8_t *)(rgb + ((size_t)py * (size_t)w + (size_t)px) * 3u + (size_t)slot);
+        ch->encode_from_ptr =
+            (const uint8_t *)(rgb + ((size_t)py * (size_t)w + (size_t)px) * 3u + (size_t)slot);
     }
 }
 
@@ -158,8 +161,8 @@ int gs_exr(const char *path, const float *rgb, int w, int h, int nch, int half, 
         goto out;
     static const char *const names[4] = {"A", "B", "G", "R"};
     for (int c = 0; c < (nch == 1 ? 1 : nch); c++)
-        if (exr_add_channel(ctx, part, nch == 1 ? "Y" : names[4 - nch + c], half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT,
-                            EXR_PERCEPTUALLY_LINEAR, 1, 1))
+        if (exr_add_channel(ctx, part, nch == 1 ? "Y" : names[4 - nch + c],
+                            half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1))
             goto out;
     if (exr_write_header(ctx))
         goto out;
@@ -169,10 +172,12 @@ int gs_exr(const char *path, const float *rgb, int w, int h, int nch, int half, 
             goto out;
         for (int y = 0; y < h; y += lines) {
             if (exr_write_scanline_chunk_info(ctx, part, y, &ci) ||
-                (started ? exr_encoding_update(ctx, part, &ci, &enc) : exr_encoding_initialize(ctx, part, &ci, &enc)))
+                (started ? exr_encoding_update(ctx, part, &ci, &enc)
+                         : exr_encoding_initialize(ctx, part, &ci, &enc)))
                 goto out;
             exr_point(&enc, rgb, w, 0, y);
-            if ((!started && exr_encoding_choose_default_routines(ctx, part, &enc)) || exr_encoding_run(ctx, part, &enc))
+            if ((!started && exr_encoding_choose_default_routines(ctx, part, &enc)) ||
+                exr_encoding_run(ctx, part, &enc))
                 goto out;
             started = 1;
         }
@@ -180,7 +185,8 @@ int gs_exr(const char *path, const float *rgb, int w, int h, int nch, int half, 
         for (int ty = 0; ty * tile < h; ty++)
             for (int tx = 0; tx * tile < w; tx++) {
                 if (exr_write_tile_chunk_info(ctx, part, tx, ty, 0, 0, &ci) ||
-                    (started ? exr_encoding_update(ctx, part, &ci, &enc) : exr_encoding_initialize(ctx, part, &ci, &enc)))
+                    (started ? exr_encoding_update(ctx, part, &ci, &enc)
+                             : exr_encoding_initialize(ctx, part, &ci, &enc)))
                     goto out;
                 exr_point(&enc, rgb, w, tx * tile, ty * tile);
                 if ((!started && exr_encoding_choose_default_routines(ctx, part, &enc)) ||

@@ -98,15 +98,16 @@ static void test_bitexact_ppm(void)
     CHECK(write_ppm8(st_path("in.ppm"), px, w, h, 3) == 0);
     bloom_config_t c = cfg(w, h);
     CHECKF(RUN(NULL, st_path("in.ppm"), "-o", st_path("out.ppm")) == 0, "%s", R.err);
-    CHECKF(output_matches_engine(st_path("out.ppm"), &c, px), "%s: PPM output differs from bloom_process", tool);
+    CHECKF(output_matches_engine(st_path("out.ppm"), &c, px), "%s: PPM output differs from bloom_process",
+           tool);
     CHECKF(R.err[0] == '\0', "stderr not quiet: %s", R.err); /* not a terminal: no progress */
 
     c.levels = 3;
     c.threshold = BLOOM_Q16(0.4);
     c.soft_knee = BLOOM_Q16(0.25);
     c.intensity = BLOOM_Q16(2.5);
-    CHECK(RUN(NULL, st_path("in.ppm"), "-o", st_path("out.png"), "--levels", "3", "--threshold",
-              "0.4", "--knee=0.25", "--intensity", "2.5") == 0);
+    CHECK(RUN(NULL, st_path("in.ppm"), "-o", st_path("out.png"), "--levels", "3", "--threshold", "0.4",
+              "--knee=0.25", "--intensity", "2.5") == 0);
     CHECKF(output_matches_engine(st_path("out.png"), &c, px), "%s: PNG output differs", tool);
 
     c = cfg(w, h);
@@ -125,8 +126,7 @@ static void test_bitexact_ppm(void)
     c.in_fmt = c.out_fmt = BLOOM_FMT_XRGB8888;
     uint8_t x[37 * 29 * 4], p565[37 * 29 * 2];
     for (int i = 0; i < w * h; i++) {
-        x[4 * i] = px[3 * i + 2], x[4 * i + 1] = px[3 * i + 1], x[4 * i + 2] = px[3 * i],
-        x[4 * i + 3] = 0xFF;
+        x[4 * i] = px[3 * i + 2], x[4 * i + 1] = px[3 * i + 1], x[4 * i + 2] = px[3 * i], x[4 * i + 3] = 0xFF;
         unsigned r5 = (px[3 * i] * 31u + 127u) / 255u, g6 = (px[3 * i + 1] * 63u + 127u) / 255u,
                  b5 = (px[3 * i + 2] * 31u + 127u) / 255u, wd = r5 << 11 | g6 << 5 | b5;
         p565[2 * i] = (uint8_t)wd, p565[2 * i + 1] = (uint8_t)(wd >> 8);
@@ -150,7 +150,8 @@ static void test_bitexact_raw(void)
         make_scene(px[f], w, h, 10u + (uint32_t)f);
     CHECK(st_write_file(st_path("in.rgb"), px, sizeof px) == 0);
     CHECKF(RUN(NULL, st_path("in.rgb"), "--raw-size", "20x12", "--raw-format", "rgb24", "-o",
-               st_path("raw_%02d.ppm")) == 0, "%s", R.err);
+               st_path("raw_%02d.ppm")) == 0,
+           "%s", R.err);
     bloom_config_t c = cfg(w, h);
     char name[32];
     for (int f = 0; f < nf; f++) {
@@ -164,8 +165,8 @@ static void test_bitexact_raw(void)
     CHECK(output_matches_engine(st_path("pipe_2.png"), &c, px[2]));
     /* --frames */
     remove(st_path("raw_02.ppm"));
-    CHECK(RUN(NULL, st_path("in.rgb"), "--raw-size", "20x12", "--raw-format", "rgb24", "--frames",
-              "2", "-o", st_path("raw_%02d.ppm")) == 0);
+    CHECK(RUN(NULL, st_path("in.rgb"), "--raw-size", "20x12", "--raw-format", "rgb24", "--frames", "2", "-o",
+              st_path("raw_%02d.ppm")) == 0);
     int w2, h2;
     uint8_t *p = st_read_rgb8(st_path("raw_02.ppm"), &w2, &h2);
     CHECK(p == NULL);
@@ -191,8 +192,8 @@ static void test_raw_formats(void)
               st_path("r565_%d.ppm")) == 0);
     CHECK(output_matches_engine(st_path("r565_1.ppm"), &c, p565[1]));
     c.out_fmt = BLOOM_FMT_RGB565;
-    CHECK(RUN(NULL, st_path("in.565"), "--raw-size", "16x10", "--raw-format", "RGBP",
-              "--out-format", "rgb565", "-o", st_path("r565_%d.png")) == 0);
+    CHECK(RUN(NULL, st_path("in.565"), "--raw-size", "16x10", "--raw-format", "RGBP", "--out-format",
+              "rgb565", "-o", st_path("r565_%d.png")) == 0);
     CHECK(output_matches_engine(st_path("r565_0.png"), &c, p565[0]));
 
     /* GREY: Y replicated to R, G, B (full range) */
@@ -218,8 +219,8 @@ static void test_raw_formats(void)
             q[0] = q[2] = (uint8_t)k[0], q[1] = (uint8_t)k[1], q[3] = (uint8_t)k[2];
         }
     CHECK(st_write_file(st_path("in.yuyv"), yuyv, sizeof yuyv) == 0);
-    CHECK(RUN(NULL, st_path("in.yuyv"), "--raw-size", "16x10", "--raw-format", "yuyv",
-              "--raw-stride", "40", "--intensity", "0", "-o", st_path("yuyv.ppm")) == 0);
+    CHECK(RUN(NULL, st_path("in.yuyv"), "--raw-size", "16x10", "--raw-format", "yuyv", "--raw-stride", "40",
+              "--intensity", "0", "-o", st_path("yuyv.ppm")) == 0);
     int ow, oh, worst = 0;
     uint8_t *o = st_read_rgb8(st_path("yuyv.ppm"), &ow, &oh);
     CHECK(o && ow == w && oh == h);

@@ -13,13 +13,13 @@
 #include "imgio.h"
 
 /* ---- environment ---------------------------------------------------------- */
-int st_setup_dir(void);          /* creates the temp dir */
-void st_remove_dir(void);        /* removes it and everything in it */
-const char *st_path(const char *name);  /* dir/name, from a ring of 8 buffers */
-int st_count_tmp_files(void);    /* files named *.tmp-* left in the dir */
+int st_setup_dir(void);                /* creates the temp dir */
+void st_remove_dir(void);              /* removes it and everything in it */
+const char *st_path(const char *name); /* dir/name, from a ring of 8 buffers */
+int st_count_tmp_files(void);          /* files named *.tmp-* left in the dir */
 
 typedef struct {
-    int status;                  /* exit code, or 128 + signal */
+    int status; /* exit code, or 128 + signal */
     char out[1 << 16], err[1 << 14];
 } st_run_t;
 

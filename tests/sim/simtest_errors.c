@@ -39,8 +39,7 @@ static void expect_failure(const char *label, const char *file, long frame, cons
     CHECKF(strstr(R.err, what) != NULL, "%s: message lacks \"%s\": %s", label, what, R.err);
     CHECKF(st_same_file(st_path(out1), precious, sizeof precious - 1), "%s: %s was touched", label, out1);
     if (out2)
-        CHECKF(st_same_file(st_path(out2), precious, sizeof precious - 1), "%s: %s was touched",
-               label, out2);
+        CHECKF(st_same_file(st_path(out2), precious, sizeof precious - 1), "%s: %s was touched", label, out2);
     CHECKF(st_count_tmp_files() == 0, "%s: temp file left", label);
 }
 
@@ -156,7 +155,7 @@ static void test_limits(const uint8_t *px, int w, int h)
         unsigned char *dw = b ? find(b, len, "dataWindow\0box2i\0", 17) : NULL;
         CHECK(dw != NULL);
         if (dw) {
-            unsigned char *v = dw + 17 + 4 + 8; /* xMax, yMax: little-endian */
+            unsigned char *v = dw + 17 + 4 + 8;        /* xMax, yMax: little-endian */
             v[0] = 0x1F, v[1] = 0x4E, v[2] = v[3] = 0; /* 19999: 20000 wide */
             CHECK(st_write_file(st_path("huge.exr"), b, len) == 0);
             expect_refused("EXR 20000x8", NULL, st_path("huge.exr"),
@@ -330,12 +329,12 @@ void test_cli(void)
     memset(raw, 200, sizeof raw);
     CHECK(st_write_file(st_path("three.rgb"), raw, sizeof raw) == 0);
     static const char *const bad[][4] = {
-        {"--bogus", NULL, NULL, NULL},         {"--threshold", "300", NULL, NULL},
-        {"--levels", "0", NULL, NULL},         {"--format", "yuv", NULL, NULL},
-        {"-o", "x%s.ppm", NULL, NULL},         {"-o", "x%d%d.ppm", NULL, NULL},
-        {"-o", "x.bmp", NULL, NULL},           {"--side-by-side", "x.pfm", NULL, NULL},
-        {"--raw-size", "12x10", NULL, NULL},   {"--view", "glow", NULL, NULL},
-        {"--threshold", NULL, NULL, NULL},     {"-o", "/nonexistent-dir/x_%d.png", NULL, NULL}};
+        {"--bogus", NULL, NULL, NULL},       {"--threshold", "300", NULL, NULL},
+        {"--levels", "0", NULL, NULL},       {"--format", "yuv", NULL, NULL},
+        {"-o", "x%s.ppm", NULL, NULL},       {"-o", "x%d%d.ppm", NULL, NULL},
+        {"-o", "x.bmp", NULL, NULL},         {"--side-by-side", "x.pfm", NULL, NULL},
+        {"--raw-size", "12x10", NULL, NULL}, {"--view", "glow", NULL, NULL},
+        {"--threshold", NULL, NULL, NULL},   {"-o", "/nonexistent-dir/x_%d.png", NULL, NULL}};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         const char *args[6] = {st_path("a.ppm"), bad[i][0], bad[i][1], NULL};
         st_run(&R, tool, NULL, args);
@@ -356,7 +355,8 @@ void test_cli(void)
 
     /* several inputs of different sizes; %% in a pattern */
     CHECK(st_write_png(st_path("b.png"), raw, 9, 30, 3, 0) == 0);
-    CHECKF(RUN(NULL, st_path("a.ppm"), st_path("b.png"), "-o", st_path("m%%_%d.ppm"), "-q") == 0, "%s", R.err);
+    CHECKF(RUN(NULL, st_path("a.ppm"), st_path("b.png"), "-o", st_path("m%%_%d.ppm"), "-q") == 0, "%s",
+           R.err);
     uint8_t *m0 = st_read_rgb8(st_path("m%_0.ppm"), &ow, &oh);
     CHECK(m0 && ow == 12 && oh == 10);
     free(m0);
@@ -371,9 +371,10 @@ void test_cli(void)
     /* progress on a terminal (shown at once with --progress-after 0), none
      * when stderr is a file (every other run here) */
     char tty[4096];
-    int st = st_run_tty(tool, ARGS(st_path("three.rgb"), "--raw-size", "12x10", "--raw-format",
-                                   "rgb24", "--progress-after", "0"),
-                        tty, sizeof tty);
+    int st = st_run_tty(
+        tool,
+        ARGS(st_path("three.rgb"), "--raw-size", "12x10", "--raw-format", "rgb24", "--progress-after", "0"),
+        tty, sizeof tty);
     if (st < 0) {
         printf("no pseudo-terminal here: progress line not tested\n");
     } else {

@@ -36,8 +36,8 @@ static int pfm_is_q16(const char *path, const uint32_t *q, size_t n)
     int ok = 1;
     for (size_t i = 0; i < n; i++)
         if (im.f32[i] != (float)(q[i] / 65536.0)) {
-            fprintf(stderr, "  %s sample %zu: %.9g, expected %.9g (q %u)\n", path, i,
-                    (double)im.f32[i], q[i] / 65536.0, q[i]);
+            fprintf(stderr, "  %s sample %zu: %.9g, expected %.9g (q %u)\n", path, i, (double)im.f32[i],
+                    q[i] / 65536.0, q[i]);
             ok = 0;
             break;
         }
@@ -97,8 +97,8 @@ static void test_16bit(void)
 
 static void test_pfm_rule(void)
 {
-    const float v[12] = {NAN, -1.0f, INFINITY, 300.0f, 0.5f, 255.99f,
-                         1e-6f, -0.0f, 1.0f, 256.0f, 3.14159f, -INFINITY};
+    const float v[12] = {NAN,   -1.0f, INFINITY, 300.0f, 0.5f,     255.99f,
+                         1e-6f, -0.0f, 1.0f,     256.0f, 3.14159f, -INFINITY};
     img_t im;
     char err[256];
     uint32_t q[12];
@@ -114,7 +114,8 @@ static void test_pfm_rule(void)
     if (!st_exr_built())
         return;
     /* OpenEXR, half and float: the PFM rule on the stored values */
-    const float e[12] = {0.5f, 2.0f, 1.25f, 0.0f, 1000.0f, -2.0f, 0.125f, NAN, INFINITY, 3.0f, 0.0625f, 255.0f};
+    const float e[12] = {0.5f,   2.0f, 1.25f,    0.0f, 1000.0f, -2.0f,
+                         0.125f, NAN,  INFINITY, 3.0f, 0.0625f, 255.0f};
     for (int i = 0; i < 12; i++)
         q[i] = img_float_to_q16(e[i]);
     for (int half = 0; half < 2; half++) {
@@ -145,8 +146,8 @@ static void test_forced_formats(const uint8_t *px, int w, int h)
         for (size_t i = 0; i < n; i++)
             q[i] = lin ? (px[i] * 65536u + 127u) / 255u
                        : (uint32_t)floor(bloom_srgb_to_linear(px[i] / 255.0) * 65536.0 + 0.5);
-        CHECK(RUN(NULL, st_path("ff.ppm"), "--format", "rgbq16", "--intensity", "0", "-o",
-                  st_path("ff.pfm"), lin ? "--linear" : "-q") == 0);
+        CHECK(RUN(NULL, st_path("ff.ppm"), "--format", "rgbq16", "--intensity", "0", "-o", st_path("ff.pfm"),
+                  lin ? "--linear" : "-q") == 0);
         CHECKF(pfm_is_q16(st_path("ff.pfm"), q, n), "8-bit into rgbq16 (%s)", lin ? "linear" : "sRGB");
     }
     free(q);
@@ -252,8 +253,8 @@ static void test_y4m_tag(const char *cs, const char *extra, int full)
         memset(p + (size_t)(w * h) + csz, uv[f][1], csz);
     }
     CHECK(pl && st_write_y4m(st_path("tag.y4m"), extra, w, h, cs, pl, nf) == 0);
-    CHECKF(RUN(NULL, st_path("tag.y4m"), "--intensity", "0", "-o", st_path("tag_%d.ppm")) == 0,
-           "C%s: %s", cs ? cs : "(none)", R.err);
+    CHECKF(RUN(NULL, st_path("tag.y4m"), "--intensity", "0", "-o", st_path("tag_%d.ppm")) == 0, "C%s: %s",
+           cs ? cs : "(none)", R.err);
     int mono = cs && !strcmp(cs, "mono");
     for (int f = 0; f < nf; f++) {
         char name[32];
@@ -309,7 +310,8 @@ void test_video(void)
     for (size_t i = 0; pl && i < fb * N; i++)
         pl[i] = (uint8_t)(i % fb < (size_t)(W * H) ? 30 + (i * 7) % 200 : 100 + (i % 50));
     CHECK(pl && st_write_y4m(st_path("in.y4m"), NULL, W, H, "420jpeg", pl, N) == 0);
-    CHECK(RUN(NULL, st_path("in.y4m"), "-o", st_path("v_%03d.png"), "--side-by-side", st_path("vs.y4m")) == 0);
+    CHECK(RUN(NULL, st_path("in.y4m"), "-o", st_path("v_%03d.png"), "--side-by-side", st_path("vs.y4m")) ==
+          0);
     for (int f = 0; f < N; f++) {
         char name[32];
         snprintf(name, sizeof name, "v_%03d.png", f);
@@ -353,9 +355,10 @@ void test_compare(void)
     uint8_t px[41 * 23 * 3];
     make_scene(px, w, h, 77);
     CHECK(write_ppm8(st_path("cmp.ppm"), px, w, h, 3) == 0);
-    CHECKF(RUN(NULL, st_path("cmp.ppm"), "--compare", "--bittrue", "--threshold", "0.5",
-               "--intensity", "3", "-o", st_path("cmp_out.ppm"), "--side-by-side",
-               st_path("cmp_sbs.png"), "--diff-gain", "100") == 0, "%s", R.err);
+    CHECKF(RUN(NULL, st_path("cmp.ppm"), "--compare", "--bittrue", "--threshold", "0.5", "--intensity", "3",
+               "-o", st_path("cmp_out.ppm"), "--side-by-side", st_path("cmp_sbs.png"), "--diff-gain",
+               "100") == 0,
+           "%s", R.err);
     /* the float model here */
     bloom_config_t c = cfg(w, h);
     c.threshold = BLOOM_Q16(0.5);
@@ -381,12 +384,14 @@ void test_compare(void)
     unsigned gp = 9999, ga = 0, gb = 0;
     double gm = -1, ge = -1;
     const char *l = strstr(R.out, "frame 0:");
-    CHECKF(l && sscanf(strstr(l, "vs float:"), "vs float: peak %u LSB, exact %lf%%, signed mean %lf LSB (%u above, %u below)",
-                       &gp, &ge, &gm, &ga, &gb) == 5, "stats line: %s", R.out);
-    CHECKF(gp == peak && fabs(gm - sgn / (w * h * 3)) < 1e-5 && fabs(ge - 100.0 * exact / (w * h * 3)) < 1e-3 &&
-               ga == above && gb == below,
-           "printed peak %u signed mean %g exact %g (%u / %u), expected %u %g %g (%u / %u)", gp, gm, ge, ga, gb,
-           peak, sgn / (w * h * 3), 100.0 * exact / (w * h * 3), above, below);
+    CHECKF(l && sscanf(strstr(l, "vs float:"),
+                       "vs float: peak %u LSB, exact %lf%%, signed mean %lf LSB (%u above, %u below)", &gp,
+                       &ge, &gm, &ga, &gb) == 5,
+           "stats line: %s", R.out);
+    CHECKF(gp == peak && fabs(gm - sgn / (w * h * 3)) < 1e-5 &&
+               fabs(ge - 100.0 * exact / (w * h * 3)) < 1e-3 && ga == above && gb == below,
+           "printed peak %u signed mean %g exact %g (%u / %u), expected %u %g %g (%u / %u)", gp, gm, ge, ga,
+           gb, peak, sgn / (w * h * 3), 100.0 * exact / (w * h * 3), above, below);
     CHECK(peak <= 1);
     CHECK(strstr(R.out, "bit-true: 0 differ") != NULL);
     CHECK(strstr(R.out, "summary vs float model: peak") != NULL);

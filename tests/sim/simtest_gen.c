@@ -136,7 +136,10 @@ uint8_t *st_decode_jpeg(const char *path, int *w, int *h, int *channels)
 
 /* ---- OpenEXR ------------------------------------------------------------------ */
 #ifdef SIM_NO_EXR
-int st_exr_built(void) { return 0; }
+int st_exr_built(void)
+{
+    return 0;
+}
 int st_write_exr(const char *path, const float *rgb, int w, int h, int half)
 {
     (void)path, (void)rgb, (void)w, (void)h, (void)half;
@@ -145,7 +148,10 @@ int st_write_exr(const char *path, const float *rgb, int w, int h, int half)
 #else
 #include <openexr.h>
 
-int st_exr_built(void) { return 1; }
+int st_exr_built(void)
+{
+    return 1;
+}
 
 int st_write_exr(const char *path, const float *rgb, int w, int h, int half)
 {

@@ -22,7 +22,7 @@ void simtest_presets_counts(int *pass, int *fail)
 enum { W = 37, H = 29 };
 
 static uint8_t scene[W * H * 3];
-static uint8_t ramp8[W * H];   /* the aux plane: a vertical ramp, 0 at the top */
+static uint8_t ramp8[W * H]; /* the aux plane: a vertical ramp, 0 at the top */
 static uint16_t ramp16[W * H];
 
 /* The engine run here: c on the packed RGB888 scene, aux (W*H, u8 or
@@ -77,8 +77,8 @@ static int needs_aux(const bloom_config_t *c)
 typedef struct {
     bloom_preset_t preset;
     const char *label;
-    const char *args[8];   /* extra options, NULL-terminated */
-    int aux;               /* 0 none, 8 the 8-bit PGM, 16 the 16-bit PNG */
+    const char *args[8]; /* extra options, NULL-terminated */
+    int aux;             /* 0 none, 8 the 8-bit PGM, 16 the 16-bit PNG */
 } pcase_t;
 
 static void apply_case(const pcase_t *k, bloom_config_t *c)
@@ -166,14 +166,18 @@ static void test_by_name(void)
         {BLOOM_PRESET_XNA, "xna", {NULL}, 0},
         {BLOOM_PRESET_XNA, "xna --passes --saturate", {"--passes", "2", "--saturate", NULL}, 0},
         {BLOOM_PRESET_ATTENUATION, "attenuation", {NULL}, 8},
-        {BLOOM_PRESET_ATTENUATION, "attenuation 16-bit, a and r",
-         {"--attenuation", "0.5", "--max-reduction", "0.125", NULL}, 16},
+        {BLOOM_PRESET_ATTENUATION,
+         "attenuation 16-bit, a and r",
+         {"--attenuation", "0.5", "--max-reduction", "0.125", NULL},
+         16},
         {BLOOM_PRESET_ARM, "arm", {NULL}, 0},
         {BLOOM_PRESET_ARM, "arm mask, tint", {"--tint", "1,0.5,0.25", NULL}, 8},
         {BLOOM_PRESET_ARM, "arm --baked", {"--baked", "--strength", "2", NULL}, 8},
         {BLOOM_PRESET_COD, "cod", {NULL}, 0},
-        {BLOOM_PRESET_COD, "cod weights, tint, additive",
-         {"--weights", "0.5,0.25,0.75", "--tint", "1,0.5,0.25", "--additive", NULL}, 0},
+        {BLOOM_PRESET_COD,
+         "cod weights, tint, additive",
+         {"--weights", "0.5,0.25,0.75", "--tint", "1,0.5,0.25", "--additive", NULL},
+         0},
         {BLOOM_PRESET_COD, "cod --radius", {"--radius", "12", NULL}, 0},
     };
     int ran = 0;
@@ -191,7 +195,8 @@ static void test_by_name(void)
 
     /* unity by name is the default run, byte for byte */
     CHECK(RUN(NULL, st_path("p_in.ppm"), "--threshold", "0.5", "-o", st_path("p_def.ppm")) == 0);
-    CHECK(RUN(NULL, st_path("p_in.ppm"), "--threshold", "0.5", "--preset=unity", "-o", st_path("p_uni.ppm")) == 0);
+    CHECK(RUN(NULL, st_path("p_in.ppm"), "--threshold", "0.5", "--preset=unity", "-o",
+              st_path("p_uni.ppm")) == 0);
     size_t l1, l2;
     unsigned char *a = st_read_file(st_path("p_def.ppm"), &l1), *b = st_read_file(st_path("p_uni.ppm"), &l2);
     CHECKF(a && b && l1 == l2 && !memcmp(a, b, l1), "--preset unity differs from the default run");
@@ -235,8 +240,8 @@ static void test_refusals(void)
 
     if (bloom_preset_available(BLOOM_PRESET_ARM)) { /* the mask is optional, the baked map is not */
         RUN(NULL, st_path("p_in.ppm"), "--preset", "arm", "--baked");
-        CHECKF(R.status == 2 && strstr(R.err, bloom_status_str(BLOOM_E_AUX)) && strstr(R.err, "baked bloom map") &&
-                   strstr(R.err, "--aux FILE"),
+        CHECKF(R.status == 2 && strstr(R.err, bloom_status_str(BLOOM_E_AUX)) &&
+                   strstr(R.err, "baked bloom map") && strstr(R.err, "--aux FILE"),
                "arm --baked without --aux: status %d: %s", R.status, R.err);
     }
     if (!bloom_preset_available(BLOOM_PRESET_ATTENUATION))
@@ -253,7 +258,8 @@ static void test_refusals(void)
     RUN(NULL, st_path("p_in.ppm"), "--preset", "attenuation", "--aux", st_path("p_small.pgm"), "-o",
         st_path("p_keep.ppm"));
     char want[600];
-    snprintf(want, sizeof want, "%s: --aux: the depth plane is 5x4 but the frame is 37x29", st_path("p_small.pgm"));
+    snprintf(want, sizeof want, "%s: --aux: the depth plane is 5x4 but the frame is 37x29",
+             st_path("p_small.pgm"));
     CHECKF(R.status == 1 && strstr(R.err, want), "mis-sized --aux: status %d: %s", R.status, R.err);
     /* missing, RGB, not an image */
     RUN(NULL, st_path("p_in.ppm"), "--preset", "attenuation", "--aux", st_path("p_nothere.pgm"), "-o",
@@ -262,12 +268,14 @@ static void test_refusals(void)
     CHECKF(R.status == 1 && strstr(R.err, want), "missing --aux file: status %d: %s", R.status, R.err);
     RUN(NULL, st_path("p_in.ppm"), "--preset", "attenuation", "--aux", st_path("p_in.ppm"), "-o",
         st_path("p_keep.ppm"));
-    CHECKF(R.status == 1 && strstr(R.err, "an RGB image; the aux plane is one channel"), "RGB --aux: %s", R.err);
+    CHECKF(R.status == 1 && strstr(R.err, "an RGB image; the aux plane is one channel"), "RGB --aux: %s",
+           R.err);
     CHECK(st_write_file(st_path("p_junk.bin"), "GIF89a....", 10) == 0);
     RUN(NULL, st_path("p_in.ppm"), "--preset", "attenuation", "--aux", st_path("p_junk.bin"), "-o",
         st_path("p_keep.ppm"));
     CHECKF(R.status == 1 && strstr(R.err, "not a PGM or PNG image"), "junk --aux: %s", R.err);
-    CHECKF(st_same_file(st_path("p_keep.ppm"), precious, sizeof precious - 1), "an aux error touched the output");
+    CHECKF(st_same_file(st_path("p_keep.ppm"), precious, sizeof precious - 1),
+           "an aux error touched the output");
     CHECK(st_count_tmp_files() == 0);
     /* a sequence whose second image has another size: refused at that frame */
     uint8_t other[W * (H + 1) * 3];

@@ -21,8 +21,8 @@ int main(int argc, char **argv)
     const int is565 = !strcmp(argv[2], "rgb565"), bpp = is565 ? 2 : 4;
     FILE *a = fopen(argv[1], "rb"), *b = fopen(argv[4], "rb");
     int w, h, maxv;
-    if (!a || !b || fscanf(b, "P6 %d %d %d", &w, &h, &maxv) != 3 || maxv != 255 ||
-        fgetc(b) == EOF || w != atoi(argv[3])) {
+    if (!a || !b || fscanf(b, "P6 %d %d %d", &w, &h, &maxv) != 3 || maxv != 255 || fgetc(b) == EOF ||
+        w != atoi(argv[3])) {
         fprintf(stderr, "fbcmp: cannot read %s or %s (or widths differ)\n", argv[1], argv[4]);
         return 2;
     }
@@ -47,8 +47,8 @@ int main(int argc, char **argv)
             }
             if (r != q[0] || g != q[1] || bl != q[2]) {
                 if (!diffs)
-                    fprintf(stderr, "fbcmp: first difference at %d,%d: fb %u,%u,%u sim %u,%u,%u\n",
-                            x, y, r, g, bl, q[0], q[1], q[2]);
+                    fprintf(stderr, "fbcmp: first difference at %d,%d: fb %u,%u,%u sim %u,%u,%u\n", x, y, r,
+                            g, bl, q[0], q[1], q[2]);
                 diffs++;
             }
         }
