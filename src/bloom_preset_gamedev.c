@@ -157,9 +157,10 @@ static void gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     if (n->nin == 2) {
         const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                       (const uint32_t *)in[0][2]};
-        bloom_kernels_t k; /* the C tent or its SIMD twin (same bits; BLOOM_FLAG_NO_SIMD: C) */
-        bloom_kernels_select(&k, g->cfg.flags);
-        k.tent(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
+        /* the engine's tent, C or its SIMD twin (same bits), picked once at
+         * bloom_init: picking it per row ran CPUID per row (a VM exit each
+         * under virtualisation: 12x the default's time at 1080p) */
+        g->kern.tent(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
     }
 }
 
@@ -248,9 +249,7 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const int w = n->w;
     uint32_t *bl = bg_scratch(g, 0), *sv = bg_scratch(g, 1);
     const uint64_t s = g->cfg.p.strength;
-    bloom_kernels_t k; /* the C tent or its SIMD twin (same bits; BLOOM_FLAG_NO_SIMD: C) */
-    bloom_kernels_select(&k, g->cfg.flags);
-    k.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w);
+    g->kern.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w); /* picked at bloom_init */
     if (g->out.debug)
         memset(sv, 0, (size_t)w * 3u * sizeof *sv);
     else
