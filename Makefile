@@ -20,7 +20,7 @@ CPPFLAGS_CORE := -Iinclude -Isrc
 HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
 SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
-CORE_SRC := src/bloom.c src/bloom_params.c src/bloom_row.c src/bloom_row_out.c src/bloom_row_sse2.c src/bloom_row_avx2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c \
+CORE_SRC := src/bloom.c src/bloom_frame.c src/bloom_params.c src/bloom_row.c src/bloom_row_out.c src/bloom_row_sse2.c src/bloom_row_avx2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c \
             src/bloom_preset.c src/bloom_graph.c src/bloom_graph_rows.c $(sort $(wildcard src/bloom_preset_*.c))
 CORE_HDR := $(wildcard include/*.h src/*.h)
 SIM_SRC := sim/bloom_model.c sim/imgio.c sim/model_presets.c $(filter-out sim/model_presets.c,$(sort $(wildcard sim/model_*.c)))

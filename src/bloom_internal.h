@@ -53,6 +53,10 @@ static inline uint64_t bloom_align8(uint64_t n)
         (off) = bloom_align8((off) + sizeof(type) * (uint64_t)(count));                                      \
     } while (0)
 
+/* Ring tags hold the row number; this bit marks a row known to be all zero
+ * (or, in the source ring, a dark row). Rows are < 2^30. */
+#define BLOOM_TAG_ZERO 0x40000000
+
 /* Rounding without bias (sim/docs/fixed-point.md, "Rounding without
  * bias"). A rounding point whose ties are frequent (a shift of a sum of
  * integers) either rounds half to even, or is paired with one that rounds
@@ -338,5 +342,10 @@ struct bloom {
     int need_src, need_D[BLOOM_MAX_LEVELS + 1], need_U[BLOOM_MAX_LEVELS + 1], need_E1;
     int latency;
 };
+
+/* The default pipeline's scheduler (bloom.c) behind the row calls of
+ * bloom_frame.c: arguments checked, the engine not a preset's graph. */
+bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row);
+bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
 
 #endif

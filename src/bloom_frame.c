@@ -1,0 +1,221 @@
+/* The row, band and frame calls of the API: argument checks, the dispatch
+ * between the default pipeline's scheduler (bloom.c) and a preset's graph
+ * (bloom_graph.c), the aliasing rules (a destination may overlap its source
+ * only in place), and the band and frame calls as loops over the row calls. */
+#include <string.h>
+
+#include "bloom_graph.h"
+#include "bloom_internal.h"
+
+int bloom_rows_in(const bloom_t *b)
+{
+    if (!b)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return b->graph->src_n;
+#endif
+    return b->src_n;
+}
+
+int bloom_rows_out(const bloom_t *b)
+{
+    if (!b)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return b->graph->node[b->graph->out_node].next;
+#endif
+    return b->out_n;
+}
+
+static int rows_total(const bloom_t *b)
+{
+    return b->cfg.height;
+}
+
+bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
+{
+    if (!b || !aux)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph && b->graph->aux_bpp) {
+        b->graph->aux_frame = (const uint8_t *)aux;
+        b->graph->aux_stride = aux_stride;
+        return BLOOM_OK;
+    }
+#endif
+    (void)aux_stride;
+    return BLOOM_E_AUX;
+}
+
+bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *aux_row)
+{
+    if (!b || !src_row)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_push(b->graph, src_row, aux_row);
+#endif
+    return aux_row ? BLOOM_E_AUX : bloom_push_row(b, src_row);
+}
+
+bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
+{
+    if (!b || !src_row)
+        return BLOOM_E_NULL;
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_push(b->graph, src_row, NULL);
+#endif
+    return bloom_sched_push(b, src_row);
+}
+
+#if !BLOOM_SMALL
+/* Whether byte ranges [a, a + an) and [c, c + cn) meet. */
+static bool ranges_meet(uintptr_t a, size_t an, uintptr_t c, size_t cn)
+{
+    return a < c + cn && c < a + an;
+}
+#endif
+
+/* Whether output row y written at d would overwrite a source row the engine
+ * still reads (pointer mode): any held row after y, or row y itself unless
+ * d is that row and the formats are the same (in place). Rows before y are
+ * never read again once y is out; empty slots (tag -1) are skipped. */
+static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap, size_t src_bytes,
+                         size_t dst_bytes, bool same, int y, const uint8_t *d)
+{
+#if BLOOM_SMALL /* the size build: only d over row y itself in another format */
+    const int s = y % cap;
+    (void)src_bytes;
+    (void)dst_bytes;
+    return (tag[s] & ~BLOOM_TAG_ZERO) == y && ptr[s] == d && !same;
+#else
+    for (int s = 0; s < cap; s++) {
+        const int32_t r = tag[s] & ~BLOOM_TAG_ZERO;
+        if (r >= y && ranges_meet((uintptr_t)d, dst_bytes, (uintptr_t)ptr[s], src_bytes) &&
+            (r != y || ptr[s] != d || !same))
+            return true;
+    }
+    return false;
+#endif
+}
+
+/* The pull itself, dst_row known not to alias a needed source row. */
+static bloom_status_t pull_row(bloom_t *b, void *dst_row)
+{
+#if BLOOM_USE_GRAPH
+    if (b->graph)
+        return bloom_graph_pull(b->graph, dst_row);
+#endif
+    return bloom_sched_pull(b, dst_row);
+}
+
+/* The row call checks dst_row against every source row still held (a scan
+ * of the source ring per row); the band and frame calls check their whole
+ * span once instead (frames_overlap) and pull without it. */
+bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
+{
+    if (!b || !dst_row)
+        return BLOOM_E_NULL;
+    const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
+    const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
+#if BLOOM_USE_GRAPH
+    if (b->graph) {
+        const struct bloom_graph *g = b->graph;
+        if (!g->src_copy && dst_overlaps(g->src_ptr, g->src_tag, g->src_cap, g->src_row_bytes, out_bytes,
+                                         same, g->node[g->out_node].next, (const uint8_t *)dst_row))
+            return BLOOM_E_ALIAS;
+        return pull_row(b, dst_row);
+    }
+#endif
+    if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes, same,
+                                     b->out_n, (const uint8_t *)dst_row))
+        return BLOOM_E_ALIAS;
+    return pull_row(b, dst_row);
+}
+
+#if !BLOOM_SMALL
+/* The byte span of rows r0 .. r1 - 1 of a frame (row 0 at p), for either
+ * sign of the stride. */
+static void span(const uint8_t *p, ptrdiff_t stride, int r0, int r1, uintptr_t *lo, uintptr_t *hi)
+{
+    const uintptr_t a = (uintptr_t)(p + (ptrdiff_t)r0 * stride),
+                    z = (uintptr_t)(p + (ptrdiff_t)(r1 - 1) * stride);
+    *lo = a < z ? a : z;
+    *hi = a < z ? z : a;
+}
+#endif
+
+/* A band's source and destination rows may overlap only as the same frame
+ * (same rows, stride and format: in place): a destination row written over
+ * a source row not yet pushed, or in another format, would corrupt it
+ * (with COPY_SOURCE too: rows are copied only when pushed). */
+static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, const uint8_t *d, ptrdiff_t ds,
+                           int r0, int r1)
+{
+    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt) || r1 <= r0)
+        return false;
+#if BLOOM_SMALL /* the size build: the same buffer in another format or stride only */
+    (void)ds;
+    return s == d;
+#else
+    uintptr_t slo, shi, dlo, dhi;
+    const size_t w = (size_t)b->cfg.width;
+    span(s, ss, r0, r1, &slo, &shi);
+    span(d, ds, r0, r1, &dlo, &dhi);
+    return ranges_meet(slo, shi - slo + w * (size_t)bloom_format_bpp(b->cfg.in_fmt), dlo,
+                       dhi - dlo + w * (size_t)bloom_format_bpp(b->cfg.out_fmt));
+#endif
+}
+
+bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
+                              ptrdiff_t dst_stride)
+{
+    if (!b || !src || !dst)
+        return BLOOM_E_NULL;
+    const uint8_t *s = (const uint8_t *)src;
+    uint8_t *d = (uint8_t *)dst;
+    const int end = bloom_rows_in(b) + nrows;
+    if (nrows < 0 || end > rows_total(b))
+        return BLOOM_E_STATE;
+    if (frames_overlap(b, s, src_stride, d, dst_stride, bloom_rows_in(b), end))
+        return BLOOM_E_ALIAS;
+    const uint8_t *aux = NULL;
+    ptrdiff_t aux_stride = 0;
+#if BLOOM_USE_GRAPH
+    if (b->graph && b->graph->aux_bpp) {
+        aux = b->graph->aux_frame;
+        aux_stride = b->graph->aux_stride;
+        if (!aux)
+            return BLOOM_E_AUX;
+    }
+#endif
+    for (;;) {
+        bloom_status_t st;
+        do
+            st = pull_row(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride); /* span checked above */
+        while (st == BLOOM_OK);
+        if (st < 0)
+            return st;
+        const int r = bloom_rows_in(b);
+        if (r == end)
+            return BLOOM_OK;
+        st = bloom_push_row_aux(b, s + (ptrdiff_t)r * src_stride,
+                                aux ? aux + (ptrdiff_t)r * aux_stride : NULL);
+        if (st < 0)
+            return st; /* BUSY cannot happen right after a full drain */
+    }
+}
+
+bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
+                             ptrdiff_t dst_stride)
+{
+    bloom_status_t st = bloom_begin(b);
+    if (st == BLOOM_OK)
+        st = bloom_run_rows(b, src, src_stride, rows_total(b), dst, dst_stride);
+    if (st == BLOOM_OK && bloom_rows_out(b) != rows_total(b))
+        st = BLOOM_E_INTERNAL;
+    return st;
+}
