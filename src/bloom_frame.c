@@ -1,7 +1,7 @@
-/* The row, band and frame calls of the API: argument checks, the dispatch
- * between the default pipeline's scheduler (bloom.c) and a preset's graph
- * (bloom_graph.c), the aliasing rules (a destination may overlap its source
- * only in place), and the band and frame calls as loops over the row calls. */
+/* The row, band and frame calls of the API: argument checks, the aliasing
+ * rules (a destination may overlap its source only in place), and the band
+ * and frame calls as loops over the row calls of the scheduler
+ * (bloom_graph.c). */
 #include <string.h>
 
 #include "bloom_graph.h"
@@ -11,10 +11,6 @@ int bloom_rows_in(const bloom_t *b)
 {
     if (!b)
         return BLOOM_E_NULL;
-#if BLOOM_USE_GRAPH
-    if (b->graph)
-        return b->graph->src_n;
-#endif
     return b->src_n;
 }
 
@@ -22,11 +18,7 @@ int bloom_rows_out(const bloom_t *b)
 {
     if (!b)
         return BLOOM_E_NULL;
-#if BLOOM_USE_GRAPH
-    if (b->graph)
-        return b->graph->node[b->graph->out_node].next;
-#endif
-    return b->out_n;
+    return b->node[b->out_node].next;
 }
 
 static int rows_total(const bloom_t *b)
@@ -38,37 +30,25 @@ bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
 {
     if (!b || !aux)
         return BLOOM_E_NULL;
-#if BLOOM_USE_GRAPH
-    if (b->graph && b->graph->aux_bpp) {
-        b->graph->aux_frame = (const uint8_t *)aux;
-        b->graph->aux_stride = aux_stride;
-        return BLOOM_OK;
-    }
-#endif
-    (void)aux_stride;
-    return BLOOM_E_AUX;
+    if (!b->aux_bpp)
+        return BLOOM_E_AUX;
+    b->aux_frame = (const uint8_t *)aux;
+    b->aux_stride = aux_stride;
+    return BLOOM_OK;
 }
 
 bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *aux_row)
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-#if BLOOM_USE_GRAPH
-    if (b->graph)
-        return bloom_graph_push(b->graph, src_row, aux_row);
-#endif
-    return aux_row ? BLOOM_E_AUX : bloom_push_row(b, src_row);
+    return bloom_sched_push(b, src_row, aux_row);
 }
 
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-#if BLOOM_USE_GRAPH
-    if (b->graph)
-        return bloom_graph_push(b->graph, src_row, NULL);
-#endif
-    return bloom_sched_push(b, src_row);
+    return bloom_sched_push(b, src_row, NULL);
 }
 
 #if !BLOOM_SMALL
@@ -102,16 +82,6 @@ static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap,
 #endif
 }
 
-/* The pull itself, dst_row known not to alias a needed source row. */
-static bloom_status_t pull_row(bloom_t *b, void *dst_row)
-{
-#if BLOOM_USE_GRAPH
-    if (b->graph)
-        return bloom_graph_pull(b->graph, dst_row);
-#endif
-    return bloom_sched_pull(b, dst_row);
-}
-
 /* The row call checks dst_row against every source row still held (a scan
  * of the source ring per row); the band and frame calls check their whole
  * span once instead (frames_overlap) and pull without it. */
@@ -121,19 +91,10 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
         return BLOOM_E_NULL;
     const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
     const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
-#if BLOOM_USE_GRAPH
-    if (b->graph) {
-        const struct bloom_graph *g = b->graph;
-        if (!g->src_copy && dst_overlaps(g->src_ptr, g->src_tag, g->src_cap, g->src_row_bytes, out_bytes,
-                                         same, g->node[g->out_node].next, (const uint8_t *)dst_row))
-            return BLOOM_E_ALIAS;
-        return pull_row(b, dst_row);
-    }
-#endif
     if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes, same,
-                                     b->out_n, (const uint8_t *)dst_row))
+                                     bloom_rows_out(b), (const uint8_t *)dst_row))
         return BLOOM_E_ALIAS;
-    return pull_row(b, dst_row);
+    return bloom_sched_pull(b, dst_row);
 }
 
 #if !BLOOM_SMALL
@@ -184,18 +145,16 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         return BLOOM_E_ALIAS;
     const uint8_t *aux = NULL;
     ptrdiff_t aux_stride = 0;
-#if BLOOM_USE_GRAPH
-    if (b->graph && b->graph->aux_bpp) {
-        aux = b->graph->aux_frame;
-        aux_stride = b->graph->aux_stride;
+    if (b->aux_bpp) {
+        aux = b->aux_frame;
+        aux_stride = b->aux_stride;
         if (!aux)
             return BLOOM_E_AUX;
     }
-#endif
     for (;;) {
         bloom_status_t st;
         do
-            st = pull_row(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride); /* span checked above */
+            st = bloom_sched_pull(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride); /* span checked above */
         while (st == BLOOM_OK);
         if (st < 0)
             return st;

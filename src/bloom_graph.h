@@ -1,16 +1,25 @@
-/* The row-graph engine behind the presets other than the default.
+/* The engine (one for every preset): a preset is a small graph of row
+ * stages ("nodes"); a pull-driven scheduler makes their rows.
  *
- * A preset is a small graph of row stages ("nodes"): each node makes rows
- * of one image (w x h, 1 or 3 samples per pixel, Q12.20 like the default
- * pipeline) from a few rows of its inputs: the source frame, the aux plane,
+ * Each node makes rows of one image (w x h, 1 or 3 samples per pixel,
+ * Q12.20) from a few rows of its inputs: the source frame, the aux plane,
  * or other nodes. An input is read at rows base(r) + lo .. base(r) + hi,
  * clamped to the input's height (the edge rule), where base(r) is 2r (a
  * node at half the input's resolution), r (same resolution) or r >> 1
- * (twice the input's resolution). The engine is the default scheduler
- * generalised: pull-driven, every node keeps a ring of rows, and the ring
- * sizes come from a dry run of the same code (bloom_query). Nothing is
+ * (twice the input's resolution). Every node keeps a ring of rows; the ring
+ * sizes come from a dry run of the same scheduler (bloom_query). Nothing is
  * allocated; nothing is kept at full resolution but the source rows the
  * caller keeps readable (or the engine copies, BLOOM_FLAG_COPY_SOURCE).
+ *
+ * Zero rows: a ring slot whose tag carries BLOOM_TAG_ZERO holds a row known
+ * to be all zero (its samples are zeros: readers need not know). A node
+ * marked zero-preserving (bg_zero) whose input rows are all zero is not
+ * run; a row function that returns false made an all-zero row. A source
+ * row tagged dark (no channel above the preset's dark codes) counts as zero
+ * for the zero-preserving nodes that read the source (the first stage,
+ * which the dark codes are computed for); the aux plane does not count (a
+ * factor). Row functions see which of their input rows are zero in
+ * g->zin (bit j of zin[i]: row j of input i) and may take shortcuts.
  *
  * The output node is special: its row function writes the caller's
  * destination row (encoded pixels) instead of a ring slot. */
@@ -21,7 +30,13 @@
 
 #include "bloom_internal.h"
 
-#define BG_MAX_NODES 48
+/* Nodes of the largest graph built in: the default's 2L + 3 at L = 16, or a
+ * preset's (cod: about 3L + 3). */
+#if BLOOM_USE_GRAPH
+#define BG_MAX_NODES 52
+#else
+#define BG_MAX_NODES (2 * BLOOM_MAX_LEVELS + 4)
+#endif
 #define BG_MAX_IN 3
 #define BG_MAX_ROWS 40 /* input rows one node row reads, all inputs together */
 #define BG_SRC (-1)    /* input: the source frame (encoded pixels) */
@@ -33,28 +48,31 @@ typedef enum {
     BG_UP    /* base(r) = r >> 1: the node has twice the input's resolution */
 } bg_map_t;
 
-typedef struct bloom_graph bloom_graph_t;
+typedef struct bloom bloom_graph_t;
 typedef struct bg_node bg_node_t;
 
 /* Row r of node n. in[i][j] is row base(r) + lo_i + j of input i (clamped),
  * j = 0 .. hi_i - lo_i: const uint8_t * pixels for BG_SRC, const uint8_t *
  * or const uint16_t * for BG_AUX, const uint32_t * samples for a node.
  * dst is the node's ring slot (w * ch uint32_t), or for the output node the
- * caller's row of encoded pixels. */
-typedef void (*bg_row_fn)(const bloom_graph_t *g, const bg_node_t *n, int r,
+ * caller's row of encoded pixels. Returns false only when dst was made all
+ * zero (the engine then tags the row zero); true says nothing. */
+typedef bool (*bg_row_fn)(const bloom_graph_t *g, const bg_node_t *n, int r,
                           const void *const *const in[BG_MAX_IN], void *dst);
 
 typedef struct {
-    int node; /* node index, BG_SRC or BG_AUX */
-    bg_map_t map;
-    int lo, hi;
+    int8_t node; /* node index, BG_SRC or BG_AUX */
+    uint8_t map; /* bg_map_t */
+    int8_t lo, hi;
 } bg_input_t;
 
 struct bg_node {
     bg_row_fn fn;
-    int w, h, ch; /* size; ch = samples per pixel (1 or 3) */
-    int level;    /* pyramid level it belongs to (row memory per level) */
-    int nin;
+    int w, h;     /* size */
+    uint8_t ch;   /* samples per pixel (1 or 3) */
+    int8_t level; /* pyramid level it belongs to (row memory per level) */
+    uint8_t nin;  /* inputs */
+    bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
     uint32_t k[4]; /* the row function's constants */
     /* ring (not for the output node) */
@@ -65,20 +83,23 @@ struct bg_node {
     int need; /* dry run: largest occupancy */
 };
 
-struct bloom_graph {
+struct bloom {
     bloom_config_t cfg;
     int L; /* pyramid depth the preset uses */
     int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
     bloom_knee_t knee;    /* threshold and knee, Q12.20 */
     bloom_out_t out;      /* formats, sRGB or linear, I_q */
     bloom_kernels_t kern; /* row kernels (C or SIMD, same bits) */
+    bool skip;            /* zero-row shortcuts on (BLOOM_USE_SKIP, not BLOOM_FLAG_NO_SKIP) */
+    bool dark_src;        /* source rows are tagged dark by `dark` (the build hook set dark_cut) */
+    uint32_t dark_cut;    /* build hook: a source pixel with no channel above it makes zeros */
+    bloom_dark_t dark;    /* the largest codes of each width at or below dark_cut */
     int nnodes, out_node;
-    bg_node_t node[BG_MAX_NODES];
-    /* scratch rows for row functions: BG_SCRATCH rows of scratch_len words */
+    uint32_t zin[BG_MAX_IN]; /* during a row function: which input rows are zero */
+    /* scratch rows for row functions: scratch_rows rows of scratch_len words */
     uint32_t *scratch;
     size_t scratch_len;
-    int scratch_rows; /* rows the preset's row functions use; a build hook that
-                         leaves it at -1 gets BG_SCRATCH */
+    int scratch_rows; /* rows the preset's row functions use (0 .. BG_SCRATCH) */
     /* source and aux rings: one slot per pushed row, the same for both */
     const uint8_t **src_ptr, **aux_ptr;
     uint8_t *src_copy, *aux_copy;
@@ -92,12 +113,17 @@ struct bloom_graph {
     int src_n;
     bool failed, dry;
     int need_src, latency;
+    /* the nodes: in the workspace right after this struct (bloom_init), or
+     * on the stack (bloom_query); node_cap of them fit */
+    bg_node_t *node;
+    int node_cap;
 };
 #define BG_SCRATCH 4
 
 /* Preset hooks: defaults, parameter checks, graph construction. build()
- * sets g->L, sizes, the nodes and g->out_node; g->cfg, g->knee, g->out and
- * the level sizes of the common rule (bg_levels) are set before. */
+ * sets g->L, sizes, the nodes, g->out_node and (to let dark source rows be
+ * skipped) g->dark_cut; g->cfg, g->knee, g->out and the level sizes of the
+ * common rule (bg_levels) are set before. */
 typedef struct {
     const char *name;
     void (*defaults)(bloom_config_t *cfg);
@@ -105,6 +131,7 @@ typedef struct {
     bloom_status_t (*build)(bloom_graph_t *g);
 } bloom_preset_ops_t;
 
+extern const bloom_preset_ops_t bloom_preset_unity;
 #if BLOOM_USE_GAMEDEV
 extern const bloom_preset_ops_t bloom_preset_gamedev;
 #endif
@@ -132,6 +159,19 @@ void bg_levels(bloom_graph_t *g, int n);
 int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level);
 /* Node n reads input `from` at rows base(r) + lo .. base(r) + hi. */
 void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi);
+/* Node n is zero-preserving: all-zero input rows (dark source rows, aux
+ * rows aside) make an all-zero row, which is then not computed. */
+static inline void bg_zero(bloom_graph_t *g, int n)
+{
+    if (n >= 0 && n < g->nnodes)
+        g->node[n].z = true;
+}
+/* The knee's cut t - k (0 if k >= t): a source pixel with no channel above
+ * it gives zeros after the box and the knee. */
+static inline uint32_t bg_knee_cut(const bloom_graph_t *g)
+{
+    return g->knee.t > g->knee.k ? g->knee.t - g->knee.k : 0u;
+}
 
 /* ---- helpers for row functions --------------------------------------- */
 
@@ -142,6 +182,12 @@ static inline uint32_t *bg_scratch(const bloom_graph_t *g, int i)
 {
     return g->scratch + (size_t)i * g->scratch_len;
 }
+/* Whether rows lo .. hi (indices into in[i]) of input i are all zero. */
+static inline bool bg_in_zero(const bloom_graph_t *g, int i, int lo, int hi)
+{
+    const uint32_t m = ((2u << hi) - 1u) & ~((1u << lo) - 1u);
+    return (g->zin[i] & m) == m;
+}
 /* A source row decoded to Q12.20 R, G, B (w0 pixels). */
 void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);
 /* Aux sample x of an aux row, scaled to Q16 (0 .. 65536): code * 65536 / max
@@ -149,38 +195,18 @@ void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);
 uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x);
 uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x);
 
-/* ---- shared with the default engine (bloom.c) --------------------------- */
+/* ---- the engine (bloom.c: planning and carving; bloom_graph.c: rows) ---- */
 
-/* bloom_query's description of a planned engine: zeroes info, then sets the
- * level count L and sizes w/h[0..L], the latency, the source rows
- * (need_src, at least 1) and the quantized knee and intensity. The caller
- * adds the ring and workspace bytes (its carve). Inline: the minimal
- * firmware (no presets) keeps its size. */
-static inline void bloom_info_fill(bloom_info_t *info, int L, const int *w, const int *h, int latency,
-                                   int need_src, const bloom_knee_t *knee, const bloom_out_t *out)
-{
-    memset(info, 0, sizeof *info);
-    info->levels = L;
-    for (int k = 0; k <= L; k++) {
-        info->level_w[k] = w[k];
-        info->level_h[k] = h[k];
-    }
-    info->latency_rows = latency;
-    info->source_rows = need_src > 1 ? need_src : 1;
-    info->threshold_q = knee->t;
-    info->knee_q = knee->k;
-    info->intensity_q = out->intensity;
-}
-
-/* ---- the engine (bloom.c dispatches here) ----------------------------- */
-
-bloom_status_t bloom_graph_validate(const bloom_config_t *cfg);
-/* Plan g from cfg (build + dry run); fills info if not NULL. */
-bloom_status_t bloom_graph_plan(bloom_graph_t *g, const bloom_config_t *cfg, bloom_info_t *info);
-/* Bytes of the graph engine's workspace after the plan (g planned). */
-uint64_t bloom_graph_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level);
-bloom_status_t bloom_graph_begin(bloom_graph_t *g);
-bloom_status_t bloom_graph_push(bloom_graph_t *g, const void *src_row, const void *aux_row);
-bloom_status_t bloom_graph_pull(bloom_graph_t *g, void *dst_row);
+/* Plan g from cfg (checked): build the preset's graph into `nodes` (room
+ * for cap), dry run. BLOOM_E_WORKSPACE if the graph needs more nodes. */
+bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap);
+/* Workspace bytes of the engine: the struct, its nodes, the rings; with
+ * base NULL (the engine at base otherwise) only count.
+ * per_level[k] (if not NULL, zeroed) gets the ring bytes of level k. */
+uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level);
+/* The dry run: ring sizes, source rows, latency. */
+void bloom_dry_frame(bloom_graph_t *g);
+bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row);
+bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row);
 
 #endif

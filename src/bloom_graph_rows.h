@@ -1,22 +1,25 @@
-/* Row functions shared by the presets, and the default pipeline's graph. */
+/* The default pipeline's stages as row functions, shared by the presets
+ * built on it (unity, attenuation). */
 #ifndef BLOOM_GRAPH_ROWS_H
 #define BLOOM_GRAPH_ROWS_H
 
 #include "bloom_graph.h"
 
-void bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
               void *dst);
-void bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                void *dst);
-void bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst);
-void bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst);
 
 /* The default pipeline's down and up chains with d1_fn making level 1
  * (input 0: source rows 2r-1 .. 2r+2; input 1 with d1_aux: aux rows
- * 2r .. 2r+1). Returns the node of U_1 (D_1 when L = 1), whose rows the
- * output node reads with BG_UP -1 .. 1. */
+ * 2r .. 2r+1), every node zero-preserving. Returns the node of U_1 (D_1
+ * when L = 1). */
 int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux);
+/* The output node S + I * tent(U_1) reading node u1; sets g->out_node. */
+int bg_build_out_add(bloom_graph_t *g, int u1);
 
 #endif

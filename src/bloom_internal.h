@@ -38,7 +38,7 @@ static inline int clampi(int v, int lo, int hi)
  * (bloom_params.c): BLOOM_OK or the most specific refusal. */
 bloom_status_t bloom_validate(const bloom_config_t *cfg);
 
-/* Workspace carving (bloom.c, bloom_graph.c), counted in 64 bits so that a
+/* Workspace carving (bloom.c), counted in 64 bits so that a
  * configuration too big for a 32-bit address space is refused, not wrapped.
  * BLOOM_TAKE places `count` objects of `type` at offset `off` of `base`
  * (with base NULL it only counts) and moves `off` on, 8-byte aligned. */
@@ -298,54 +298,5 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
 /* A row with B = 0: the source decoded and encoded again (no tent). */
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
 void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
-
-/* A ring of rows of one pyramid level. tag[slot] is the row held there. */
-typedef struct {
-    uint32_t *buf;
-    int32_t *tag;
-    int cap;   /* rows */
-    int width; /* pixels */
-} bloom_ring_t;
-
-struct bloom_graph;
-
-struct bloom {
-    struct bloom_graph *graph; /* the row-graph engine of a preset other than
-                                  the default (bloom_graph.h), or NULL */
-    bloom_config_t cfg;
-    int L;
-    int w[BLOOM_MAX_LEVELS + 1], h[BLOOM_MAX_LEVELS + 1];
-    bloom_knee_t knee;
-    bloom_out_t out;
-    bloom_kernels_t kern; /* row kernels (C or SIMD) */
-    int src_bpp;
-    size_t src_row_bytes;
-
-    bloom_ring_t D[BLOOM_MAX_LEVELS + 1]; /* D[1..L] */
-    bloom_ring_t U[BLOOM_MAX_LEVELS + 1]; /* U[1..L-1] */
-    bloom_ring_t E1;                      /* D_1 recomputed for the up pass */
-    const uint8_t **src_ptr;              /* source ring: pointers ... */
-    uint8_t *src_copy;                    /* ... or copies (COPY_SOURCE) */
-    int32_t *src_tag;
-    int src_cap;
-
-    /* progress */
-    int src_n, out_n;
-    int d_next[BLOOM_MAX_LEVELS + 1], u_next[BLOOM_MAX_LEVELS + 1], e_next;
-    bool failed;
-    bool skip; /* zero-row shortcuts on (not BLOOM_FLAG_NO_SKIP) */
-    bloom_dark_t dark;
-    uint32_t *zero_row; /* w[1] pixels of zeros: what zero rows read as */
-
-    /* dry run (sizing): no buffers, only the largest ring occupancy */
-    bool dry;
-    int need_src, need_D[BLOOM_MAX_LEVELS + 1], need_U[BLOOM_MAX_LEVELS + 1], need_E1;
-    int latency;
-};
-
-/* The default pipeline's scheduler (bloom.c) behind the row calls of
- * bloom_frame.c: arguments checked, the engine not a preset's graph. */
-bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row);
-bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
 
 #endif

@@ -1,6 +1,6 @@
 /* The configuration's vocabulary: pixel formats, status messages, the
  * defaults, and the checks every configuration goes through before the
- * scheduler (bloom.c) or a preset's graph (bloom_graph.c) plans it. */
+ * engine (bloom.c) plans it. */
 #include <string.h>
 
 #include "bloom_graph.h"
@@ -107,8 +107,6 @@ void bloom_config_default(bloom_config_t *cfg, int width, int height)
     cfg->flags = 0;
 }
 
-#define PRESET_FLAGS (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE)
-
 bloom_status_t bloom_validate(const bloom_config_t *c)
 {
     if (c->width < 1 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM)
@@ -124,18 +122,13 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
     if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 | PRESET_FLAGS))
+                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 |
+                               BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
         return BLOOM_E_FLAGS;
-    if (c->preset != BLOOM_PRESET_UNITY) {
-#if BLOOM_USE_GRAPH
-        return bloom_graph_validate(c); /* the preset checks its own flags and aux plane */
-#else
+    const bloom_preset_ops_t *ops = bloom_preset_ops(c->preset);
+    if (!ops)
         return BLOOM_E_PRESET;
-#endif
-    }
-    if (c->flags & PRESET_FLAGS)
-        return BLOOM_E_FLAGS;
-    if (c->aux_fmt != BLOOM_AUX_NONE)
+    if (c->aux_fmt != BLOOM_AUX_NONE && c->aux_fmt != BLOOM_AUX_U8 && c->aux_fmt != BLOOM_AUX_U16)
         return BLOOM_E_AUX;
-    return BLOOM_OK;
+    return ops->validate(c); /* the preset checks its own parameters, flags and aux plane */
 }

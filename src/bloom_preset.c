@@ -32,13 +32,7 @@ int bloom_preset_from_name(const char *name)
 
 int bloom_preset_available(bloom_preset_t p)
 {
-    if (p == BLOOM_PRESET_UNITY)
-        return 1;
-#if BLOOM_USE_GRAPH
     return bloom_preset_ops(p) != NULL;
-#else
-    return 0;
-#endif
 }
 
 uint32_t bloom_preset_params(bloom_preset_t p)
@@ -70,10 +64,7 @@ bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
     d.flags = cfg->flags & (uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
                                       BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2);
     d.preset = p;
-#if BLOOM_USE_GRAPH
-    if (p != BLOOM_PRESET_UNITY)
-        bloom_preset_ops(p)->defaults(&d);
-#endif
+    bloom_preset_ops(p)->defaults(&d);
     *cfg = d;
     return BLOOM_OK;
 }

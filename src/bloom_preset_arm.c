@@ -150,7 +150,7 @@ static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y,
 
 /* D_1. Input 0: source rows 2r-1 .. 2r+2; input 1 (with a mask): aux rows
  * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee. */
-static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     (void)r;
@@ -183,10 +183,11 @@ static void fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     pad(c2, w0);
     down_h(c4, c2, (uint32_t *)dst, n->w);
     knee1((uint32_t *)dst, n->w, &g->knee);
+    return true;
 }
 
 /* D_k, k >= 2. Input 0: D_k-1 rows 2r-1 .. 2r+2 (one channel). */
-static void fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     (void)r;
@@ -202,6 +203,7 @@ static void fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     pad(c4, sw);
     pad(c2, sw);
     down_h(c4, c2, (uint32_t *)dst, n->w);
+    return true;
 }
 
 /* The dual up filter of rows u[0..2] = m-1, m, m+1 (width sw) onto a row of
@@ -239,11 +241,12 @@ static void up_row(const bloom_graph_t *g, const uint32_t *u0, const uint32_t *u
 }
 
 /* U_k. Input 0: U_k+1 rows m-1 .. m+1 (BG_UP). */
-static void fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     up_row(g, (const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2], r & 1,
            (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
+    return true;
 }
 
 /* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
@@ -264,7 +267,7 @@ static inline uint32_t sat32(uint64_t v)
  * (bloom_row_copy_c: the bytes themselves where that is the identity),
  * unless BLOOM_FLAG_NO_SKIP (same bits either way). */
 #define ARM_CHUNK 64
-static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const int w = n->w;
@@ -300,6 +303,7 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         }
         bloom_encode_row(g->out.out_fmt, g->out.linear, v, out + (size_t)x0 * obpp, cn);
     }
+    return true;
 }
 
 /* Baked output. Input 0: the source row; input 1: the map row.
@@ -307,7 +311,7 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
  * computed as (S (2^24 + f) + 2^23) >> 24 (S * 2^24 is a multiple of
  * 2^24; S (2^24 + f) <= 2^56.1): one multiply-add per channel. Debug view:
  * (S f + 2^23) >> 24. */
-static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
@@ -331,6 +335,7 @@ static void fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
         }
         bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst + (size_t)x0 * obpp, cn);
     }
+    return true;
 }
 
 static void defaults(bloom_config_t *cfg)

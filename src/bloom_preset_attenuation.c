@@ -14,11 +14,12 @@
 
 #if BLOOM_USE_ATTENUATION
 
-static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     uint32_t *row = (uint32_t *)dst;
-    bg_fn_d1(g, n, r, in, dst);
+    if (!bg_fn_d1(g, n, r, in, dst))
+        return false; /* zero times the factor */
     const uint32_t a = g->cfg.p.attenuation, rmin = g->cfg.p.max_reduction;
     const int w0 = g->w[0];
     for (int x = 0; x < n->w; x++) {
@@ -34,6 +35,7 @@ static void d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
         for (int c = 0; c < 3; c++)
             row[3 * x + c] = (uint32_t)(((uint64_t)row[3 * x + c] * f + (1u << 23)) >> 24);
     }
+    return true;
 }
 
 static void defaults(bloom_config_t *cfg)
@@ -56,12 +58,9 @@ static bloom_status_t validate(const bloom_config_t *cfg)
 
 static bloom_status_t build(bloom_graph_t *g)
 {
-    const int u1 = bg_build_updown(g, d1_atten, true);
-    const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
-    bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
-    bg_input(g, o, u1, BG_UP, -1, 1);
-    g->out_node = o;
-    g->scratch_rows = 0;
+    bg_build_out_add(g, bg_build_updown(g, d1_atten, true));
+    /* the factor is at most 1: what the knee zeroes stays zero */
+    g->dark_cut = bg_knee_cut(g);
     return BLOOM_OK;
 }
 

@@ -157,7 +157,7 @@ static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict 
  *   D = floor(floor((sum_i g_i w_i Box_i + 8 W) / 16) / W), W = sum g_i w_i
  * then the knee. Equal d_i give equal weights, and then D is exactly
  * (sum_i g_i Box_i + 64) >> 7 (nested floors): no division. */
-static void d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
@@ -218,13 +218,14 @@ static void d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
     }
     if (g->knee.t != 0) /* threshold 0: the knee is the identity */
         bloom_row_knee_c(o, n->w, &g->knee);
+    return true;
 }
 
 /* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1. Per column
  * vO = r0 + r1 + 2 (r2 + r3) + r4 + r5 (<= 8 M) and vI = r1 + .. + r4; per
  * pixel sO = the same weights across vO (<= 64 M, 64-bit), sI across vI
  * columns 1..4; D = (sO + 4 sI + 64) >> 7, which is the box form above. */
-static void d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                  void *dst)
 {
     (void)r;
@@ -250,6 +251,7 @@ static void d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
             o[3 * x + ch] = (uint32_t)((so + 4u * (uint64_t)si + 64u) >> 7);
         }
     }
+    return true;
 }
 
 /* The vertical half of the tent: V[j] = the four rows' weighted samples at
@@ -280,7 +282,7 @@ static const uint64_t *vtent(const bloom_graph_t *g, const void *const *rows, in
 /* U_k. Input 0: D_k row r; input 1: U_(k+1) rows m-2 .. m+2. k[0] = c_k.
  * Energy-conserving: U = ((65536 - c) 256 D + c T4 + 2^23) >> 24 (<= 2^52
  * + 2^52); additive: U = D + ((c T4 + 2^23) >> 24) (c T4 <= 2^56). */
-static void u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     const int sw = g->node[n->in[1].node].w, w = n->w;
@@ -296,13 +298,14 @@ static void u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
             o[3 * x + ch] = (uint32_t)((a * dk[3 * x + ch] + c * t + (1u << 23)) >> 24);
         }
     }
+    return true;
 }
 
 /* The output. Input 0: source row r; input 1: U_1 rows m-2 .. m+2.
  * k[0] = c_0, k[1 + ch] = f_ch = round(c_0 tint_ch / 65536);
  * v = (a S 256 + f T4 + 2^23) >> 24 with a = 65536 - c_0 (energy-conserving),
  * 65536 (additive) or 0 (debug view), clamped to 2^32 - 1, encoded. */
-static void out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     const int sw = g->node[n->in[1].node].w, w = n->w;
@@ -321,6 +324,7 @@ static void out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
         }
     }
     bloom_encode_row(g->out.out_fmt, g->out.linear, o, (uint8_t *)dst, w);
+    return true;
 }
 
 /* The level count of the common rule for cfg (bg_levels). */
@@ -407,6 +411,7 @@ static bloom_status_t build(bloom_graph_t *g)
             g->node[o].k[1 + ch] = (uint32_t)(((uint64_t)c0 * g->cfg.p.tint[ch] + 32768u) >> 16);
     }
     g->out_node = o;
+    g->scratch_rows = 4; /* d1_karis's decoded row and column sums, out_cod's rows */
     return BLOOM_OK;
 }
 

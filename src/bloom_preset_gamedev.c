@@ -80,7 +80,7 @@ static void threshold_row(uint32_t *row, int w, uint32_t t)
 }
 
 /* Input 0: source rows 2r-1 .. 2r+2 (BG_DOWN). */
-static void gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     (void)r;
@@ -88,6 +88,7 @@ static void gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
     bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
     threshold_row((uint32_t *)dst, n->w, g->knee.t);
+    return true;
 }
 
 /* ---- the Gaussian ----------------------------------------------------------- */
@@ -144,7 +145,7 @@ static void gauss_h(const uint32_t *v, uint32_t *dst, int w)
 /* U_k = gauss9(D_k) (+ tent(U_k+1)). Inputs: [U_k+1 rows m-1 .. m+1 (BG_UP),]
  * D_k rows r-4 .. r+4 (BG_SAME), the last input. The vertical pass goes to
  * scratch row 0. */
-static void gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     const void *const *d = in[n->nin - 1];
@@ -162,6 +163,7 @@ static void gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
          * under virtualisation: 12x the default's time at 1080p) */
         g->kern.tent(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
     }
+    return true;
 }
 
 /* ---- output: composite, Reinhard, gamma, encode ------------------------------ */
@@ -241,7 +243,7 @@ static uint32_t tonemap_q16(uint64_t c)
  * B = tent(U_1) into scratch 0, S decoded into scratch 1, then per sample
  * c = S + ((strength * B + 2^15) >> 16) (u64: B < 3 * 2^28, strength <=
  * 2^20) and the code by the thresholds. */
-static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
@@ -262,7 +264,7 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
                 q[ch] = tonemap_q16(((s * bl[3 * x + ch] + 32768u) >> 16) + sv[3 * x + ch]);
             memcpy(p, q, sizeof q);
         }
-        return;
+        return true;
     }
     const bool lin = g->out.linear;
     const uint32_t *t8 = lin ? bloom_gd_lin8 : bloom_gd_gamma8;
@@ -283,7 +285,7 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
             p[2 * x] = (uint8_t)wd;
             p[2 * x + 1] = (uint8_t)(wd >> 8);
         }
-        return;
+        return true;
     }
     for (int i = 0; i < 3 * w; i++)
         bl[i] = code_of(t8, b8, 128, to_q20(((s * bl[i] + 32768u) >> 16) + sv[i]));
@@ -298,6 +300,7 @@ static void gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         for (int i = 0; i < 3 * w; i++)
             p[i] = (uint8_t)bl[i];
     }
+    return true;
 }
 
 /* ---- hooks ------------------------------------------------------------------ */

@@ -35,18 +35,19 @@
 #define XNA_SAT 4u
 
 /* Half resolution: 4x4 box of the source rows base-1 .. base+2 (input 0). */
-static void fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
     bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
+    return true;
 }
 
 /* Quarter resolution: 4x4 box of H, then the threshold subtraction (and
  * the clamp to 1.0 with SATURATE). Input 0: H rows base-1 .. base+2. */
-static void fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
                        const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
@@ -60,6 +61,7 @@ static void fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
         uint32_t v = row[i] > t ? row[i] - t : 0u;
         row[i] = v > cap ? cap : v;
     }
+    return true;
 }
 
 /* Sum of the four column sums at x-i-1, x-i, x+i, x+i+1 (clamped) of
@@ -79,7 +81,7 @@ static void kawase_h(const uint32_t *cs, uint32_t *dst, int xa, int xb, int i, i
  * of the previous pass (or Q); the pass reads the first two and the last
  * two of them. k[1]: XNA_FIRST/LAST/SAT; k[2], k[3]: low and high word of
  * the range-restore factor f (Q24, up to 2^40). */
-static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
                       const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
@@ -124,21 +126,23 @@ static void fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
     if (flags & XNA_SAT)
         for (int j = 0; j < cnt; j++)
             row[j] = row[j] > BLOOM_LIN_ONE ? BLOOM_LIN_ONE : row[j];
+    return true;
 }
 
 /* Half resolution, the way back: tent of the last pass (input 0: rows
  * m-1 .. m+1, BG_UP), nothing added. */
-static void fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     g->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, g->node[n->in[0].node].w);
+    return true;
 }
 
 /* Output: input 0 the source row (BG_SAME 0..0), input 1 the half-resolution
  * bloom rows m-1 .. m+1 (BG_UP). B = tent; screen combine; encode. */
-static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
@@ -165,6 +169,7 @@ static void fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         }
         bloom_encode_row(o->out_fmt, o->linear, bl, out + (size_t)x0 * obpp, cnt);
     }
+    return true;
 }
 
 static void defaults(bloom_config_t *cfg)
