@@ -150,10 +150,11 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
         const int c = imax(n->need, 1);
         TAKE(n->buf, uint32_t, (uint64_t)c * (uint64_t)n->w * n->ch);
         TAKE(n->tag, int32_t, c);
-        if (base) {
+        if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
             n->cap = c;
+            memset(n->buf, 0, (size_t)c * (size_t)n->w * n->ch * sizeof *n->buf);
             for (int s = 0; s < c; s++)
-                n->tag[s] = 0x3FFFFFFF; /* no row, and not known to hold zeros */
+                n->tag[s] = BLOOM_TAG_ZERO | 0x3FFFFFFF;
         }
         if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
             per_level[n->level] += (size_t)(off - before);
