@@ -3,7 +3,12 @@
  *
  * RGB, BGRx and RGB16 in, the same format and size out, frames of 1 ..
  * BLOOM_MAX_DIM each side, each frame through bloom_process with its own
- * plane stride. In place (transform_frame_ip) when the in-place property
+ * plane stride. YUY2 too, without a full-frame conversion: each row is
+ * converted to RGB888 by the camera tool's converter (port/linux/cam_conv.c,
+ * BT.601 limited range), pushed to the engine (bloom_push_row, which copies
+ * the rows it reads back: BLOOM_FLAG_COPY_SOURCE), and each output row
+ * pulled (bloom_pull_row) is converted back to YUY2 by the same file's
+ * encoder: two RGB888 rows of the element's own (run_yuy2). In place (transform_frame_ip) when the in-place property
  * allows it and the formats and strides match, which GstBaseTransform then
  * does on the input buffer when it is writable (a copy of it otherwise);
  * out of place (transform_frame) into a new buffer otherwise.
@@ -15,6 +20,8 @@
  * the bus (a warning while playing, an error at negotiation) with
  * bloom_status_str's text, and the previous one is kept. */
 #include "gstbloom.h"
+
+#include "cam_conv.h" /* port/linux: the camera tool's row converters */
 
 GST_DEBUG_CATEGORY_STATIC(gst_bloom_debug);
 #define GST_CAT_DEFAULT gst_bloom_debug
@@ -30,11 +37,21 @@ GST_DEBUG_CATEGORY_STATIC(gst_bloom_debug);
 #else
 #define GB_FORMATS "{ RGB, BGRx }"
 #endif
+/* YUY2 in the colorimetries whose range and matrix are cam_conv.c's rule,
+ * limited-range BT.601 (the transfer and primaries do not enter it):
+ * GStreamer's bt601 (2:4:16:4), its form before 1.18 (2:4:5:4), and what
+ * v4l2src reports for a camera's sRGB (2:4:7:1) and 470BG (2:4:5:3)
+ * Y'CbCr. Anything else (full range as jpegdec gives, BT.709 HD video) is
+ * not offered, so a videoconvert in front converts it properly (to one of
+ * these or to RGB) instead of bloom decoding it with the wrong rule. */
+#define GB_YUY2_CAPS                                                                                         \
+    GST_VIDEO_CAPS_MAKE("YUY2") ", colorimetry = (string) { bt601, 2:4:5:4, 2:4:7:1, 2:4:5:3 }"
+#define GB_CAPS GST_VIDEO_CAPS_MAKE(GB_FORMATS) "; " GB_YUY2_CAPS
 
-static GstStaticPadTemplate sink_template = GST_STATIC_PAD_TEMPLATE(
-    "sink", GST_PAD_SINK, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(GB_FORMATS)));
-static GstStaticPadTemplate src_template = GST_STATIC_PAD_TEMPLATE(
-    "src", GST_PAD_SRC, GST_PAD_ALWAYS, GST_STATIC_CAPS(GST_VIDEO_CAPS_MAKE(GB_FORMATS)));
+static GstStaticPadTemplate sink_template =
+    GST_STATIC_PAD_TEMPLATE("sink", GST_PAD_SINK, GST_PAD_ALWAYS, GST_STATIC_CAPS(GB_CAPS));
+static GstStaticPadTemplate src_template =
+    GST_STATIC_PAD_TEMPLATE("src", GST_PAD_SRC, GST_PAD_ALWAYS, GST_STATIC_CAPS(GB_CAPS));
 
 G_DEFINE_TYPE(GstBloom, gst_bloom, GST_TYPE_VIDEO_FILTER)
 
@@ -49,6 +66,8 @@ static bloom_format_t engine_format(GstVideoFormat f)
     case GST_VIDEO_FORMAT_RGB16:
         return BLOOM_FMT_RGB565; /* LE word RRRRRGGG GGGBBBBB */
 #endif
+    case GST_VIDEO_FORMAT_YUY2:
+        return BLOOM_FMT_RGB888; /* row by row through cam_conv.c (run_yuy2) */
     default:
         return (bloom_format_t)0;
     }
@@ -61,6 +80,21 @@ static bloom_format_t engine_format(GstVideoFormat f)
  * settings are restored and used; when there are none, or they fail too,
  * *err says why and the engine is gone. Allocates only when the workspace
  * must grow (or shrink below a quarter). */
+static bloom_status_t stream_config(const GstBloom *self, bloom_config_t *cfg, bloom_info_t *info, char **why)
+{
+    bloom_status_t st =
+        gst_bloom_settings_config(&self->settings, self->width, self->height, self->fmt, cfg, info, why);
+    if (st == BLOOM_OK && self->yuy2) {
+        /* the converted rows are gone once the next row is converted: the
+         * engine keeps the ones it reads back (info->ring_bytes[0]) */
+        cfg->flags |= BLOOM_FLAG_COPY_SOURCE;
+        st = bloom_query(cfg, info);
+        if (st != BLOOM_OK)
+            *why = g_strdup_printf("YUY2 at %dx%d: %s", self->width, self->height, bloom_status_str(st));
+    }
+    return st;
+}
+
 static void configure_locked(GstBloom *self, char **warn, char **err)
 {
     bloom_config_t cfg;
@@ -68,14 +102,12 @@ static void configure_locked(GstBloom *self, char **warn, char **err)
     char *why = NULL;
     *warn = *err = NULL;
     self->dirty = FALSE;
-    bloom_status_t st =
-        gst_bloom_settings_config(&self->settings, self->width, self->height, self->fmt, &cfg, &info, &why);
+    bloom_status_t st = stream_config(self, &cfg, &info, &why);
     if (st != BLOOM_OK && self->have_applied) {
         *warn = g_strdup_printf("%s: the previous configuration is kept", why);
         g_free(why);
         gst_bloom_settings_copy(&self->settings, &self->applied);
-        st = gst_bloom_settings_config(&self->settings, self->width, self->height, self->fmt, &cfg, &info,
-                                       &why);
+        st = stream_config(self, &cfg, &info, &why);
     }
     if (st != BLOOM_OK) {
         self->engine = NULL;
@@ -114,9 +146,11 @@ static void configure_locked(GstBloom *self, char **warn, char **err)
     gst_bloom_settings_copy(&self->applied, &self->settings);
     self->have_applied = TRUE;
     self->engine_aux = cfg.aux_fmt != BLOOM_AUX_NONE ? self->applied.aux : NULL;
-    GST_INFO_OBJECT(self, "engine: %dx%d preset %s, %d levels, workspace %zu bytes, latency %d rows",
+    GST_INFO_OBJECT(self,
+                    "engine: %dx%d preset %s, %d levels, workspace %zu bytes (source copy %zu), latency %d "
+                    "rows, YUY2 rows %zu bytes",
                     cfg.width, cfg.height, bloom_preset_name(cfg.preset), info.levels, info.workspace_bytes,
-                    info.latency_rows);
+                    info.ring_bytes[0], info.latency_rows, self->rows_bytes);
 }
 
 static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstVideoInfo *in_info,
@@ -131,7 +165,7 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
     if (!fmt || vf != GST_VIDEO_INFO_FORMAT(out_info) || w != GST_VIDEO_INFO_WIDTH(out_info) ||
         h != GST_VIDEO_INFO_HEIGHT(out_info)) {
         GST_ELEMENT_ERROR(self, CORE, NEGOTIATION,
-                          ("bloom takes RGB, BGRx or RGB16 and gives the same format and size"),
+                          ("bloom takes RGB, BGRx, RGB16 or YUY2 and gives the same format and size"),
                           ("in %s %dx%d, out %s %dx%d", gst_video_format_to_string(vf), w, h,
                            gst_video_format_to_string(GST_VIDEO_INFO_FORMAT(out_info)),
                            GST_VIDEO_INFO_WIDTH(out_info), GST_VIDEO_INFO_HEIGHT(out_info)));
@@ -144,11 +178,36 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
             ("BLOOM_MAX_DIM is %d: scale the video down before bloom (videoscale)", BLOOM_MAX_DIM));
         return FALSE;
     }
+    const gboolean yuy2 = vf == GST_VIDEO_FORMAT_YUY2;
+    if (yuy2 && (GST_VIDEO_INFO_COLORIMETRY(in_info).range != GST_VIDEO_COLOR_RANGE_16_235 ||
+                 GST_VIDEO_INFO_COLORIMETRY(in_info).matrix != GST_VIDEO_COLOR_MATRIX_BT601)) {
+        /* cam_conv.c's rule (the caps say so; a caller can still force
+         * other caps): full-range codes would clip, BT.709 shift hues */
+        GST_ELEMENT_ERROR(self, CORE, NEGOTIATION,
+                          ("bloom takes YUY2 in limited range (16-235), BT.601 only: put videoconvert in "
+                           "front for another colorimetry"),
+                          ("colorimetry %s", gst_video_colorimetry_to_string(&in_info->colorimetry)));
+        return FALSE;
+    }
+    /* YUY2: the two RGB888 rows of run_yuy2 (an odd width converts its
+     * padding pixel too: GStreamer's YUY2 rows hold whole pairs) */
+    const size_t row = yuy2 ? (size_t)GST_ROUND_UP_2(w) * 3u : 0u;
+    guint8 *rows = NULL;
+    if (yuy2 && !(rows = g_try_malloc(2 * row))) {
+        GST_ELEMENT_ERROR(self, RESOURCE, NO_SPACE_LEFT, ("bloom: cannot allocate 2 rows of %zu bytes", row),
+                          (NULL));
+        return FALSE;
+    }
     char *warn, *err;
     GST_OBJECT_LOCK(self);
     self->width = w;
     self->height = h;
     self->fmt = fmt;
+    self->yuy2 = yuy2;
+    g_free(self->rgb_in);
+    self->rgb_in = rows;
+    self->rgb_out = rows ? rows + row : NULL;
+    self->rows_bytes = 2 * row;
     configure_locked(self, &warn, &err);
     const gboolean in_place = self->in_place;
     GST_OBJECT_UNLOCK(self);
@@ -170,6 +229,33 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
 
 /* ---- frames ------------------------------------------------------------------ */
 
+/* A YUY2 frame through the engine's row interface: each source row to
+ * RGB888 into rgb_in and pushed (the engine copies what it reads back),
+ * each output row pulled into rgb_out and written back as YUY2 to its row
+ * of dst. Output row y comes after source row y is pushed, so dst may be
+ * src (in place). The same pulls and pushes as bloom_run_rows. */
+static bloom_status_t run_yuy2(GstBloom *self, const guint8 *src, ptrdiff_t src_stride, guint8 *dst,
+                               ptrdiff_t dst_stride)
+{
+    bloom_t *b = self->engine;
+    const GstBloomAux *aux = self->engine_aux;
+    const int w = self->width, h = self->height;
+    bloom_status_t st = bloom_begin(b);
+    while (st == BLOOM_OK) {
+        int y;
+        while (y = bloom_rows_out(b), (st = bloom_pull_row(b, self->rgb_out)) == BLOOM_OK)
+            cam_rgb888_row_to_yuyv(self->rgb_out, dst + (ptrdiff_t)y * dst_stride, w);
+        if (st < 0 || st == BLOOM_DONE)
+            break;
+        y = bloom_rows_in(b);
+        cam_yuyv_row_to_rgb888(src + (ptrdiff_t)y * src_stride, self->rgb_in, GST_ROUND_UP_2(w));
+        st = bloom_push_row_aux(b, self->rgb_in, aux ? aux->data + (size_t)y * aux->stride : NULL);
+    }
+    if (st == BLOOM_DONE)
+        st = bloom_rows_out(b) == h ? BLOOM_OK : BLOOM_E_INTERNAL;
+    return st;
+}
+
 static GstFlowReturn run_frame(GstBloom *self, const guint8 *src, ptrdiff_t src_stride, guint8 *dst,
                                ptrdiff_t dst_stride)
 {
@@ -189,7 +275,8 @@ static GstFlowReturn run_frame(GstBloom *self, const guint8 *src, ptrdiff_t src_
     }
     if (self->engine_aux)
         bloom_set_aux(self->engine, self->engine_aux->data, (ptrdiff_t)self->engine_aux->stride);
-    const bloom_status_t st = bloom_process(self->engine, src, src_stride, dst, dst_stride);
+    const bloom_status_t st = self->yuy2 ? run_yuy2(self, src, src_stride, dst, dst_stride)
+                                         : bloom_process(self->engine, src, src_stride, dst, dst_stride);
     if (st != BLOOM_OK) {
         GST_ELEMENT_ERROR(self, STREAM, FAILED, ("bloom_process: %s", bloom_status_str(st)),
                           ("%dx%d, strides %td / %td", self->width, self->height, src_stride, dst_stride));
@@ -230,6 +317,9 @@ static gboolean gst_bloom_stop(GstBaseTransform *trans)
     g_free(self->ws);
     self->ws = NULL;
     self->ws_bytes = 0;
+    g_free(self->rgb_in);
+    self->rgb_in = self->rgb_out = NULL;
+    self->rows_bytes = 0;
     self->dirty = TRUE;
     GST_OBJECT_UNLOCK(self);
     return TRUE;
@@ -241,6 +331,7 @@ static void gst_bloom_finalize(GObject *object)
 {
     GstBloom *self = GST_BLOOM(object);
     g_free(self->ws);
+    g_free(self->rgb_in);
     gst_bloom_settings_clear(&self->settings);
     gst_bloom_settings_clear(&self->applied);
     G_OBJECT_CLASS(gst_bloom_parent_class)->finalize(object);
@@ -263,7 +354,8 @@ static void gst_bloom_class_init(GstBloomClass *klass)
         ec, "Bloom", "Filter/Effect/Video",
         "Makes bright areas glow: pixels above a soft-knee threshold are blurred over an image "
         "pyramid and added back, in fixed-point integers (six presets: unity, gamedev, xna, "
-        "attenuation, arm, cod). RGB, BGRx, RGB16; up to 16384 pixels a side",
+        "attenuation, arm, cod). RGB, BGRx, RGB16, and YUY2 row by row (BT.601 limited range); up to "
+        "16384 pixels a side",
         "the bloom engine (port/gstreamer)");
     gst_element_class_add_static_pad_template(ec, &sink_template);
     gst_element_class_add_static_pad_template(ec, &src_template);

@@ -102,6 +102,14 @@ struct _GstBloom {
     void *ws;        /* the workspace, ws_bytes, from bloom_workspace_size */
     size_t ws_bytes;
     const GstBloomAux *engine_aux; /* the plane the engine reads (in applied) */
+
+    /* YUY2: the engine runs RGB888 with BLOOM_FLAG_COPY_SOURCE (it keeps the
+     * source rows its composite reads back in its workspace) and each frame
+     * goes through row by row (run_yuy2 in gstbloom.c); the only buffers of
+     * the element's own are these two RGB888 rows, allocated at caps time */
+    gboolean yuy2;
+    guint8 *rgb_in, *rgb_out; /* round_up_2(width) * 3 bytes each, in one block */
+    size_t rows_bytes;        /* the block: 2 rows */
 };
 
 /* The properties (gstbloom_props.c). */

@@ -27,19 +27,28 @@ GST_PIC_CORE = $(patsubst src/%.c,$(B)/pic/obj/%.o,$(CORE_SRC))
 # the element and the tests too: bookworm's GStreamer 1.22 / GLib 2.74
 # headers need no -Wno-... (gcc 12; clang 14 too, checked by hand).
 GST_WARN = $(WARN)
-GST_CPPFLAGS = $(CPPFLAGS_CORE) -I$(GST_DIR)
+GST_CPPFLAGS = $(CPPFLAGS_CORE) -I$(GST_DIR) -Iport/linux
+# YUY2 goes through the camera tool's row converters, built here from their
+# own source (port/linux/cam_conv.c, the flags of linux.mk's CAM_CPPFLAGS):
+# one object in the plugin and in the test, which decodes and encodes its
+# expected frames with the same functions.
+GST_CONV_OBJ = $(GST_B)/obj/cam_conv.o
 
 CHECKS += test-gst
 .PHONY: gst test-gst
 
 gst: $(GST_B)/libgstbloom.so
 
-$(GST_B)/obj/%.o: $(GST_DIR)/%.c $(GST_HDR) $(CORE_HDR) $(GST_DIR)/gstreamer.mk
+$(GST_B)/obj/%.o: $(GST_DIR)/%.c $(GST_HDR) port/linux/cam_conv.h $(CORE_HDR) $(GST_DIR)/gstreamer.mk
 	@mkdir -p $(@D)
 	$(CC) $(GST_WARN) $(CFLAGS) -fPIC $(GST_CPPFLAGS) -DGST_BLOOM_VERSION='"$(BLOOM_VERSION)"' \
 	  $(GST_CFLAGS) -c $< -o $@
 
-$(GST_B)/libgstbloom.so: $(patsubst $(GST_DIR)/%.c,$(GST_B)/obj/%.o,$(GST_SRC)) $(GST_PIC_CORE) \
+$(GST_CONV_OBJ): port/linux/cam_conv.c port/linux/cam.h port/linux/cam_conv.h $(CORE_HDR) $(GST_DIR)/gstreamer.mk
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -fPIC $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L -c $< -o $@
+
+$(GST_B)/libgstbloom.so: $(patsubst $(GST_DIR)/%.c,$(GST_B)/obj/%.o,$(GST_SRC)) $(GST_CONV_OBJ) $(GST_PIC_CORE) \
                          $(GST_DIR)/gstbloom.map
 	$(CC) -shared -Wl,-z,defs -Wl,--version-script=$(GST_DIR)/gstbloom.map -o $@ \
 	  $(filter %.o,$^) $(GST_LIBS)
@@ -47,11 +56,12 @@ $(GST_B)/libgstbloom.so: $(patsubst $(GST_DIR)/%.c,$(GST_B)/obj/%.o,$(GST_SRC)) 
 # The test links the engine itself (build/libbloom.a) to hold the element
 # to bloom_process; the element runs from the plugin, loaded by GStreamer.
 GST_TEST_SRC := $(GST_DIR)/test_gst.c $(GST_DIR)/test_gst_frames.c $(GST_DIR)/test_gst_stream.c \
-                $(GST_DIR)/test_gst_util.c
-$(GST_B)/test_gst: $(GST_TEST_SRC) $(GST_DIR)/test_gst.h $(CORE_HDR) $(B)/libbloom.a $(GST_DIR)/gstreamer.mk
+                $(GST_DIR)/test_gst_util.c $(GST_DIR)/test_gst_yuy2.c
+$(GST_B)/test_gst: $(GST_TEST_SRC) $(GST_DIR)/test_gst.h port/linux/cam_conv.h $(GST_CONV_OBJ) $(CORE_HDR) \
+                   $(B)/libbloom.a $(GST_DIR)/gstreamer.mk
 	@mkdir -p $(@D)
 	$(CC) $(GST_WARN) $(CFLAGS) $(GST_CPPFLAGS) $(GST_TEST_CFLAGS) \
-	  $(GST_TEST_SRC) $(B)/libbloom.a $(GST_TEST_LIBS) -o $@
+	  $(GST_TEST_SRC) $(GST_CONV_OBJ) $(B)/libbloom.a $(GST_TEST_LIBS) -o $@
 
 # The plugin path and the registry are the build's own: the user's
 # registry is never read or written. The check binary prints its closing

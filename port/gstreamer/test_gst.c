@@ -1,7 +1,8 @@
 /* make test-gst: the element "bloom" under GStreamer's own check library
  * (gstcheck-1.0), held byte for byte to the engine run directly
  * (bloom_process on the same frames) and to build/bloom_sim. Here: the
- * plugin, the caps, the properties, main; the frames in test_gst_frames.c.
+ * plugin, the caps, the properties, main; the frames in test_gst_frames.c,
+ * streaming in test_gst_stream.c, YUY2 in test_gst_yuy2.c.
  *
  * Run by the make target with GST_PLUGIN_PATH_1_0 = build/gst and
  * GST_REGISTRY_1_0 = build/gst/registry.bin (the user's registry is never
@@ -65,6 +66,7 @@ GST_START_TEST(test_inspect_page)
                                        "cod",
                                        "RGB16",
                                        "BGRx",
+                                       "YUY2",
                                        "changeable in NULL, READY, PAUSED or PLAYING state"};
     for (gsize i = 0; i < G_N_ELEMENTS(want); i++)
         fail_unless(strstr(out, want[i]) != NULL, "gst-inspect-1.0 bloom does not show '%s'", want[i]);
@@ -93,7 +95,7 @@ GST_START_TEST(test_caps_formats)
         fail_unless(accepts(e, c), "%s refused", c);
         g_free(c);
     }
-    static const char *const refused[] = {"I420", "YUY2", "RGBA", "BGR", "GRAY8", "RGB15", "BGR16"};
+    static const char *const refused[] = {"I420", "UYVY", "RGBA", "BGR", "GRAY8", "RGB15", "BGR16"};
     for (gsize i = 0; i < G_N_ELEMENTS(refused); i++) {
         char *c = g_strdup_printf("video/x-raw,format=%s,width=64,height=48,framerate=25/1", refused[i]);
         fail_if(accepts(e, c), "%s accepted", c);
@@ -259,6 +261,7 @@ static Suite *bloom_suite(void)
     tcase_add_test(tc, test_property_presets);
     tg_add_frame_tests(s);  /* test_gst_frames.c */
     tg_add_stream_tests(s); /* test_gst_stream.c */
+    tg_add_yuy2_tests(s);   /* test_gst_yuy2.c */
     return s;
 }
 

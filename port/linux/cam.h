@@ -84,13 +84,8 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
                  size_t errlen);
 
 /* ---- pure helpers (cam_conv.c) ------------------------------------------- */
-/* One row of YUYV (BT.601 limited range, the simulator's integer rule) to
- * RGB888; width even. */
-void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width);
-/* One row of GREY (full range) to RGB888. */
-void cam_grey_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width);
-/* BT.601 limited-range Y'CbCr to R'G'B' codes (used by the row function). */
-void cam_ycbcr_to_rgb(int y, int cb, int cr, uint8_t rgb[3]);
+/* The row converters (cam_conv.h: also built into the GStreamer element). */
+#include "cam_conv.h"
 
 /* What the framebuffer's layout is, from its var screeninfo fields. */
 typedef struct {

@@ -5,7 +5,15 @@
  * R'G'B' in integers"): BT.601 limited range, coefficients round(x * 65536),
  * each channel clamp((t + 32768) >> 16, 0, 255). GREY is full range,
  * R = G = B = Y. So a frame recorded with --record and run through
- * bloom_sim gives the same engine input, hence the same output. */
+ * bloom_sim gives the same engine input, hence the same output.
+ *
+ * RGB888 -> YUYV (the GStreamer element's YUY2 output) follows bloom_sim's
+ * Y4M writer (sim/docs/simulator.md, "Y4M output"), BT.601 limited range:
+ * Y = (16829 R + 33039 G + 6416 B + 16 * 65536 + 32768) >> 16 per pixel;
+ * U, V = 128 + round(sum / (n * 65536)) of -9714 R - 19070 G + 28784 B and
+ * 28784 R - 24103 G - 4681 B over the pair's n = 2 pixels (n = 1 for the
+ * last pixel of an odd row). Neutral greys (R = G = B) go through YUYV ->
+ * RGB888 -> YUYV unchanged. */
 #include <stdio.h>
 #include <string.h>
 
@@ -33,6 +41,35 @@ void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
     for (int x = 0; x + 1 < width; x += 2, src += 4, dst += 6) {
         cam_ycbcr_to_rgb(src[0], src[1], src[3], dst);
         cam_ycbcr_to_rgb(src[2], src[1], src[3], dst + 3);
+    }
+}
+
+static uint8_t rgb_to_y(const uint8_t *p)
+{
+    return (uint8_t)((16829 * p[0] + 33039 * p[1] + 6416 * p[2] + (16 << 16) + 32768) >> 16);
+}
+
+/* 128 + round(sum / (n * 65536)); the biased sum is positive */
+static uint8_t chroma(int32_t sum, int32_t n)
+{
+    const int32_t one = n * 65536;
+    return (uint8_t)((sum + 128 * one + one / 2) / one);
+}
+
+void cam_rgb888_row_to_yuyv(const uint8_t *src, uint8_t *dst, int width)
+{
+    for (int x = 0; x < width; x += 2, src += 6, dst += 4) {
+        const int n = x + 1 < width ? 2 : 1;
+        int32_t su = 0, sv = 0;
+        for (int i = 0; i < n; i++) {
+            const uint8_t *p = src + 3 * i;
+            su += -9714 * p[0] - 19070 * p[1] + 28784 * p[2];
+            sv += 28784 * p[0] - 24103 * p[1] - 4681 * p[2];
+        }
+        dst[0] = rgb_to_y(src);
+        dst[1] = chroma(su, n);
+        dst[2] = rgb_to_y(src + 3 * (n - 1));
+        dst[3] = chroma(sv, n);
     }
 }
 

@@ -17,7 +17,7 @@ CAM_DIR := port/linux
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
            $(CAM_DIR)/cam_aux.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c
-CAM_HDR := $(CAM_DIR)/cam.h
+CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h
 CAM_CPPFLAGS := $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L
 # libgpiod: the v1 API (1.x) only; v2 or none compiles the GPIO module out.
 CAM_GPIOD_VER := $(shell pkg-config --modversion libgpiod 2>/dev/null)
