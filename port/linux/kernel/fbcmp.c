@@ -2,7 +2,10 @@
  * bloom_cam --dump-fb (W x H pixels, rows packed, RGB565 or XRGB8888) with
  * the simulator's PPM of the same frame (bloom_sim -o, 8-bit: RGB565 codes
  * written as round(c * 255 / max), an injective map, so equal PPM bytes mean
- * equal framebuffer bits). Prints "identical" or the first difference. */
+ * equal framebuffer bits). Prints "identical" or the first difference.
+ * With STRIDE X Y the dump is a whole screen page (rows of STRIDE bytes, as
+ * fbgrab writes it) and the frame is the W x H one at X,Y (the GStreamer
+ * cases: fbdevsink centres the video). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,8 +17,8 @@ static unsigned expand(unsigned c, unsigned max)
 
 int main(int argc, char **argv)
 {
-    if (argc != 5) {
-        fprintf(stderr, "usage: fbcmp FBDUMP rgb565|xrgb8888 W SIM.ppm\n");
+    if (argc != 5 && argc != 8) {
+        fprintf(stderr, "usage: fbcmp FBDUMP rgb565|xrgb8888 W SIM.ppm [STRIDE X Y]\n");
         return 2;
     }
     const int is565 = !strcmp(argv[2], "rgb565"), bpp = is565 ? 2 : 4;
@@ -26,9 +29,16 @@ int main(int argc, char **argv)
         fprintf(stderr, "fbcmp: cannot read %s or %s (or widths differ)\n", argv[1], argv[4]);
         return 2;
     }
+    const int crop = argc == 8;
+    const long stride = crop ? atol(argv[5]) : 0, x0 = crop ? atol(argv[6]) : 0,
+               y0 = crop ? atol(argv[7]) : 0;
     long diffs = 0;
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
+            if (crop && x == 0 && fseek(a, (y0 + y) * stride + x0 * bpp, SEEK_SET)) {
+                fprintf(stderr, "fbcmp: %s: cannot seek to row %ld\n", argv[1], y0 + y);
+                return 1;
+            }
             unsigned char p[4], q[3];
             unsigned r, g, bl;
             if (fread(p, 1, (size_t)bpp, a) != (size_t)bpp || fread(q, 1, 3, b) != 3) {
@@ -52,7 +62,7 @@ int main(int argc, char **argv)
                 diffs++;
             }
         }
-    if (fgetc(a) != EOF) {
+    if (!crop && fgetc(a) != EOF) {
         fprintf(stderr, "fbcmp: %s is longer than %dx%d\n", argv[1], w, h);
         return 1;
     }
@@ -60,6 +70,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "fbcmp: %ld pixels differ\n", diffs);
         return 1;
     }
-    printf("identical (%dx%d)\n", w, h);
+    if (crop)
+        printf("identical (%dx%d at %ld,%ld)\n", w, h, x0, y0);
+    else
+        printf("identical (%dx%d)\n", w, h);
     return 0;
 }

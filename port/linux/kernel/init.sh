@@ -67,6 +67,35 @@ if [ "$ATT" = 1 ]; then
     run att-size yuyv "$fb16" --preset attenuation --aux /depth240.pgm
 fi
 for p in $PRESETS; do run "preset-$p" yuyv "$fb16" --preset "$p"; done
+# the GStreamer element (gst_cases.sh): vivid in the screen's own format ->
+# tee -> the frames recorded, and bloom -> fbdevsink on the zeroed screen,
+# read back after (fbgrab: "fb: xres yres xoffset yoffset line_length bpp");
+# vivid's screen (RGB555 until asked) set to RGB565 for it, and put back
+gst() { # name format fb
+    name=$1; caps=video/x-raw,format=$2,width=${GSIZE%x*},height=${GSIZE#*x}; fb=$3
+    echo "caps: $caps" > "/out/$name.txt"
+    [ "$2" != RGB16 ] || echo "layout: $(/fbgrab "$fb" --rgb565 /tmp/$name.var 2>&1)" >> "/out/$name.txt"
+    dd if=/dev/zero of="$fb" bs=65536 2>/dev/null
+    env LD_LIBRARY_PATH=/usr/lib/gst GST_PLUGIN_SYSTEM_PATH_1_0=/usr/lib/gst-plugins \
+        GST_PLUGIN_SYSTEM_PATH=/usr/lib/gst-plugins GST_PLUGIN_PATH_1_0= GST_PLUGIN_PATH= \
+        GST_REGISTRY_1_0=/tmp/gst-registry.bin GST_REGISTRY=/tmp/gst-registry.bin GST_REGISTRY_FORK=no \
+        GST_DEBUG='*:2' GST_DEBUG_NO_COLOR=1 \
+        /usr/bin/gst-launch-1.0 v4l2src device="$vid" num-buffers="$FRAMES" ! "$caps" ! tee name=t \
+        t. ! queue ! filesink location="/out/$name.raw" \
+        t. ! queue ! bloom in-place=false threshold=0.6 intensity=1.5 ! \
+        fbdevsink device="$fb" sync=false qos=false >> "/out/$name.txt" 2>&1
+    echo "exit $?" >> "/out/$name.txt"
+    echo "fb: $(/fbgrab "$fb" "/out/$name.fb" 2>&1)" >> "/out/$name.txt"
+    [ "$2" != RGB16 ] || echo "restored: $(/fbgrab "$fb" --restore /tmp/$name.var 2>&1)" >> "/out/$name.txt"
+    log "$name: $(grep '^exit' "/out/$name.txt"), $(tail -n 1 "/out/$name.txt")"
+}
+if [ "$GST" = 1 ]; then
+    # a moving pattern, so the screen can only match the last frame recorded
+    /vctl "$vid" "Horizontal Movement" 0 2>>/out/guest.log
+    gst gst-16 RGB16 "$fb16"
+    gst gst-32 BGRx "$fb32"
+    /vctl "$vid" "Horizontal Movement" 3 2>>/out/guest.log
+fi
 # speed under emulation, 640x480 YUYV to the 32 bpp screen
 /bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q > /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt

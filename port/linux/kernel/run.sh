@@ -3,7 +3,8 @@
 # 16 bpp RGB565 framebuffer), bochs-drm (qemu's std VGA: 32 bpp XRGB8888
 # through DRM's fbdev emulation, given two pages with drm_kms_helper's
 # drm_fbdev_overalloc=200 so the FBIOPAN_DISPLAY double-buffering is used)
-# and vfb (32 bpp XBGR8888, refused) drivers, in
+# and vfb (32 bpp XBGR8888, refused) drivers, and the GStreamer element
+# between them (v4l2src -> bloom -> fbdevsink, gst_cases.sh), in
 # qemu-system-x86_64 (TCG) with a Debian kernel. The kernel package is
 # downloaded (apt-get download) and unpacked into $B/linux/kernel once.
 # The framebuffer contents are compared with bloom_sim run on the frames the
@@ -29,12 +30,13 @@
 # Under CI (CI=true) a case left out for want of something this machine kind
 # can have (qemu, a static busybox, the kernel packages, the gpio-sim build,
 # libgpiod) is a failure naming it instead ("FAIL test-linux WHAT: WHY").
-# qemu-system-x86 and busybox-static are first installed with apt-get when
-# missing and run as root. passed + failed + skipped must equal the count
+# qemu-system-x86 and busybox-static (and the GStreamer packages of
+# gst_cases.sh) are first installed with apt-get when missing and run as root. passed + failed + skipped must equal the count
 # README.md states ("N cases with all six presets"), else one more failure.
 # Env: LINUX_TEST_KVER, LINUX_TEST_TIMEOUT, LINUX_TEST_QEMU,
 # LINUX_TEST_BUSYBOX, LINUX_TEST_NO_INSTALL (no apt-get install or update),
-# LINUX_TEST_GPIO=0 (GPIO cases skipped), CI.
+# LINUX_TEST_GPIO=0 (GPIO cases skipped), LINUX_TEST_GST=0 (GStreamer cases
+# skipped), CI.
 B=${B:-build}
 PIN=6.1.0-56-amd64
 KVER=${LINUX_TEST_KVER:-$PIN}
@@ -63,6 +65,7 @@ need() { # what why: left out for want of something this machine kind can have
 closing() { echo "$pass passed, $fail failed, $nskip skipped"; [ "$fail" -eq 0 ] && exit 0; exit 1; }
 whole() { need "(the whole test)" "$1"; closing; }     # nothing can run
 die() { bad "test-linux: $1"; closing; }                # a step that cannot fail did
+. "$here/gst_cases.sh"
 
 QEMU=${LINUX_TEST_QEMU:-qemu-system-x86_64}
 static_busybox() { # the path of a statically linked busybox, or nothing
@@ -86,6 +89,7 @@ refresh() { # why
 pkgs=""
 command -v "$QEMU" >/dev/null 2>&1 || pkgs="qemu-system-x86"
 [ -n "$(static_busybox)" ] || pkgs="$pkgs busybox-static"
+[ "$(uname -m)" != x86_64 ] || [ "${LINUX_TEST_GST:-1}" = 0 ] || pkgs="$pkgs$(gst_missing)"
 if [ -n "$pkgs" ] && [ -z "$LINUX_TEST_NO_INSTALL" ] && [ "$(id -u)" = 0 ] &&
     command -v apt-get >/dev/null 2>&1; then
     echo "test-linux: installing$(echo " $pkgs" | tr -s ' ') (apt-get)"
@@ -316,7 +320,9 @@ if "$B/bloom_sim" --help | grep -q '^  This build has:.*attenuation'; then
     "$work/mkdepth" 320 180 65535 "$work/root/depth.pgm" && "$work/mkdepth" 320 240 255 "$work/root/depth240.pgm" || die "mkdepth failed"
 fi
 gpio_on=1; [ -z "$gpio_off" ] || gpio_on=0
-{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB'";
+gst_guest "$work/root"
+gst_on=1; [ -z "$gst_off$gst_bad" ] || gst_on=0
+{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB' GST=$gst_on GSIZE=$GST_SIZE";
   sed 1d "$here/init.sh"; } > "$work/root/init"
 chmod +x "$work/root/init" "$work/root/bin/busybox"
 (cd "$work/root" && find . | "$bb" cpio -o -H newc 2>/dev/null) > "$work/initrd.cpio" || die "cannot write the initramfs"
@@ -381,6 +387,7 @@ done
 for p in $all_presets; do
     case " unity attenuation $presets " in *" $p "*) ;; *) skip "preset-$p" "$(compiled_out "$p")";; esac
 done
+gst_checks
 # bochs' fbdev has two pages (drm_fbdev_overalloc=200): the 32 bpp cases must
 # have flipped with FBIOPAN_DISPLAY (the second page's offset seen in /sys
 # while running) and put the pan back to 0,0; their pictures are checked above
@@ -447,7 +454,7 @@ if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null; then
 else
     bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" 2>/dev/null
 fi
-# the count README.md states ("27 cases with all six presets") is the count run
+# the count README.md states ("29 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
 want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/README.md" | head -n 1)
 if [ -z "$want" ]; then
