@@ -6,6 +6,12 @@
 #   make icount   instructions per output pixel of one bloom_process call
 #                 under callgrind, per engine row and stage: sim/docs/icount.md
 #                 (installs valgrind if missing)
+#   make bench-peers  (run by make bench too) the GStreamer element against
+#                 frei0r's glow and videoconvert, the engine against ffmpeg's
+#                 gblur glow and GEGL's gegl:bloom, 1920x1080, one thread,
+#                 ratios of paired rounds: sim/docs/bench-peers.md
+#                 (sim/bench/peers.sh; installs ffmpeg, frei0r-plugins,
+#                 gstreamer1.0-plugins-bad, libgegl-dev: peers_deps.sh)
 #   make profile  where the time goes per stage: perf samples of the same
 #                 binary repeating the frame call, sim/docs/profile.md
 #                 (installs linux-perf if missing; skips if perf may not sample)
@@ -35,7 +41,7 @@ ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgi
 BENCH_CV_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags opencv4))
 BENCH_CV_LIBS = $(filter-out -lopencv_%,$(shell pkg-config --libs opencv4)) -lopencv_imgproc -lopencv_core
 
-.PHONY: bench icount profile bench-deps icount-deps profile-deps bench-force
+.PHONY: bench icount profile bench-deps icount-deps profile-deps bench-force bench-peers
 
 bench-deps:
 	@sh sim/bench/deps.sh bench
@@ -69,6 +75,16 @@ bench: bench-deps $(BENCH_DIR)/bloom_bench
 	cp $(B)/bench.csv sim/docs/bench.csv
 	cat $(BENCH_DIR)/results.md sim/bench/method.md > sim/docs/bench.md
 	@echo "bench: wrote sim/docs/bench.md and sim/docs/bench.csv"
+	$(MAKE) --no-print-directory bench-peers
+
+# The peers (issue 15): peers.sh installs them, builds the element (make gst)
+# and the GEGL driver itself, so that a peer that cannot be had is named on
+# the page with its reason instead of stopping the target.
+$(BENCH_DIR)/peers_drv: sim/bench/peers_drv.c $(BENCH_DIR)/obj/scene.o $(BENCH_SIM_OBJ) $(BENCH_CORE_OBJ)
+	$(CC) $(WARN) $(BENCH_CFLAGS) $(HOST_CPPFLAGS) $^ -lm -o $@
+bench-peers: $(BENCH_DIR)/peers_drv
+	MAKE='$(MAKE)' CC='$(CC)' PEERS_CFLAGS='$(BENCH_CFLAGS)' \
+	  bash sim/bench/peers.sh $(BENCH_DIR)/peers_drv $(BENCH_DIR)/peers sim/docs/bench-peers.md
 
 # Instruction counts: the core without -march=native, plain -O2.
 $(ICOUNT_DIR)/core/%.o: src/%.c $(BENCH_CORE_HDR)
