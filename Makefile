@@ -3,7 +3,7 @@
 #   make test       every test (installs its Debian packages first if missing)
 #   make demo       a real image through the engine: before/after + error summary
 #   make freestanding  Cortex-M4 build of the core; proves it needs only memcpy/memset
-#   make tables     regenerate src/bloom_tables.c
+#   make tables     regenerate src/pixel/bloom_tables.c
 #   make memtable   the workspace/latency table of README
 #   make deps       install the Debian packages the targets use
 
@@ -16,29 +16,37 @@ B := build
 WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
         -Wcast-align -Wpointer-arith -Wvla
 CFLAGS ?= -O2 -g
-CPPFLAGS_CORE := -Iinclude -Isrc
-HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Itests -D_POSIX_C_SOURCE=200809L
+# The core's modules (src/<module>/), lowest first: pixel (formats, tables,
+# fixed-point helpers), kernels (row kernels and SIMD twins), graph (the
+# engine's graph and its construction), presets (one file per preset),
+# engine (set-up, scheduler, row/band/frame calls). Headers by module name.
+CORE_MODULES := pixel kernels graph presets engine
+CPPFLAGS_CORE := -Iinclude -Isrc $(addprefix -Isrc/,$(CORE_MODULES))
+HOST_CPPFLAGS := $(CPPFLAGS_CORE) -Isim -Isim/model -Itests -D_POSIX_C_SOURCE=200809L
 SAN := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
-CORE_SRC := src/bloom.c src/bloom_frame.c src/bloom_params.c src/bloom_row.c src/bloom_row_out.c src/bloom_row_sse2.c src/bloom_row_avx2.c src/bloom_row_neon.c src/bloom_pixel.c src/bloom_fixed.c src/bloom_tables.c \
-            src/bloom_preset.c src/bloom_graph.c src/bloom_graph_rows.c $(sort $(wildcard src/bloom_preset_*.c))
-CORE_HDR := $(wildcard include/*.h src/*.h)
-SIM_SRC := sim/bloom_model.c sim/imgio.c sim/model_presets.c $(filter-out sim/model_presets.c,$(sort $(wildcard sim/model_*.c)))
-SIM_HDR := sim/bloom_model.h sim/imgio.h
+CORE_SRC := $(sort $(foreach m,$(CORE_MODULES),$(wildcard src/$(m)/*.c)))
+CORE_HDR := $(wildcard include/*.h src/*.h src/*/*.h)
+# sim/model/: the float and bit-true models, the specification the tests
+# hold the core to; sim/imgio.c: the image files the tools and tests read.
+SIM_SRC := sim/model/bloom_model.c sim/imgio.c sim/model/model_presets.c \
+           $(filter-out sim/model/model_presets.c,$(sort $(wildcard sim/model/model_*.c)))
+SIM_HDR := sim/model/bloom_model.h sim/model/model_cod.h sim/imgio.h
 TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # Make targets `make test` runs after the test binaries, one verdict each
 # (tests/verdict.sh: a closing line "N passed, N failed, N skipped" or, for
 # a recipe that is its own check, its exit status; a line "skipped: WHAT:
 # WHY" names a skip, and under CI=true fails).
-CHECKS := test-runner check-format freestanding clang-build check-tables test-small test-precision test-clang-san
+CHECKS := test-runner check-layout check-format freestanding clang-build check-tables test-small test-precision test-clang-san
 
-.PHONY: all test test-runner check-format format demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
+.PHONY: all test test-runner check-layout check-format format demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
 
 # ---- optimised host build ------------------------------------------------
 $(B)/obj/%.o: src/%.c $(CORE_HDR) | $(B)/obj
+	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) $(CPPFLAGS_CORE) -c $< -o $@
 $(B)/libbloom.a: $(patsubst src/%.c,$(B)/obj/%.o,$(CORE_SRC))
 	rm -f $@ && ar rcs $@ $^
@@ -79,7 +87,7 @@ freestanding: | $(B)/arm
 	@for f in $(CORE_SRC); do \
 	  $(ARM_CC) $(WARN) -Os -mcpu=cortex-m4 -mthumb -ffreestanding $(CPPFLAGS_CORE) \
 	    -c $$f -o $(B)/arm/$$(basename $$f .c).o || exit 1; done
-	@$(ARM_CC) -r -nostdlib -o $(B)/arm/bloom_core.o $(patsubst src/%.c,$(B)/arm/%.o,$(CORE_SRC))
+	@$(ARM_CC) -r -nostdlib -o $(B)/arm/bloom_core.o $(patsubst %.c,$(B)/arm/%.o,$(notdir $(CORE_SRC)))
 	@undef=$$($(ARM_NM) -u $(B)/arm/bloom_core.o | awk '{print $$NF}' | sort -u); \
 	bad=$$(echo "$$undef" | grep -vx 'memcpy\|memset' | grep .); \
 	if [ -n "$$bad" ]; then echo "freestanding: the core needs more than memcpy/memset:" $$bad; exit 1; fi; \
@@ -114,7 +122,7 @@ $(B)/f%/bloom_tables.c: $(B)/gen_tables
 	@mkdir -p $(dir $@)
 	$(B)/gen_tables $* > $@
 $(B)/f%/test_conformance: tests/test_conformance.c tests/conform.h tests/testutil.h $(CORE_SRC) $(CORE_HDR) $(SIM_SRC) $(SIM_HDR) $(B)/f%/bloom_tables.c
-	$(CC) $(WARN) -O2 -DBLOOM_LIN_BITS=$* $(HOST_CPPFLAGS) $< $(filter-out src/bloom_tables.c,$(CORE_SRC)) \
+	$(CC) $(WARN) -O2 -DBLOOM_LIN_BITS=$* $(HOST_CPPFLAGS) $< $(filter-out src/pixel/bloom_tables.c,$(CORE_SRC)) \
 	  $(B)/f$*/bloom_tables.c $(SIM_SRC) -lm -o $@
 test-precision: $(foreach f,$(PRECISIONS),$(B)/f$(f)/test_conformance)
 	@for f in $(PRECISIONS); do \
@@ -122,9 +130,9 @@ test-precision: $(foreach f,$(PRECISIONS),$(B)/f$(f)/test_conformance)
 	    env BLOOM_DATA_DIR=tests/data $(B)/f$$f/test_conformance || st=1; done; exit $${st:-0}
 
 tables: $(B)/gen_tables
-	$(B)/gen_tables > src/bloom_tables.c
+	$(B)/gen_tables > src/pixel/bloom_tables.c
 check-tables: $(B)/gen_tables
-	$(B)/gen_tables | cmp -s - src/bloom_tables.c || { echo "src/bloom_tables.c is stale: run make tables"; exit 1; }
+	$(B)/gen_tables | cmp -s - src/pixel/bloom_tables.c || { echo "src/pixel/bloom_tables.c is stale: run make tables"; exit 1; }
 
 deps:
 	sh tests/deps.sh
@@ -132,6 +140,8 @@ deps:
 # The C sources follow .clang-format (generated tables switch it off for
 # their data); make format applies it.
 FORMAT_SRC = $(shell git ls-files '*.c' '*.h' '*.cpp' 2>/dev/null)
+check-layout:
+	sh tests/check_layout.sh
 check-format:
 	@command -v clang-format >/dev/null 2>&1 || \
 	  { echo "skipped: check-format: clang-format not installed (Debian clang-format)"; exit 0; }; \

@@ -22,7 +22,7 @@
 
 /* Presets besides the default (sim/docs/presets.md). 0 leaves a preset's
  * code out; bloom_query() then refuses it with BLOOM_E_PRESET. With all of
- * them 0 the row-graph engine (src/bloom_graph.c) is left out too. */
+ * them 0 the row-graph engine (src/engine/bloom_sched.c) is left out too. */
 #ifndef BLOOM_USE_GAMEDEV
 #define BLOOM_USE_GAMEDEV 1
 #endif
@@ -82,7 +82,7 @@
 #endif
 
 /* AVX2 twins of the level-1 row, the tents and the output encode
- * (src/bloom_row_avx2.c, GCC or clang on x86-64), used where CPUID and
+ * (src/kernels/bloom_row_avx2.c, GCC or clang on x86-64), used where CPUID and
  * XGETBV report AVX2 (BLOOM_FLAG_NO_AVX2 keeps SSE2 at run time). 1 leaves
  * them out of the build. */
 #ifndef BLOOM_NO_AVX2

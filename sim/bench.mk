@@ -30,7 +30,7 @@ BENCH_CXXWARN := -std=c++17 -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcas
 
 BENCH_HDR := sim/bench/bench.h sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h
 # Every core header, also ones added to src/ after CORE_HDR was written.
-BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h include/*.h))
+BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 BENCH_CORE_OBJ := $(patsubst src/%.c,$(BENCH_DIR)/core/%.o,$(CORE_SRC))
 BENCH_SIM_OBJ := $(patsubst sim/%.c,$(BENCH_DIR)/sim/%.o,$(SIM_SRC))
 BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o bench_out.o bench_machine.o scene.o variants.o bench_opencv.o)

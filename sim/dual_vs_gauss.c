@@ -25,7 +25,7 @@
 #include <time.h>
 
 #include "bloom.h"
-#include "bloom_internal.h"
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 #include "scene.h"
 

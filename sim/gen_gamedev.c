@@ -1,4 +1,4 @@
-/* Generator of src/bloom_preset_gamedev_tables.c: the output thresholds of
+/* Generator of src/presets/bloom_preset_gamedev_tables.c: the output thresholds of
  * the gamedev preset (sim/docs/presets/gamedev.md, "Output").
  *
  * The preset's output code of a composite c (linear, Q12.20 integer) is
@@ -17,7 +17,7 @@
  * ceil(ceil(x) / m) = ceil(x / m).
  *
  * Checks (exit 1 on failure): at every threshold and every F = 16..20 the
- * double formula of the bit-true model (sim/model_gamedev.c) gives k at T
+ * double formula of the bit-true model (sim/model/model_gamedev.c) gives k at T
  * and k - 1 just below; the exact linear thresholds agree with the formula.
  *
  *   make gamedev-tables        regenerate
@@ -27,7 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* The bit-true model's formula (sim/model_gamedev.c), c an integer in a
+/* The bit-true model's formula (sim/model/model_gamedev.c), c an integer in a
  * double, one = 2^F. */
 static double code_of(double c, double one, int n, int linear)
 {
@@ -40,7 +40,7 @@ static int failures;
 
 #define NKEYS 896
 
-/* The core's bucket key (src/bloom_preset_gamedev.c) and its inverse. */
+/* The core's bucket key (src/presets/bloom_preset_gamedev.c) and its inverse. */
 static uint32_t key_of(uint32_t v)
 {
     if (v < 64)

@@ -1,8 +1,8 @@
-/* Generates src/bloom_tables.c: sRGB decode tables (code -> linear with F
+/* Generates src/pixel/bloom_tables.c: sRGB decode tables (code -> linear with F
  * fraction bits) and encode thresholds (smallest value that rounds to each
  * code), for 8-, 6- and 5-bit channels. Host tool, double precision.
  *
- *   gen_tables [F] > src/bloom_tables.c     (F = 16..20, default 20)
+ *   gen_tables [F] > src/pixel/bloom_tables.c     (F = 16..20, default 20)
  *
  * Exits non-zero if a threshold lies so close to an integer that double
  * rounding could pick the wrong side (it never does for these curves). */

@@ -16,7 +16,7 @@ REPORT_CPP := $(HOST_CPPFLAGS) -Isim/bench -Isim/report
 REPORT_SHARED := sim/report/common.c sim/report/inputs.c sim/bench/scene.c $(SIM_SRC)
 REPORT_SHARED_OBJ := $(addprefix $(REPORT_DIR)/obj/,$(notdir $(REPORT_SHARED:.c=.o)))
 REPORT_HDR := sim/report/report.h sim/report/stab.h sim/bench/scene.h sim/bench/variants.h \
-              $(SIM_HDR) $(sort $(CORE_HDR) $(wildcard src/*.h include/*.h))
+              $(SIM_HDR) $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 REPORT_BINS := $(foreach f,$(REPORT_F),$(REPORT_DIR)/f$(f)/report_sweep $(REPORT_DIR)/f$(f)/report_icount) \
                $(REPORT_DIR)/f16/report_stab $(REPORT_DIR)/f20/report_stab $(REPORT_DIR)/f20/report_skip
 
@@ -30,8 +30,8 @@ $(REPORT_DIR)/obj/%.o: sim/%.c $(REPORT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(REPORT_CFLAGS) $(REPORT_CPP) -c $< -o $@
 
-# The core for F ($(1)): src/bloom_tables.c is generated for 20 only.
-report_tables = $(if $(filter 20,$(1)),src/bloom_tables.c,$(B)/f$(1)/bloom_tables.c)
+# The core for F ($(1)): src/pixel/bloom_tables.c is generated for 20 only.
+report_tables = $(if $(filter 20,$(1)),src/pixel/bloom_tables.c,$(B)/f$(1)/bloom_tables.c)
 define REPORT_CORE
 $(REPORT_DIR)/f$(1)/core/%.o: src/%.c $(REPORT_HDR)
 	@mkdir -p $$(@D)
@@ -39,7 +39,7 @@ $(REPORT_DIR)/f$(1)/core/%.o: src/%.c $(REPORT_HDR)
 $(REPORT_DIR)/f$(1)/core/tables.o: $(call report_tables,$(1)) $(REPORT_HDR)
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) $$(REPORT_CFLAGS) -DBLOOM_LIN_BITS=$(1) $$(CPPFLAGS_CORE) -c $$< -o $$@
-REPORT_CORE_OBJ_$(1) := $(patsubst src/%.c,$(REPORT_DIR)/f$(1)/core/%.o,$(filter-out src/bloom_tables.c,$(CORE_SRC))) \
+REPORT_CORE_OBJ_$(1) := $(patsubst src/%.c,$(REPORT_DIR)/f$(1)/core/%.o,$(filter-out src/pixel/bloom_tables.c,$(CORE_SRC))) \
                         $(REPORT_DIR)/f$(1)/core/tables.o
 endef
 $(foreach f,$(REPORT_F),$(eval $(call REPORT_CORE,$(f))))

@@ -1,5 +1,8 @@
-/* Internal declarations of the bloom core: tables, row kernels, engine state.
- * Nothing here is API; tests include it to reach the row kernels. */
+/* The bloom core's shared base: the internal sample format, integer helpers,
+ * the rounding rules, the knee/dark/output parameter types, the sRGB tables
+ * and pixel access. Every module includes it; it includes nothing of
+ * theirs. Row kernels: kernels/bloom_kernels.h; the engine's graph:
+ * graph/bloom_graph.h. Nothing here is API. */
 #ifndef BLOOM_INTERNAL_H
 #define BLOOM_INTERNAL_H
 
@@ -12,7 +15,7 @@
 /* Internal linear samples are Q12.20 (sim/docs/fixed-point.md): 16x finer
  * than the Q16.16 of the API, same 256.0 ceiling. BLOOM_LIN_BITS may be set
  * to 16..20 to measure precision against accuracy (make report); the tables
- * (src/bloom_tables.c) are generated for 20, `gen_tables F` for the others. */
+ * (src/pixel/bloom_tables.c) are generated for 20, `gen_tables F` for the others. */
 #if BLOOM_LIN_BITS < 16 || BLOOM_LIN_BITS > 20
 #error "BLOOM_LIN_BITS must be 16..20 (the overflow proof covers Q12.20)"
 #endif
@@ -124,179 +127,10 @@ uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d);
 /* srgb_to_linear of a gamma-space Q16.16 value, integer only. */
 uint32_t bloom_srgb_to_linear_q16(uint32_t i);
 
-/* Row kernels. Samples are interleaved R, G, B uint32_t (Q16.16).
- * Samples are Q12.20. bloom_row_box: 4x4 box down of four source rows s[0..3] (width sw) into
- * dst (width dw = ceil(sw / 2)). */
-void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-/* The same, reading encoded pixels of fmt (decoding on the fly). */
-void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                         int sw);
-/* The soft knee on a row of level-1 pixels, in place. */
-bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn); /* any non-zero */
-/* Tent up: destination columns x0 .. x0+n-1 of the row whose parity is odd,
- * from rows u[0..2] (width sw). dst[i] (and add[i] if add is not NULL) is
- * column x0 + i; dst = tent + add. add may equal dst. */
-void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0, int n,
-                      int sw);
-/* Output: tent of u[0..2] onto the full-resolution row, composite with the
- * source row src, encode into dst. */
-void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w, int sw,
-                     const bloom_out_t *o);
-
-/* The same box for destination columns xa .. xb-1 only (dst is the row). */
-void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, int xb, int sw);
-/* Composite of n samples in place: bl[i] = min(((I*bl[i] + 32768) >> 16) + sv[i], 2^32 - 1). */
-void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-
-/* Flat kernels of the fast output path (bloom_row_out_k), on n samples in
- * 32-bit arithmetic that wraps: exact while the values stay below 2^29,
- * which holds for the default pipeline on 8/6/5-bit input (U <= 16 * 2^F).
- * vtent: dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3; returns the OR of every dst[i].
- * htent_eo: e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3 and
- *           o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3 (reads v[-3 .. n+2]);
- *           returns the OR of every e[i] and o[i] (0: the bloom is zero there).
- * scale: x[i] = low 32 bits of (I x[i] + 32768) >> 16. */
-uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
-uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
-
-/* Level-1 row: bloom_row_box_src_c then bloom_row_knee_c (returns its
- * result). The SIMD twins write the zeros of 4-pixel blocks whose 4 x 10
- * source codes are all at most the dark codes dk (the knee zeroes them)
- * without computing the box: same bits. */
-bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                    const bloom_knee_t *kn, const bloom_dark_t *dk);
-/* bloom_row_box_src_c for destination pixels xa .. xb-1 only (dst is the
- * row); not in BLOOM_SMALL builds. */
-void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
-                               int xa, int xb, int sw);
-
-/* A bloom sample b at most max(A c, H0) cannot change the 8-bit sRGB code
- * c it is added to: the bound is at most t[c + 1] - dec(c) - 1 for every c
- * (tests/test_simd.c checks it on the tables built in), so t[c] <= dec(c)
- * <= dec(c) + b < t[c + 1] and the encoder gives c back. Other sample
- * precisions (BLOOM_LIN_BITS < 20) keep b = 0 only. */
-#if BLOOM_LIN_BITS == 20
-#define BLOOM_KEEP8_A 12
-#define BLOOM_KEEP8_H0 158
-#else
-#define BLOOM_KEEP8_A 0
-#define BLOOM_KEEP8_H0 0
-#endif
-
-/* The row kernels an engine calls, picked at bloom_init (bloom_kernels_select):
- * the C ones, or SIMD twins that give the same bits. */
-typedef void (*bloom_box_fn)(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                              int n, int sw);
-typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                            int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
-typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst,
-                                   int n);
-typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-typedef void (*bloom_scale_fn)(uint32_t *x, int n, uint32_t intensity);
-typedef void (*bloom_eo_fn)(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
-                            const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
-/* The tent through flat kernels for whole rows (x0 = 0, n = 2 sw or 2 sw - 1),
- * bloom_row.c: per chunk of low-resolution columns the vertical tent
- * (vt, which also ORs its inputs into *in_or), the horizontal tent into
- * even and odd columns (ht), the two interleaved with add (il); a chunk
- * whose rows hold a value of 2^29 or more (the flat sums could wrap) and
- * any other call go to exact. Same bits as bloom_row_tent_c. */
-typedef uint32_t (*bloom_vtent_in_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst,
-                                      int n, uint32_t *in_or);
-typedef void (*bloom_il_add_fn)(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst,
-                                int n);
-void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                         int n, int sw, bloom_vtent_in_fn vt, bloom_htent_eo_fn ht, bloom_il_add_fn il,
-                         void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add,
-                                       uint32_t *dst, int x0, int n, int sw));
-/* dst pixels 0 .. n-1 = the even/odd columns e, o interleaved (pixel x is
- * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
-void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
-
-typedef struct {
-    bloom_box_fn box;
-    bloom_tent_fn tent;
-    bloom_composite_fn composite;
-    bloom_d1_fn d1;             /* box from the source and knee (compute_d1); NULL if BLOOM_SMALL */
-    bloom_vtent_fn vtent;       /* NULL in BLOOM_SMALL builds */
-    bloom_htent_eo_fn htent_eo; /* NULL in BLOOM_SMALL builds */
-    bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
-    bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
-    const char *name;           /* "c", "sse2", "avx2", "neon" */
-} bloom_kernels_t;
-/* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
-void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
-/* bloom_row_out_c with the kernels of k. For 8/6/5-bit sRGB input and
- * output it takes the fast path (flat vertical tent, horizontal tent into
- * even/odd columns, fused composite and encode), which relies on the bound
- * of the default pipeline: u values at most 16 * 2^F (sums of at most 16
- * decoded 8/6/5-bit samples). */
-void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o);
-
-/* Which SIMD twins this build has (bloom_row_sse2.c, bloom_row_neon.c). */
-#if !BLOOM_NO_SIMD && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
-#define BLOOM_SIMD_SSE2 1
-void bloom_row_box_sse2_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                             int n, int sw);
-void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
-uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
-uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
-/* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
-#if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
-#define BLOOM_SIMD_AVX2 1
-bool bloom_cpu_avx2(void);
-bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
-void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                         int n, int sw);
-uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
-uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
-                          const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
-#endif
-#elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
-#define BLOOM_SIMD_NEON 1
-void bloom_row_box_neon_any(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
-void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                             int n, int sw);
-void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
-bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
-uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
-uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);
-void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
-                              int n, int sw);
-void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
-                          const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
-#endif
-
-/* Whether k holds SIMD twins (the C set is the one with the C box); a
- * constant false on targets without any (the fast output path drops out). */
-static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
-{
-#if defined(BLOOM_SIMD_SSE2) || defined(BLOOM_SIMD_NEON)
-    return k->box != bloom_row_box_c;
-#else
-    (void)k;
-    return false;
-#endif
-}
-
 /* Pixel access (bloom_pixel.c). */
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
 /* Whether no channel of the n pixels exceeds the dark codes. */
 bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
-/* A row with B = 0: the source decoded and encoded again (no tent). */
-void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
 void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
 
 #endif

@@ -1,4 +1,4 @@
-/* A preset's engine against its models (sim/bloom_model.h presets): the
+/* A preset's engine against its models (sim/model/bloom_model.h presets): the
  * core bit for bit against the bit-true model, and the error statistics
  * against the float model. Shared by tests/test_preset_*.c. */
 #ifndef PRESET_CONFORM_H

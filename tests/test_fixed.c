@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "bloom_internal.h"
+#include "bloom_kernels.h"
 #include "bloom_model.h"
 #include "harness.h"
 

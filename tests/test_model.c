@@ -1,4 +1,4 @@
-/* Tests of the reference model alone (sim/bloom_model.c): known answers
+/* Tests of the reference model alone (sim/model/bloom_model.c): known answers
  * worked by hand, the level-count rule, the curves, and float against
  * bit-true agreement. */
 #include "bloom_model.h"

@@ -1,4 +1,4 @@
-/* The gamedev preset against its models (sim/model_gamedev.c): bit-exact to
+/* The gamedev preset against its models (sim/model/model_gamedev.c): bit-exact to
  * the bit-true model over a grid of sizes, requested levels, format pairs,
  * flags and parameters (extremes included) and on real images; error
  * statistics against the float model. Properties: nothing below the

@@ -3,6 +3,7 @@
  * random and extreme inputs; then whole frames through bloom_process with
  * and without BLOOM_FLAG_NO_SIMD. On a target without SIMD kernels it
  * compares the C kernels with themselves (and says so). */
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 #include "harness.h"
 #include "testutil.h"

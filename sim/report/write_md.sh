@@ -50,7 +50,7 @@ cat <<EOF
 
 Knobs swept: the internal fraction bits F (\`BLOOM_LIN_BITS\` = 16..20, one
 binary per F built with that F's tables: \`build/gen_tables F\`, or
-\`src/bloom_tables.c\` for 20), the level count N = 1..8, at
+\`src/pixel/bloom_tables.c\` for 20), the level count N = 1..8, at
 $(echo "$sizes" | sed 's/,/, /g'): every combination, at every size, on every input.
 The **row-buffer sample width** named in the issue is not a knob of this
 engine: rows are \`uint32_t\` at every F (only the fraction bits vary), so it is

@@ -1,8 +1,8 @@
-/* Presets by name, their defaults and what each reads (sim/docs/presets.md).
- * A file of its own so that a firmware that never names a preset links none
- * of this (its strings included). */
+/* Presets by name, their defaults and what each reads (sim/docs/presets.md),
+ * and the table of their hooks. Each function is its own section: a
+ * firmware that never names a preset links none of the names. */
 
-#include "bloom_graph.h"
+#include "bloom_presets.h"
 
 static const char *const preset_names[BLOOM_PRESET_COUNT] = {"unity",       "gamedev", "xna",
                                                              "attenuation", "arm",     "cod"};
@@ -67,4 +67,34 @@ bloom_status_t bloom_config_preset(bloom_config_t *cfg, bloom_preset_t p)
     bloom_preset_ops(p)->defaults(&d);
     *cfg = d;
     return BLOOM_OK;
+}
+
+const bloom_preset_ops_t *bloom_preset_ops(bloom_preset_t p)
+{
+    switch (p) {
+    case BLOOM_PRESET_UNITY:
+        return &bloom_preset_unity;
+#if BLOOM_USE_GAMEDEV
+    case BLOOM_PRESET_GAMEDEV:
+        return &bloom_preset_gamedev;
+#endif
+#if BLOOM_USE_XNA
+    case BLOOM_PRESET_XNA:
+        return &bloom_preset_xna;
+#endif
+#if BLOOM_USE_ATTENUATION
+    case BLOOM_PRESET_ATTENUATION:
+        return &bloom_preset_attenuation;
+#endif
+#if BLOOM_USE_ARM
+    case BLOOM_PRESET_ARM:
+        return &bloom_preset_arm;
+#endif
+#if BLOOM_USE_COD
+    case BLOOM_PRESET_COD:
+        return &bloom_preset_cod;
+#endif
+    default:
+        return NULL;
+    }
 }

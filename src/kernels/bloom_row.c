@@ -3,6 +3,7 @@
  * R, G, B uint32_t, Q16.16. The frame-level code only schedules these. */
 #include <string.h>
 
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 
 /* Column sum of four rows at column c (three channels). */

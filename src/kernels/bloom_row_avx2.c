@@ -13,7 +13,7 @@
  *                     and XRGB8888 -> XRGB8888 in 8-pixel groups: the
  *                     groups whose codes the bloom cannot change copied,
  *                     the others encoded sample by sample */
-#include "bloom_internal.h"
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 
 #if defined(BLOOM_SIMD_AVX2)

@@ -7,7 +7,7 @@
  * diagonals at +-halfpixel weight 2, /12), in pixel indices with the exact
  * 2x mapping and clamped reads. Bit-true mode applies the 4x4 and 3x3
  * integer kernels those taps reduce to, directly in 2-D, with the integer
- * roundings of src/bloom_preset_arm.c (plain floor divisions, not the
+ * roundings of src/presets/bloom_preset_arm.c (plain floor divisions, not the
  * engine's separable sums and multiply-by-inverse). */
 #include <math.h>
 #include <stdlib.h>

@@ -6,38 +6,8 @@
  * hooks (bloom_preset_<name>.c); one scheduler runs them all. */
 #include <string.h>
 
-#include "bloom_graph.h"
+#include "bloom_engine.h"
 #include "bloom_internal.h"
-
-const bloom_preset_ops_t *bloom_preset_ops(bloom_preset_t p)
-{
-    switch (p) {
-    case BLOOM_PRESET_UNITY:
-        return &bloom_preset_unity;
-#if BLOOM_USE_GAMEDEV
-    case BLOOM_PRESET_GAMEDEV:
-        return &bloom_preset_gamedev;
-#endif
-#if BLOOM_USE_XNA
-    case BLOOM_PRESET_XNA:
-        return &bloom_preset_xna;
-#endif
-#if BLOOM_USE_ATTENUATION
-    case BLOOM_PRESET_ATTENUATION:
-        return &bloom_preset_attenuation;
-#endif
-#if BLOOM_USE_ARM
-    case BLOOM_PRESET_ARM:
-        return &bloom_preset_arm;
-#endif
-#if BLOOM_USE_COD
-    case BLOOM_PRESET_COD:
-        return &bloom_preset_cod;
-#endif
-    default:
-        return NULL;
-    }
-}
 
 #if BLOOM_USE_SKIP
 /* The largest code of each width whose decoded value is at most cut: rows

@@ -1,9 +1,9 @@
-/* The default pipeline's stages as row functions (bloom_graph_rows.h): the
+/* The default pipeline's stages as row functions (bloom_stages.h): the
  * box with the knee, the box, the tent with its add, the output. Each is a
  * thin wrapper of the row kernels of bloom_row.c (C or their SIMD twins,
  * the same bits), so every preset built from them computes the default's
  * bits, and each takes the zero-row shortcuts its inputs allow. */
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 
 #include <string.h>
 

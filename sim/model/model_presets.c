@@ -90,7 +90,7 @@ int bloom_model_unity(const bloom_model_preset_args_t *a)
 
 /* Attenuation: D1 scaled by max(lerp(1, d, a), r), d the depth averaged
  * over the half-resolution pixel's 2x2 block (edge rule at odd sizes).
- * Bit-true: the Q24 integer form of src/bloom_preset_attenuation.c. */
+ * Bit-true: the Q24 integer form of src/presets/bloom_preset_attenuation.c. */
 int bloom_model_attenuation(const bloom_model_preset_args_t *a)
 {
     bloom_model_params_t p;

@@ -10,7 +10,7 @@
  * D_1 = (D_1 * factor + 2^23) >> 24 (a 64-bit product: D_1 < 2^28,
  * factor <= 2^24). With a = 0 the factor is exactly 1 and the preset
  * computes the default's bits. */
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 
 #if BLOOM_USE_ATTENUATION
 

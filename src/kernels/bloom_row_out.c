@@ -7,6 +7,7 @@
  * bloom_row_tent_c (tests/test_simd.c). */
 #include <string.h>
 
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 
 #if !BLOOM_SMALL

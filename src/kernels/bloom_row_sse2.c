@@ -1,7 +1,7 @@
 /* SSE2 twins of the hot row kernels (x86-64, where SSE2 is baseline: no
  * run-time detection). Same bits as the C kernels of bloom_row.c; the
  * kernels are written once in bloom_row_simd.h. Empty on other targets. */
-#include "bloom_internal.h"
+#include "bloom_kernels.h"
 
 #if defined(BLOOM_SIMD_SSE2)
 #include <emmintrin.h>

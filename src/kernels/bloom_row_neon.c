@@ -1,7 +1,7 @@
 /* NEON twins of the hot row kernels (aarch64). Same bits as the C kernels
  * of bloom_row.c; the kernels are written once in bloom_row_simd.h. Empty
  * on other targets. */
-#include "bloom_internal.h"
+#include "bloom_kernels.h"
 #include "bloom_pixel.h"
 
 #if defined(BLOOM_SIMD_NEON)

@@ -121,7 +121,7 @@ typedef struct {
 
 /* Returns the number of levels used (>= 1), or -1 on bad arguments. */
 int bloom_model_preset_run(const bloom_model_preset_args_t *a);
-/* One per preset (sim/model_<name>.c); same contract. */
+/* One per preset (sim/model/model_<name>.c); same contract. */
 int bloom_model_unity(const bloom_model_preset_args_t *a);
 int bloom_model_attenuation(const bloom_model_preset_args_t *a);
 int bloom_model_gamedev(const bloom_model_preset_args_t *a);

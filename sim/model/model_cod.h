@@ -1,4 +1,4 @@
-/* The cod preset's host helpers (sim/model_cod.c): Bevy's blend factors as
+/* The cod preset's host helpers (sim/model/model_cod.c): Bevy's blend factors as
  * the preset's Q16 level weights, and the model with the Karis average
  * switchable (for the firefly comparison). Doubles; not part of the core. */
 #ifndef BLOOM_MODEL_COD_H

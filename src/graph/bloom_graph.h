@@ -1,5 +1,7 @@
-/* The engine (one for every preset): a preset is a small graph of row
- * stages ("nodes"); a pull-driven scheduler makes their rows.
+/* The engine's graph (one engine for every preset): a preset is a small
+ * graph of row stages ("nodes") that its build hook makes with the
+ * functions below (graph/bloom_graph.c); the scheduler (engine/) makes
+ * their rows, pulled by the output.
  *
  * Each node makes rows of one image (w x h, 1 or 3 samples per pixel,
  * Q12.20) from a few rows of its inputs: the source frame, the aux plane,
@@ -29,6 +31,7 @@
 #include <string.h>
 
 #include "bloom_internal.h"
+#include "bloom_kernels.h"
 
 /* Nodes of the largest graph built in: the default's 2L + 3 at L = 16, or a
  * preset's (cod: about 3L + 3). */
@@ -120,36 +123,6 @@ struct bloom {
 };
 #define BG_SCRATCH 4
 
-/* Preset hooks: defaults, parameter checks, graph construction. build()
- * sets g->L, sizes, the nodes, g->out_node and (to let dark source rows be
- * skipped) g->dark_cut; g->cfg, g->knee, g->out and the level sizes of the
- * common rule (bg_levels) are set before. */
-typedef struct {
-    const char *name;
-    void (*defaults)(bloom_config_t *cfg);
-    bloom_status_t (*validate)(const bloom_config_t *cfg);
-    bloom_status_t (*build)(bloom_graph_t *g);
-} bloom_preset_ops_t;
-
-extern const bloom_preset_ops_t bloom_preset_unity;
-#if BLOOM_USE_GAMEDEV
-extern const bloom_preset_ops_t bloom_preset_gamedev;
-#endif
-#if BLOOM_USE_XNA
-extern const bloom_preset_ops_t bloom_preset_xna;
-#endif
-#if BLOOM_USE_ATTENUATION
-extern const bloom_preset_ops_t bloom_preset_attenuation;
-#endif
-#if BLOOM_USE_ARM
-extern const bloom_preset_ops_t bloom_preset_arm;
-#endif
-#if BLOOM_USE_COD
-extern const bloom_preset_ops_t bloom_preset_cod;
-#endif
-/* The hooks of preset p, or NULL if unknown or compiled out. */
-const bloom_preset_ops_t *bloom_preset_ops(bloom_preset_t p);
-
 /* ---- graph construction (for build hooks) ---------------------------- */
 
 /* Level sizes by the common rule (bloom-model.md) for n requested levels;
@@ -194,19 +167,5 @@ void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);
  * rounded half up (exact for U16: 65535 -> 65536). */
 uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x);
 uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x);
-
-/* ---- the engine (bloom.c: planning and carving; bloom_graph.c: rows) ---- */
-
-/* Plan g from cfg (checked): build the preset's graph into `nodes` (room
- * for cap), dry run. BLOOM_E_WORKSPACE if the graph needs more nodes. */
-bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap);
-/* Workspace bytes of the engine: the struct, its nodes, the rings; with
- * base NULL (the engine at base otherwise) only count.
- * per_level[k] (if not NULL, zeroed) gets the ring bytes of level k. */
-uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level);
-/* The dry run: ring sizes, source rows, latency. */
-void bloom_dry_frame(bloom_graph_t *g);
-bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row);
-bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row);
 
 #endif

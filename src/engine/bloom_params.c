@@ -3,7 +3,7 @@
  * engine (bloom.c) plans it. */
 #include <string.h>
 
-#include "bloom_graph.h"
+#include "bloom_engine.h"
 #include "bloom_internal.h"
 
 int bloom_format_bpp(bloom_format_t fmt)

@@ -17,7 +17,7 @@
  *
  * Every value of the plane is a Q12.20 linear sample <= M = 2^28 - 16;
  * the sums that can pass 2^32 are formed in 64 bits (arm.md, overflow). */
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 #include "bloom_pixel.h"
 
 #include <string.h>

@@ -17,7 +17,7 @@
  * Reinhard and gamma cost no division and no float. */
 #include <string.h>
 
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 #include "bloom_pixel.h"
 #include "bloom_preset_gamedev.h"
 

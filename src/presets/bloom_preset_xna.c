@@ -20,7 +20,7 @@
  *     last pass:   v = min((v * I_q + 2^15) >> 16, LIN_MAX)
  *     SATURATE:    v = min(v, 2^F)
  *   screen: b = min(B, 2^F); v = b + ((S (2^F - b) + 2^(F-1)) >> F)  (u64 product). */
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 #include "bloom_pixel.h"
 
 #include <string.h>

@@ -2,7 +2,7 @@
  * "Bloom", Unity PPv2 style): sRGB decode, 4x4 box down with the soft knee
  * on level 1, box down to level L, tent up adding each level, a final tent
  * composited onto the source, sRGB encode. */
-#include "bloom_graph_rows.h"
+#include "bloom_stages.h"
 
 static void defaults(bloom_config_t *cfg)
 {

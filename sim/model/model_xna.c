@@ -4,7 +4,7 @@
  * Float mode: the maths in double precision with the parameters as the real
  * values they stand for (t = threshold / 2^16, I = srgb_to_linear(i)); the
  * working range [0, LIN_MAX] is enforced where the engine enforces it.
- * Bit-true mode: every integer rounding of src/bloom_preset_xna.c, written
+ * Bit-true mode: every integer rounding of src/presets/bloom_preset_xna.c, written
  * out per pixel (integers held in doubles, uint64_t where a product can
  * pass 2^53). */
 #include <math.h>

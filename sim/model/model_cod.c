@@ -4,7 +4,7 @@
  * (q / 65536): Karis-weighted 13-tap mean with luma 0.2126 R + 0.7152 G +
  * 0.0722 B of each box mean, the soft knee (only when the threshold is above
  * 0, as Bevy), the plain 13-tap, the 3x3 tent as bilinear taps, the blends.
- * Bit-true mode: every integer rounding of src/bloom_preset_cod.c, written
+ * Bit-true mode: every integer rounding of src/presets/bloom_preset_cod.c, written
  * from the box sums and 2-D weights directly (no separable passes, no fast
  * paths): exact sums in double (all below 2^53), products that can pass
  * 2^53 in uint64_t. */

@@ -3,7 +3,7 @@
 #ifndef BLOOM_GRAPH_ROWS_H
 #define BLOOM_GRAPH_ROWS_H
 
-#include "bloom_graph.h"
+#include "bloom_presets.h"
 
 bool bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
               void *dst);

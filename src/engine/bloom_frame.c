@@ -4,7 +4,7 @@
  * (bloom_graph.c). */
 #include <string.h>
 
-#include "bloom_graph.h"
+#include "bloom_engine.h"
 #include "bloom_internal.h"
 
 int bloom_rows_in(const bloom_t *b)

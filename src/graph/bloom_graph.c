@@ -1,0 +1,86 @@
+/* Graph construction for the presets' build hooks and the helpers their
+ * row functions share (bloom_graph.h). */
+#include "bloom_graph.h"
+
+#include <string.h>
+
+/* ---- construction ------------------------------------------------------ */
+
+void bg_levels(bloom_graph_t *g, int n)
+{
+    g->L = 1;
+    for (int k = 1; k <= BLOOM_MAX_LEVELS; k++) {
+        const int w = (g->w[k - 1] + 1) / 2, h = (g->h[k - 1] + 1) / 2;
+        if (k > 1 && (k > n || imin(w, h) < 2))
+            break;
+        g->w[k] = w;
+        g->h[k] = h;
+        g->L = k;
+    }
+}
+
+int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
+{
+    if (g->nnodes >= g->node_cap) {
+        g->failed = true;
+        return -1;
+    }
+    bg_node_t *n = &g->node[g->nnodes];
+    memset(n, 0, sizeof *n);
+    n->fn = fn;
+    n->w = w;
+    n->h = h;
+    n->ch = (uint8_t)ch;
+    n->level = (int8_t)level;
+    return g->nnodes++;
+}
+
+void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
+{
+    if (n < 0 || n >= g->nnodes || g->node[n].nin >= BG_MAX_IN || from >= n || from < BG_AUX || lo > hi ||
+        hi - lo > 30) {   /* zin holds a bit per row */
+        g->failed = true; /* inputs must be built before their readers */
+        return;
+    }
+    bg_node_t *nd = &g->node[n];
+    nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi};
+}
+
+/* ---- helpers for row functions ---------------------------------------- */
+
+void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst)
+{
+    const int bpp = g->src_bpp;
+    for (int x = 0; x < g->w[0]; x++)
+        bloom_pixel_decode(g->out.in_fmt, g->out.linear, src + (size_t)x * (size_t)bpp, dst + 3 * x);
+}
+
+#if BLOOM_USE_GRAPH
+uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x)
+{
+    if (g->cfg.aux_fmt == BLOOM_AUX_U16) {
+        uint16_t c16; /* rows need not be 2-byte aligned */
+        memcpy(&c16, (const uint8_t *)row + 2 * x, 2);
+        const uint32_t c = c16;
+        return c + ((c + 32768u) >> 16); /* c * 65536 / 65535, rounded: exact at 0 and 65535 */
+    }
+    const uint32_t c = ((const uint8_t *)row)[x];
+    return c * 257u + (c >= 128u); /* (c * 65536 + 127) / 255: c * 65536 = 255 * 257c + c */
+}
+
+/* The same code as a Q24 fraction of the plane's top code, rounded (the
+ * attenuation factor: at Q16 a constant depth gave every pixel the same
+ * rounding, up to 1.2e-5 of a bright sample). */
+uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x)
+{
+    if (g->cfg.aux_fmt == BLOOM_AUX_U16) {
+        uint16_t c16;
+        memcpy(&c16, (const uint8_t *)row + 2 * x, 2);
+        const uint32_t c = c16; /* c 2^24 / 65535 = 256 c + 256 c / 65535 */
+        return 256u * c + (256u * c + 32767u) / 65535u;
+    }
+    const uint32_t c = ((const uint8_t *)row)[x];
+    return 65793u * c + (c >= 128u); /* c 2^24 / 255 = 65793 c + c / 255 */
+}
+#endif
+

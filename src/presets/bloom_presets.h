@@ -1,0 +1,38 @@
+/* The presets (presets/): each is a file with three hooks, and the table
+ * the engine looks them up in (bloom_preset.c). */
+#ifndef BLOOM_PRESETS_H
+#define BLOOM_PRESETS_H
+
+#include "bloom_graph.h"
+
+/* Preset hooks: defaults, parameter checks, graph construction. build()
+ * sets g->L, sizes, the nodes, g->out_node and (to let dark source rows be
+ * skipped) g->dark_cut; g->cfg, g->knee, g->out and the level sizes of the
+ * common rule (bg_levels) are set before. */
+typedef struct {
+    const char *name;
+    void (*defaults)(bloom_config_t *cfg);
+    bloom_status_t (*validate)(const bloom_config_t *cfg);
+    bloom_status_t (*build)(bloom_graph_t *g);
+} bloom_preset_ops_t;
+
+extern const bloom_preset_ops_t bloom_preset_unity;
+#if BLOOM_USE_GAMEDEV
+extern const bloom_preset_ops_t bloom_preset_gamedev;
+#endif
+#if BLOOM_USE_XNA
+extern const bloom_preset_ops_t bloom_preset_xna;
+#endif
+#if BLOOM_USE_ATTENUATION
+extern const bloom_preset_ops_t bloom_preset_attenuation;
+#endif
+#if BLOOM_USE_ARM
+extern const bloom_preset_ops_t bloom_preset_arm;
+#endif
+#if BLOOM_USE_COD
+extern const bloom_preset_ops_t bloom_preset_cod;
+#endif
+/* The hooks of preset p, or NULL if unknown or compiled out. */
+const bloom_preset_ops_t *bloom_preset_ops(bloom_preset_t p);
+
+#endif
