@@ -21,5 +21,4 @@ void bloom_dry_frame(bloom_graph_t *g);
 bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row);
 bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row);
 
-
 #endif

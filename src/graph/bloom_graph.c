@@ -83,4 +83,3 @@ uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x)
     return 65793u * c + (c >= 128u); /* c 2^24 / 255 = 65793 c + c / 255 */
 }
 #endif
-
