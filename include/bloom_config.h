@@ -22,7 +22,7 @@
 
 /* Presets besides the default (sim/docs/presets.md). 0 leaves a preset's
  * code out; bloom_query() then refuses it with BLOOM_E_PRESET. With all of
- * them 0 the row-graph engine (src/engine/bloom_sched.c) is left out too. */
+ * them 0 the engine carries only the default's graph. */
 #ifndef BLOOM_USE_GAMEDEV
 #define BLOOM_USE_GAMEDEV 1
 #endif

@@ -68,17 +68,21 @@ static int32_t tag_of(const bloom_graph_t *g, int from, int r)
     return n->tag[r % n->cap];
 }
 
+/* The last row of input i that row r of node n reads. */
+static int input_top(const bloom_graph_t *g, const bg_node_t *n, int i, int r)
+{
+    const bg_input_t *in = &n->in[i];
+    return clampi(base_row(in->map, r) + in->hi, 0, in_height(g, in->node) - 1);
+}
+
 static bool ensure(bloom_graph_t *g, int ni, int j);
 
 /* Make sure every input row of node row r exists. */
 static bool ensure_inputs(bloom_graph_t *g, const bg_node_t *n, int r)
 {
-    for (int i = 0; i < n->nin; i++) {
-        const bg_input_t *in = &n->in[i];
-        const int top = clampi(base_row(in->map, r) + in->hi, 0, in_height(g, in->node) - 1);
-        if (!ensure(g, in->node, top))
+    for (int i = 0; i < n->nin; i++)
+        if (!ensure(g, n->in[i].node, input_top(g, n, i, r)))
             return false;
-    }
     return true;
 }
 
@@ -138,22 +142,33 @@ static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
     n->tag[s] = r | ZBIT;
 }
 
+/* Node ni's next row, its inputs known to exist: sized (dry run) or made.
+ * A row overwritten while still needed is caught where it is read (run_row
+ * compares the tags), so the write needs no check. */
+static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
+{
+    bg_node_t *n = &g->node[ni];
+    const int r = n->next;
+    if (g->dry)
+        n->need = imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
+    else
+        make_row(g, n, r);
+    n->next++;
+}
+
+/* Rows of node ni up to j (the source: pushed). The recursion runs down the
+ * chain of nodes, one small frame per node (g, n, j, i live across the
+ * call): the Cortex-M stack figure. */
 static bool ensure(bloom_graph_t *g, int ni, int j)
 {
     if (ni < 0)
         return j < g->src_n;
-    bg_node_t *n = &g->node[ni];
+    const bg_node_t *n = &g->node[ni];
     while (n->next <= j) {
-        const int r = n->next;
-        if (!ensure_inputs(g, n, r))
-            return false;
-        /* A row overwritten while still needed is caught where it is read
-         * (run_row compares the tags), so the write needs no check. */
-        if (g->dry)
-            n->need = imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
-        else
-            make_row(g, n, r);
-        n->next++;
+        for (int i = 0; i < n->nin; i++)
+            if (!ensure(g, n->in[i].node, input_top(g, n, i, n->next)))
+                return false;
+        next_row(g, ni);
     }
     return true;
 }

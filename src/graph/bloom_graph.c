@@ -43,6 +43,13 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
         return;
     }
     bg_node_t *nd = &g->node[n];
+    int rows = hi - lo + 1; /* the rows run_row gathers for one node row */
+    for (int i = 0; i < nd->nin; i++)
+        rows += nd->in[i].hi - nd->in[i].lo + 1;
+    if (rows > BG_MAX_ROWS) {
+        g->failed = true;
+        return;
+    }
     nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi};
 }
 

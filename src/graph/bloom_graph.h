@@ -41,9 +41,15 @@
 #define BG_MAX_NODES (2 * BLOOM_MAX_LEVELS + 4)
 #endif
 #define BG_MAX_IN 3
-#define BG_MAX_ROWS 40 /* input rows one node row reads, all inputs together */
-#define BG_SRC (-1)    /* input: the source frame (encoded pixels) */
-#define BG_AUX (-2)    /* input: the aux plane (uint8_t or uint16_t per pixel) */
+/* input rows one node row reads, all inputs together (the default's
+ * nodes read 4: a smaller array on the Cortex-M stack without presets) */
+#if BLOOM_USE_GRAPH
+#define BG_MAX_ROWS 40
+#else
+#define BG_MAX_ROWS 8
+#endif
+#define BG_SRC (-1) /* input: the source frame (encoded pixels) */
+#define BG_AUX (-2) /* input: the aux plane (uint8_t or uint16_t per pixel) */
 
 typedef enum {
     BG_DOWN, /* base(r) = 2r: the node has half the input's resolution */

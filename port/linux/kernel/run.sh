@@ -32,7 +32,7 @@
 # libgpiod) is a failure naming it instead ("FAIL test-linux WHAT: WHY").
 # qemu-system-x86 and busybox-static (and the GStreamer packages of
 # gst_cases.sh) are first installed with apt-get when missing and run as root. passed + failed + skipped must equal the count
-# README.md states ("N cases with all six presets"), else one more failure.
+# port/linux/README.md states ("N cases with all six presets"), else one more failure.
 # Env: LINUX_TEST_KVER, LINUX_TEST_TIMEOUT, LINUX_TEST_QEMU,
 # LINUX_TEST_BUSYBOX, LINUX_TEST_NO_INSTALL (no apt-get install or update),
 # LINUX_TEST_GPIO=0 (GPIO cases skipped), LINUX_TEST_GST=0 (GStreamer cases
@@ -454,14 +454,14 @@ if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null; then
 else
     bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" 2>/dev/null
 fi
-# the count README.md states ("29 cases with all six presets") is the count run
+# the count port/linux/README.md states ("29 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
-want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/README.md" | head -n 1)
+want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/port/linux/README.md" | head -n 1)
 if [ -z "$want" ]; then
-    bad "case count: README.md states none ('N cases with all six presets' not found)"
+    bad "case count: port/linux/README.md states none ('N cases with all six presets' not found)"
 elif [ "$n" -ne "$want" ]; then
-    bad "case count: $n cases ($pass passed + $fail failed + $nskip skipped), README.md states $want ('$want cases with all six presets'): make them equal"
+    bad "case count: $n cases ($pass passed + $fail failed + $nskip skipped), port/linux/README.md states $want ('$want cases with all six presets'): make them equal"
 else
-    echo "test-linux: $n cases, as README.md states"
+    echo "test-linux: $n cases, as port/linux/README.md states"
 fi
 closing
