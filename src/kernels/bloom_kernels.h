@@ -99,6 +99,9 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
  * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
 void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
 
+/* The instruction set a kernel set uses. */
+typedef enum { BLOOM_ISA_C, BLOOM_ISA_SSE2, BLOOM_ISA_AVX2, BLOOM_ISA_NEON } bloom_isa_t;
+
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
@@ -109,6 +112,7 @@ typedef struct {
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
     bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
     const char *name;           /* "c", "sse2", "avx2", "neon" */
+    bloom_isa_t isa;            /* the same as a value: presets pick their own twins by it */
 } bloom_kernels_t;
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);

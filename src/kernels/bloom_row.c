@@ -530,6 +530,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->eo = NULL;
 #endif
     k->name = "c";
+    k->isa = BLOOM_ISA_C;
     if (flags & BLOOM_FLAG_NO_SIMD)
         return;
 #if defined(BLOOM_SIMD_SSE2)
@@ -545,6 +546,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->scale = bloom_row_scale_sse2;
 #endif
     k->name = "sse2";
+    k->isa = BLOOM_ISA_SSE2;
 #if defined(BLOOM_SIMD_AVX2)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
         k->tent = bloom_row_tent_avx2;
@@ -553,6 +555,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
         k->htent_eo = bloom_row_htent_eo_avx2;
         k->eo = bloom_encode_eo_avx2;
         k->name = "avx2";
+        k->isa = BLOOM_ISA_AVX2;
     }
 #endif
 #elif defined(BLOOM_SIMD_NEON)
@@ -570,5 +573,6 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->eo = bloom_encode_eo_neon;
 #endif
     k->name = "neon";
+    k->isa = BLOOM_ISA_NEON;
 #endif
 }
