@@ -47,25 +47,12 @@ static int oldest_of(const bloom_graph_t *g, int from)
     return o;
 }
 
-static const void *row_of(const bloom_graph_t *g, int from, int r)
+/* The source (or aux) row held in slot `slot` of the source ring. */
+static const void *src_slot(const bloom_graph_t *g, int from, int slot)
 {
-    if (from < 0) {
-        const int slot = r % g->src_cap;
-        if (from == BG_SRC)
-            return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
-        return g->aux_copy ? g->aux_copy + (size_t)slot * g->aux_row_bytes : g->aux_ptr[slot];
-    }
-    const bg_node_t *n = &g->node[from];
-    return n->buf + (size_t)(r % n->cap) * (size_t)n->w * n->ch;
-}
-
-/* The tag of row r of input `from` (the source's for BG_AUX). */
-static int32_t tag_of(const bloom_graph_t *g, int from, int r)
-{
-    if (from < 0)
-        return g->src_tag[r % g->src_cap];
-    const bg_node_t *n = &g->node[from];
-    return n->tag[r % n->cap];
+    if (from == BG_SRC)
+        return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
+    return g->aux_copy ? g->aux_copy + (size_t)slot * g->aux_row_bytes : g->aux_ptr[slot];
 }
 
 /* The last row of input i that row r of node n reads. */
@@ -101,22 +88,33 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
     bool all_zero = g->skip && n->z;
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
-        const int hin = in_height(g, ip->node), b = base_row(ip->map, r);
+        const int from = ip->node, hin = in_height(g, from), b = base_row(ip->map, r);
+        /* the rows are consecutive (repeated at the edges): one division for
+         * the first slot, then a step with wrap-around */
+        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+        const int cap = src ? src->cap : g->src_cap;
+        const int32_t *tags = src ? src->tag : g->src_tag;
+        int prev = clampi(b + ip->lo, 0, hin - 1), slot = prev % cap;
         uint32_t zm = 0;
         in[i] = rows + used;
         for (int j = ip->lo; j <= ip->hi; j++) {
             const int rr = clampi(b + j, 0, hin - 1);
-            const int32_t tag = tag_of(g, ip->node, rr);
+            if (rr != prev) {
+                prev = rr;
+                slot = slot + 1 == cap ? 0 : slot + 1;
+            }
+            const int32_t tag = tags[slot];
 #if BLOOM_CHECK_RINGS
             if ((tag & ~ZBIT) != rr)
                 g->failed = true;
 #endif
             if (tag & ZBIT)
                 zm |= 1u << (j - ip->lo);
-            rows[used++] = row_of(g, ip->node, rr);
+            rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
+                               : src_slot(g, from, slot);
         }
         g->zin[i] = zm;
-        if (ip->node != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
+        if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
     if (all_zero)
@@ -165,9 +163,11 @@ static bool ensure(bloom_graph_t *g, int ni, int j)
         return j < g->src_n;
     const bg_node_t *n = &g->node[ni];
     while (n->next <= j) {
-        for (int i = 0; i < n->nin; i++)
-            if (!ensure(g, n->in[i].node, input_top(g, n, i, n->next)))
-                return false;
+        for (int i = 0; i < n->nin; i++) {
+            const int from = n->in[i].node, top = input_top(g, n, i, n->next);
+            if (from < 0 ? top >= g->src_n : g->node[from].next <= top && !ensure(g, from, top))
+                return false; /* (a row already made needs no call) */
+        }
         next_row(g, ni);
     }
     return true;
