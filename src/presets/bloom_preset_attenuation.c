@@ -14,26 +14,57 @@
 
 #if BLOOM_USE_ATTENUATION
 
+/* The factor of a half-resolution pixel from its four depth samples' Q24
+ * values (summed): f = max(2^24 - ((a (2^24 - d_q) + 2^15) >> 16), r 2^8). */
+static inline uint32_t factor(uint32_t q24_sum, uint32_t a, uint32_t fmin)
+{
+    const uint32_t d = (q24_sum + 2u) >> 2;
+    const uint32_t f = (1u << 24) - (uint32_t)(((uint64_t)a * ((1u << 24) - d) + 32768u) >> 16);
+    return f < fmin ? fmin : f;
+}
+
+/* The four depth codes under half-resolution pixel x, as the sum of their
+ * Q24 values (bg_aux_q24 each: for U8, c 2^24 / 255 rounded is 65793 c +
+ * [c >= 128], so the sum is 65793 (sum of c) + the count of c >= 128). */
+static inline uint32_t depth_sum(const bloom_graph_t *g, const void *r0, const void *r1, int x0, int x1)
+{
+    if (g->aux_bpp == 1) {
+        const uint8_t *a = (const uint8_t *)r0, *b = (const uint8_t *)r1;
+        const uint32_t c0 = a[x0], c1 = a[x1], c2 = b[x0], c3 = b[x1];
+        return 65793u * (c0 + c1 + c2 + c3) + (c0 >> 7) + (c1 >> 7) + (c2 >> 7) + (c3 >> 7);
+    }
+    return bg_aux_q24(g, r0, x0) + bg_aux_q24(g, r0, x1) + bg_aux_q24(g, r1, x0) + bg_aux_q24(g, r1, x1);
+}
+
 static bool d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     uint32_t *row = (uint32_t *)dst;
     if (!bg_fn_d1(g, n, r, in, dst))
         return false; /* zero times the factor */
-    const uint32_t a = g->cfg.p.attenuation, rmin = g->cfg.p.max_reduction;
+    const uint32_t a = g->cfg.p.attenuation, fmin = g->cfg.p.max_reduction << 8;
+    if (a == 0)
+        return true; /* the factor is exactly 1 */
     const int w0 = g->w[0];
     for (int x = 0; x < n->w; x++) {
+        uint32_t *p = row + 3 * x;
+        if (x + 4 <= n->w && (x & 3) == 0) { /* four zero pixels stay zero: most of a dark scene */
+            uint32_t o = 0;
+            for (int i = 0; i < 12; i++)
+                o |= p[i];
+            if (!o) {
+                x += 3;
+                continue;
+            }
+        }
+        if (!(p[0] | p[1] | p[2]))
+            continue;
         const int x0 = 2 * x, x1 = 2 * x + 1 < w0 ? 2 * x + 1 : w0 - 1;
-        const uint32_t d = (bg_aux_q24(g, in[1][0], x0) + bg_aux_q24(g, in[1][0], x1) +
-                            bg_aux_q24(g, in[1][1], x0) + bg_aux_q24(g, in[1][1], x1) + 2u) >>
-                           2;
-        uint32_t f = (1u << 24) - (uint32_t)(((uint64_t)a * ((1u << 24) - d) + 32768u) >> 16);
-        if (f < rmin << 8)
-            f = rmin << 8;
+        const uint32_t f = factor(depth_sum(g, in[1][0], in[1][1], x0, x1), a, fmin);
         if (f == 1u << 24)
             continue;
         for (int c = 0; c < 3; c++)
-            row[3 * x + c] = (uint32_t)(((uint64_t)row[3 * x + c] * f + (1u << 23)) >> 24);
+            p[c] = (uint32_t)(((uint64_t)p[c] * f + (1u << 23)) >> 24);
     }
     return true;
 }
