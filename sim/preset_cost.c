@@ -6,14 +6,18 @@
  *       interleaved so that load changes hit every preset alike), as ratios
  *       to the default preset and to a cold memcpy of the frame measured in
  *       the same rounds; prints a table, writes Markdown and CSV.
- *   preset_cost --one NAME W H
- *       one bloom_process call of preset NAME (for callgrind: make
- *       preset-icount).
+ *   preset_cost --one NAME W H [dark]
+ *       one bloom_process call of preset NAME on the scene, or with `dark`
+ *       on the dark frame (for callgrind: make preset-icount).
  *   preset_cost --list    the presets this build has.
  *
- * The scene is sim/bench's (a real photograph stretched to the frame, plus
- * bright spots). Presets with an aux plane get a synthetic one: a vertical
- * depth ramp (attenuation: far at the top), no mask (arm). */
+ * Two frames per size: the scene of sim/bench (a real photograph stretched
+ * to the frame, plus bright spots), and a dark frame (the same with every
+ * code scaled to at most 60, linear light 0.045: below every preset's
+ * threshold but cod's default 0, where nothing is dark). Each preset runs
+ * with its SIMD kernels and with BLOOM_FLAG_NO_SIMD in the same rounds.
+ * Presets with an aux plane get a synthetic one: a vertical depth ramp
+ * (attenuation: far at the top), no mask (arm). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,12 +56,13 @@ typedef struct {
     size_t ws_bytes;
 } engine_t;
 
-static int engine_make(engine_t *e, bloom_preset_t p, int w, int h)
+static int engine_make(engine_t *e, bloom_preset_t p, int w, int h, uint32_t flags)
 {
     memset(e, 0, sizeof *e);
     bloom_config_default(&e->cfg, w, h);
     if (bloom_config_preset(&e->cfg, p) != BLOOM_OK)
         return -1;
+    e->cfg.flags |= flags;
     bloom_info_t info;
     bloom_status_t st = bloom_query(&e->cfg, &info);
     if (st != BLOOM_OK) {
@@ -100,7 +105,7 @@ static int run(engine_t *e, const uint8_t *src, uint8_t *dst, int w)
     return bloom_process(e->b, src, (ptrdiff_t)w * 3, dst, (ptrdiff_t)w * 3) == BLOOM_OK ? 0 : -1;
 }
 
-static int one(const char *name, int w, int h)
+static int one(const char *name, int w, int h, int dark)
 {
     const int p = bloom_preset_from_name(name);
     if (p < 0 || !bloom_preset_available((bloom_preset_t)p)) {
@@ -110,8 +115,14 @@ static int one(const char *name, int w, int h)
     char err[256];
     uint8_t *src = malloc((size_t)w * (size_t)h * 3), *dst = malloc((size_t)w * (size_t)h * 3);
     engine_t e;
-    if (!src || !dst || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err) ||
-        engine_make(&e, (bloom_preset_t)p, w, h) || run(&e, src, dst, w)) {
+    if (!src || !dst || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err)) {
+        fprintf(stderr, "preset_cost: %s %dx%d: no scene\n", name, w, h);
+        return 1;
+    }
+    if (dark) /* the dark frame of measure() */
+        for (size_t i = 0; i < (size_t)w * (size_t)h * 3; i++)
+            src[i] = (uint8_t)(src[i] * 60u / 255u);
+    if (engine_make(&e, (bloom_preset_t)p, w, h, 0) || run(&e, src, dst, w)) {
         fprintf(stderr, "preset_cost: %s %dx%d failed\n", name, w, h);
         return 1;
     }
@@ -125,13 +136,90 @@ static int one(const char *name, int w, int h)
     return 0;
 }
 
+/* One size and frame: every preset with and without SIMD and a cold memcpy,
+ * interleaved in each of `runs` rounds; medians, ratios within the run. */
+static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
+{
+    const size_t fb = (size_t)w * (size_t)h * 3;
+    char err[256];
+    uint8_t *src = malloc(fb), *dst = malloc(fb);
+    size_t nring = RING_BYTES / fb < 4 ? 4 : RING_BYTES / fb;
+    uint8_t *ring = malloc(nring * fb);
+    if (!src || !dst || !ring || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err)) {
+        fprintf(stderr, "preset_cost: %s\n", src && dst && ring ? err : "out of memory");
+        return 1;
+    }
+    if (dark)
+        for (size_t i = 0; i < fb; i++)
+            src[i] = (uint8_t)(src[i] * 60u / 255u);
+    for (size_t i = 0; i < nring; i++)
+        memcpy(ring + i * fb, src, fb);
+    enum { NE = 2 * BLOOM_PRESET_COUNT }; /* preset p: engine 2p with SIMD, 2p + 1 C only */
+    engine_t e[NE];
+    int have[NE];
+    double *t[NE + 1];
+    for (int i = 0; i <= NE; i++)
+        t[i] = calloc((size_t)runs, sizeof(double));
+    for (int i = 0; i < NE; i++)
+        have[i] = bloom_preset_available((bloom_preset_t)(i / 2)) &&
+                  !engine_make(&e[i], (bloom_preset_t)(i / 2), w, h, i % 2 ? BLOOM_FLAG_NO_SIMD : 0u) &&
+                  !run(&e[i], src, dst, w); /* warm-up */
+    size_t slot = 0;
+    for (int r = 0; r < runs; r++) {
+        for (int i = 0; i < NE; i++) {
+            if (!have[i])
+                continue;
+            const double t0 = now_ms();
+            run(&e[i], src, dst, w);
+            t[i][r] = now_ms() - t0;
+        }
+        /* the floor: copy a frame that is not in any cache */
+        const double t0 = now_ms();
+        memcpy(dst, ring + slot * fb, fb);
+        t[NE][r] = now_ms() - t0;
+        slot = (slot + 1) % nring;
+    }
+    double med[NE];
+    for (int i = 0; i < NE; i++)
+        med[i] = have[i] ? median(t[i], runs) : 0.0;
+    const double mc = median(t[NE], runs), def = med[0];
+    char size[32];
+    const char *frame = dark ? "dark" : "scene";
+    snprintf(size, sizeof size, "%dx%d", w, h);
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        if (!have[2 * p] || !have[2 * p + 1])
+            continue;
+        const double m = med[2 * p], mcn = med[2 * p + 1];
+        const char *name = bloom_preset_name((bloom_preset_t)p);
+        printf("%-10s %-6s %-12s %10.3f %10.2f %10.1f %10.3f %8.2f %12zu\n", size, frame, name, m, m / def,
+               m / mc, mcn, m / mcn, e[2 * p].ws_bytes);
+        if (fc)
+            fprintf(fc, "%s,%s,%s,%.4f,%.3f,%.2f,%.4f,%.3f,%zu\n", size, frame, name, m, m / def, m / mc, mcn,
+                    m / mcn, e[2 * p].ws_bytes);
+        if (fm)
+            fprintf(fm, "| %s | %s | %s | %.2f | %.2f | %.1f | %.2f | %.2f | %zu |\n", size, frame, name, m,
+                    m / def, m / mc, mcn, m / mcn, e[2 * p].ws_bytes);
+    }
+    for (int i = 0; i < NE; i++)
+        if (have[i])
+            engine_drop(&e[i]);
+    printf("%-10s %-6s %-12s %10.3f %10.2f %10.1f\n", size, frame, "memcpy", mc, mc / def, 1.0);
+    for (int i = 0; i <= NE; i++)
+        free(t[i]);
+    free(src);
+    free(dst);
+    free(ring);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int sw[MAX_SIZES], sh[MAX_SIZES], nsizes = 0, runs = 15;
     const char *md = NULL, *csv = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--one") && i + 3 < argc)
-            return one(argv[i + 1], atoi(argv[i + 2]), atoi(argv[i + 3]));
+            return one(argv[i + 1], atoi(argv[i + 2]), atoi(argv[i + 3]),
+                       i + 4 < argc && !strcmp(argv[i + 4], "dark"));
         if (!strcmp(argv[i], "--list")) {
             for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
                 if (bloom_preset_available((bloom_preset_t)p))
@@ -154,7 +242,7 @@ int main(int argc, char **argv)
             csv = argv[++i];
         } else {
             fprintf(stderr, "usage: preset_cost [--sizes WxH,...] [--runs N] [--md F] [--csv F] | --one NAME "
-                            "W H | --list\n");
+                            "W H [dark] | --list\n");
             return 2;
         }
     }
@@ -168,72 +256,20 @@ int main(int argc, char **argv)
         return 1;
     }
     if (fc)
-        fprintf(fc, "size,preset,median_ms,x_default,x_memcpy,workspace_bytes\n");
+        fprintf(
+            fc,
+            "size,frame,preset,median_ms,x_default,x_memcpy,c_only_ms,simd_over_c_only,workspace_bytes\n");
     if (fm)
-        fprintf(fm, "| size | preset | median ms | x default | x cold memcpy | workspace bytes |\n"
-                    "|---|---|---:|---:|---:|---:|\n");
-    printf("%-10s %-12s %10s %10s %10s %12s\n", "size", "preset", "median ms", "x default", "x memcpy",
-           "workspace");
-    for (int s = 0; s < nsizes; s++) {
-        const int w = sw[s], h = sh[s];
-        const size_t fb = (size_t)w * (size_t)h * 3;
-        char err[256];
-        uint8_t *src = malloc(fb), *dst = malloc(fb);
-        size_t nring = RING_BYTES / fb < 4 ? 4 : RING_BYTES / fb;
-        uint8_t *ring = malloc(nring * fb);
-        if (!src || !dst || !ring || scene_make(SCENE_IMAGE_DEFAULT, w, h, src, err, sizeof err)) {
-            fprintf(stderr, "preset_cost: %s\n", src && dst && ring ? err : "out of memory");
-            return 1;
-        }
-        for (size_t i = 0; i < nring; i++)
-            memcpy(ring + i * fb, src, fb);
-        engine_t e[BLOOM_PRESET_COUNT];
-        int have[BLOOM_PRESET_COUNT];
-        double *t[BLOOM_PRESET_COUNT + 1];
-        for (int p = 0; p <= BLOOM_PRESET_COUNT; p++)
-            t[p] = calloc((size_t)runs, sizeof(double));
-        for (int p = 0; p < BLOOM_PRESET_COUNT; p++)
-            have[p] = bloom_preset_available((bloom_preset_t)p) &&
-                      !engine_make(&e[p], (bloom_preset_t)p, w, h) && !run(&e[p], src, dst, w); /* warm-up */
-        size_t slot = 0;
-        for (int r = 0; r < runs; r++) {
-            for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
-                if (!have[p])
-                    continue;
-                const double t0 = now_ms();
-                run(&e[p], src, dst, w);
-                t[p][r] = now_ms() - t0;
-            }
-            /* the floor: copy a frame that is not in any cache */
-            const double t0 = now_ms();
-            memcpy(dst, ring + slot * fb, fb);
-            t[BLOOM_PRESET_COUNT][r] = now_ms() - t0;
-            slot = (slot + 1) % nring;
-        }
-        const double mc = median(t[BLOOM_PRESET_COUNT], runs), def = median(t[0], runs);
-        char size[32];
-        snprintf(size, sizeof size, "%dx%d", w, h);
-        for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
-            if (!have[p])
-                continue;
-            const double m = p == 0 ? def : median(t[p], runs);
-            printf("%-10s %-12s %10.3f %10.2f %10.1f %12zu\n", size, bloom_preset_name((bloom_preset_t)p), m,
-                   m / def, m / mc, e[p].ws_bytes);
-            if (fc)
-                fprintf(fc, "%s,%s,%.4f,%.3f,%.2f,%zu\n", size, bloom_preset_name((bloom_preset_t)p), m,
-                        m / def, m / mc, e[p].ws_bytes);
-            if (fm)
-                fprintf(fm, "| %s | %s | %.2f | %.2f | %.1f | %zu |\n", size,
-                        bloom_preset_name((bloom_preset_t)p), m, m / def, m / mc, e[p].ws_bytes);
-            engine_drop(&e[p]);
-        }
-        printf("%-10s %-12s %10.3f %10.2f %10.1f\n", size, "memcpy", mc, mc / def, 1.0);
-        for (int p = 0; p <= BLOOM_PRESET_COUNT; p++)
-            free(t[p]);
-        free(src);
-        free(dst);
-        free(ring);
-    }
+        fprintf(fm,
+                "| size | frame | preset | median ms | x default | x cold memcpy | C-only ms | SIMD / C-only "
+                "| workspace bytes |\n"
+                "|---|---|---|---:|---:|---:|---:|---:|---:|\n");
+    printf("%-10s %-6s %-12s %10s %10s %10s %10s %8s %12s\n", "size", "frame", "preset", "median ms",
+           "x default", "x memcpy", "C-only ms", "SIMD/C", "workspace");
+    for (int s = 0; s < nsizes; s++)
+        for (int dark = 0; dark < 2; dark++)
+            if (measure(sw[s], sh[s], dark, runs, fm, fc))
+                return 1;
     if (fm)
         fclose(fm);
     if (fc)
