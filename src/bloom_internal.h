@@ -23,6 +23,32 @@
 #define BLOOM_LIN_ONE (1u << BLOOM_LIN_BITS)
 #define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << BLOOM_Q16_SHIFT) /* 2^28 - 16 at 20 bits */
 
+/* Bytes per pixel of a format built in, 0 otherwise (bloom_format_bpp,
+ * inline for the row kernels). */
+static inline int bloom_bpp(bloom_format_t fmt)
+{
+    switch (fmt) {
+#if BLOOM_USE_RGB888
+    case BLOOM_FMT_RGB888:
+        return 3;
+#endif
+#if BLOOM_USE_XRGB8888
+    case BLOOM_FMT_XRGB8888:
+        return 4;
+#endif
+#if BLOOM_USE_RGB565
+    case BLOOM_FMT_RGB565:
+        return 2;
+#endif
+#if BLOOM_USE_RGBQ16
+    case BLOOM_FMT_RGBQ16:
+        return 12;
+#endif
+    default:
+        return 0;
+    }
+}
+
 /* Small integer helpers shared by the core's files. */
 static inline int imin(int a, int b)
 {
@@ -120,8 +146,17 @@ typedef struct {
     uint32_t intensity; /* I_q, Q16.16 */
 } bloom_out_t;
 
-/* floor(n / d) where the quotient is known to fit in 32 bits. */
+/* floor(n / d) where the quotient is known to fit in 32 bits: a native
+ * divide on 64-bit hosts (inline: the knee calls it twice a pixel), the
+ * shift-subtract loop elsewhere (no __aeabi_uldivmod on Cortex-M). */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+static inline uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d)
+{
+    return (uint32_t)(n / d);
+}
+#else
 uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d);
+#endif
 /* The portable shift-subtract loop behind it (tested against '/'). */
 uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d);
 /* srgb_to_linear of a gamma-space Q16.16 value, integer only. */

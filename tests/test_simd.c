@@ -357,8 +357,8 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                 dk.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
                 dk.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
                 dk.q16 = 0;
-                for (int dv = 0; dv < 2; dv++) {
-                    if (dv) { /* a smaller dark code only skips less */
+                for (int dv = 0; dv < 3; dv++) { /* dv 2: every code random (long bright runs) */
+                    if (dv == 1) {               /* a smaller dark code only skips less */
                         dk.c8 /= 2u;
                         dk.c6 /= 2u;
                         dk.c5 /= 2u;
@@ -372,11 +372,12 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         for (size_t i = 0; i < nb; i++) {
                             const uint32_t x = rng_next(&seed);
                             /* below or at the dark code, or a bright spot now and then */
-                            b[i] = (uint8_t)((x >> 8) % 97u == 0u ? x & 255u
-                                                                  : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
+                            b[i] = (uint8_t)(dv == 2 || (x >> 8) % 97u == 0u
+                                                 ? x & 255u
+                                                 : (dk.c8 ? (x & 255u) % (dk.c8 + 1u) : 0u));
                         }
-                        if (fmts[fi] ==
-                            BLOOM_FMT_RGB565) /* fields at most their dark codes, bright now and then */
+                        if (fmts[fi] == BLOOM_FMT_RGB565 &&
+                            dv < 2) /* fields at most their dark codes, bright now and then */
                             for (int i = 0; i < sw; i++) {
                                 const uint32_t x = rng_next(&seed);
                                 uint32_t w = ((x % (dk.c5 + 1u)) << 11) | (((x >> 8) % (dk.c6 + 1u)) << 5) |

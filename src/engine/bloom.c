@@ -78,6 +78,12 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     if (g->failed || g->out_node < 0 || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0] ||
         g->scratch_rows < 0 || g->scratch_rows > BG_SCRATCH)
         return BLOOM_E_INTERNAL;
+    for (int i = 0; i < g->nnodes; i++)
+        for (int j = 0; j < g->node[i].nin; j++)
+            if (g->node[i].in[j].node < 0) {
+                g->src_reader[g->nsrc_readers++] = (int8_t)i;
+                break;
+            }
 #if BLOOM_USE_SKIP
     g->dark_src = g->skip && g->dark_cut != NO_CUT;
     if (g->dark_src)

@@ -6,30 +6,6 @@
 #include "bloom_engine.h"
 #include "bloom_internal.h"
 
-int bloom_format_bpp(bloom_format_t fmt)
-{
-    switch (fmt) {
-#if BLOOM_USE_RGB888
-    case BLOOM_FMT_RGB888:
-        return 3;
-#endif
-#if BLOOM_USE_XRGB8888
-    case BLOOM_FMT_XRGB8888:
-        return 4;
-#endif
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565:
-        return 2;
-#endif
-#if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16:
-        return 12;
-#endif
-    default:
-        return 0;
-    }
-}
-
 const char *bloom_status_str(bloom_status_t st)
 {
     switch (st) {

@@ -36,8 +36,10 @@ static int oldest_of(const bloom_graph_t *g, int from)
 {
     int o = FAR;
     const int hin = in_height(g, from);
-    for (int c = (from < 0 ? 0 : from + 1); c < g->nnodes; c++) {
-        const bg_node_t *n = &g->node[c];
+    /* the source's readers are listed; a node's come after it */
+    const int nc = from < 0 ? g->nsrc_readers : g->nnodes;
+    for (int ci = (from < 0 ? 0 : from + 1); ci < nc; ci++) {
+        const bg_node_t *n = &g->node[from < 0 ? g->src_reader[ci] : ci];
         if (n->next >= n->h)
             continue;
         for (int i = 0; i < n->nin; i++)

@@ -420,7 +420,7 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
 
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o)
 {
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     /* decode then encode gives the code back for these (tests/test_fixed.c) */
     if (!o->debug && o->in_fmt == o->out_fmt &&
         (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565)) {
@@ -465,7 +465,7 @@ void bloom_row_composite_c(uint32_t *bl, const uint32_t *sv, int n, uint32_t int
 void bloom_row_out_c(const uint32_t *const u[3], int odd, const uint8_t *src, uint8_t *dst, int w, int sw,
                      const bloom_out_t *o)
 {
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     const uint64_t I = o->intensity;
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {

@@ -196,6 +196,73 @@ static inline bool bright18(const uint8_t *const s[4], size_t off, bool x8, __m2
     return !_mm256_testz_si256(_mm256_subs_epu8(a, c), _mm256_set1_epi8(-1));
 }
 
+/* The box from 8-bit sRGB RGB888 source rows for destination pixels
+ * xa .. xb-1, 8 at a time where no column clamps and the 64-byte loads stay
+ * in the row: the 18 source pixels 2x-1 .. 2x+16 of each of the 4 rows are
+ * decoded by table gathers and summed down the rows into v[0..53]
+ * (byte order: pixel, channel); destination sample o = 3j + c (pixel x+j,
+ * channel c) is v[6j + c] + v[6j + c + 3] + v[6j + c + 6] + v[6j + c + 9],
+ * four gathers from v, rounded half to even (BLOOM_BOX_RND). The sums are
+ * those of the C box (16 decoded samples < 2^25 each: exact). The rest of
+ * the range goes to bloom_row_box_src_range_c. */
+static void box_src_rgb888(const uint8_t *const s[4], uint32_t *dst, int xa, int xb, int sw)
+{
+    const size_t row = (size_t)sw * 3u;
+    int x = xa < 1 ? 1 : xa;
+    if (x > xa)
+        bloom_row_box_src_range_c(s, BLOOM_FMT_RGB888, false, dst, xa, x, sw);
+    const int *const tab = (const int *)(const void *)bloom_srgb_dec8;
+    /* lane l of idx[m]: the v index of output o = 8m + l for k = 0, 6 (o / 3) + o % 3 */
+    static const int32_t vi[24] = {0,  1,  2,  6,  7,  8,  12, 13, 14, 18, 19, 20,
+                                   24, 25, 26, 30, 31, 32, 36, 37, 38, 42, 43, 44};
+    const __m256i idx[3] = {LD8(vi), LD8(vi + 8), LD8(vi + 16)};
+    const __m256i seven = _mm256_set1_epi32(7), one = _mm256_set1_epi32(1);
+    for (; x + 8 <= xb && 2 * x + 16 <= sw - 1 && (size_t)(2 * x - 1) * 3u + 64u <= row; x += 8) {
+        const size_t off = (size_t)(2 * x - 1) * 3u;
+        int32_t v[56];
+        __m256i a0 = _mm256_setzero_si256(), a1 = a0, a2 = a0, a3 = a0, a4 = a0, a5 = a0, a6 = a0;
+        for (int r = 0; r < 4; r++) { /* bytes 8q .. 8q + 7 into a_q (56 read, 54 used) */
+            const uint8_t *p = s[r] + off;
+            const __m256i lo = LD8(p), hi = LD8(p + 32);
+            const __m128i b0 = _mm256_castsi256_si128(lo), b1 = _mm256_extracti128_si256(lo, 1),
+                          b2 = _mm256_castsi256_si128(hi), b3 = _mm256_extracti128_si256(hi, 1);
+#define DEC8(b) _mm256_i32gather_epi32(tab, _mm256_cvtepu8_epi32(b), 4)
+            a0 = _mm256_add_epi32(a0, DEC8(b0));
+            a1 = _mm256_add_epi32(a1, DEC8(_mm_srli_si128(b0, 8)));
+            a2 = _mm256_add_epi32(a2, DEC8(b1));
+            a3 = _mm256_add_epi32(a3, DEC8(_mm_srli_si128(b1, 8)));
+            a4 = _mm256_add_epi32(a4, DEC8(b2));
+            a5 = _mm256_add_epi32(a5, DEC8(_mm_srli_si128(b2, 8)));
+            a6 = _mm256_add_epi32(a6, DEC8(b3));
+#undef DEC8
+        }
+        const __m256i acc[7] = {a0, a1, a2, a3, a4, a5, a6};
+        for (int q = 0; q < 7; q++)
+            ST8(v + 8 * q, acc[q]);
+        uint32_t *d = dst + (size_t)x * 3u;
+        for (int m = 0; m < 3; m++) {
+            __m256i sum = _mm256_i32gather_epi32(v, idx[m], 4);
+            for (int k = 1; k < 4; k++)
+                sum = _mm256_add_epi32(
+                    sum, _mm256_i32gather_epi32(v, _mm256_add_epi32(idx[m], _mm256_set1_epi32(3 * k)), 4));
+            /* (sum + 7 + ((sum >> 4) & 1)) >> 4: half to even */
+            const __m256i odd = _mm256_and_si256(_mm256_srli_epi32(sum, 4), one);
+            ST8(d + 8 * m, _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(sum, seven), odd), 4));
+        }
+    }
+    bloom_row_box_src_range_c(s, BLOOM_FMT_RGB888, false, dst, x, xb, sw);
+}
+
+/* The box for a run: the gathers for 8-bit sRGB RGB888, else the C box. */
+static void box_src_run(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int xa,
+                        int xb, int sw)
+{
+    if (BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888 && !linear)
+        box_src_rgb888(s, dst, xa, xb, sw);
+    else
+        bloom_row_box_src_range_c(s, fmt, linear, dst, xa, xb, sw);
+}
+
 /* bloom_row_d1_sse2 in blocks of 8 level-1 pixels (RGB888 and XRGB8888;
  * the others go to the SSE2 twin): a block whose 4 x 18 source pixels have
  * no colour code above the dark code is written as zeros, the others run
@@ -215,7 +282,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         if (bright18(s, (size_t)(2 * x - 1) * bpp, x8, c))
             continue; /* computed with its run */
         if (run < x) {
-            bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);
+            box_src_run(s, fmt, linear, dst, run, x, sw);
             any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
         }
         uint32_t *d = dst + (size_t)x * 3u;
@@ -225,7 +292,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         run = x + 8;
     }
     if (run < dw) {
-        bloom_row_box_src_range_c(s, fmt, linear, dst, run, dw, sw);
+        box_src_run(s, fmt, linear, dst, run, dw, sw);
         any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
     }
     return any;

@@ -24,7 +24,7 @@
 static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
     uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
@@ -108,7 +108,7 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
         return;
     }
 #endif
-    const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     if (o->debug)
         memset(sv, 0, sizeof sv);

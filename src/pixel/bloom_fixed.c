@@ -22,14 +22,12 @@ uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d)
     return q;
 }
 
+#if UINTPTR_MAX <= 0xFFFFFFFFu
 uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d)
 {
-#if UINTPTR_MAX > 0xFFFFFFFFu
-    return (uint32_t)(n / d); /* native 64-bit divide */
-#else
-    return bloom_div_u64_u32_loop(n, d); /* no __aeabi_uldivmod on Cortex-M */
-#endif
+    return bloom_div_u64_u32_loop(n, d);
 }
+#endif
 
 /* x (n little-endian 32-bit limbs) *= m; returns the new limb count. */
 static int mp_mul(uint32_t *x, int n, uint32_t m)

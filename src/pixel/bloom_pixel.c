@@ -406,3 +406,8 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
         return max_bytes(p, 3u * (size_t)n) <= d->c8;
     }
 }
+
+int bloom_format_bpp(bloom_format_t fmt)
+{
+    return bloom_bpp(fmt);
+}
