@@ -134,7 +134,7 @@ drops):
 |---|---|---|---|
 EOF
 for b in min rgb565 full; do
-    "$ARM_SIZE" -A "$MCU_OUT/m4-$b"/core/*.o | awk -v n="$(name $b)" '
+    "$ARM_SIZE" -A "$MCU_OUT/m4-$b"/core/*/*.o | awk -v n="$(name $b)" '
         $1 ~ /^\.text/ { t += $2 } $1 ~ /^\.rodata/ { r += $2 } $1 ~ /^\.(data|bss)/ { d += $2 }
         END { printf "| %s | %d | %d | %d |\n", n, t, r, d }'
 done
@@ -185,7 +185,7 @@ for b in min minnc rgb565 full; do for cpu in m4 m7; do for l in $MCU_LEVELS; do
     echo "| $(name $b) | $(cpuname $cpu) | $l | $(fig $v $l "stack bloom_process") | $(fig $v $l "stack bloom_init") | $(fig $v $l "stack whole program") |"
 done; done; done
 su() { # function -> own frame bytes from the minimal build's .su files
-    cat "$MCU_OUT/m4-min"/core/*.su | awk -F'\t' -v f="$1" '$1 ~ ":" f "$" { print $2; exit }'
+    cat "$MCU_OUT/m4-min"/core/*/*.su | awk -F'\t' -v f="$1" '$1 ~ ":" f "$" { print $2; exit }'
 }
 s5=$(fig m4-min 5 "stack bloom_process"); s7=$(fig m4-min 7 "stack bloom_process")
 inc=$(( (s7 - s5) / 2 ))
@@ -204,7 +204,7 @@ Cortex-M4; "static" = fixed size):
 | function | bytes | |
 |---|---|---|
 EOF
-cat "$MCU_OUT/m4-min"/core/*.su | awk -F'\t' '{ n = split($1, a, ":"); printf "%s\t%s\t%s\n", a[n], $2, $3 }' |
+cat "$MCU_OUT/m4-min"/core/*/*.su | awk -F'\t' '{ n = split($1, a, ":"); printf "%s\t%s\t%s\n", a[n], $2, $3 }' |
     sort -t"$(printf '\t')" -k2 -n -r | awk -F'\t' '$2 > 0 { printf "| `%s` | %d | %s |\n", $1, $2, $3 }'
 cat <<EOF
 

@@ -1,7 +1,7 @@
 # Split a GNU ld map file's allocated sections by origin. Prints
 #   "<output section> <core|fw|ws|lib|fill> <bytes>" (summed), and
 #   "sym <output section> <input section> <bytes>" for each core input section.
-# Origin from the object path: .../core/*.o is the engine, .../fw/*.o the
+# Origin from the object path: .../core/*.o or .../core/MODULE/*.o is the engine, .../fw/*.o the
 # firmware (.bss.fw_ws, the workspace, apart), archives the C library/libgcc.
 function hex(s,    i, n) {
     s = tolower(s); sub(/^0x/, "", s); n = 0
@@ -12,7 +12,7 @@ function add(name, size, file,    cat) {
     if (!(out in keep) || size == 0) return
     if (name == "*fill*") cat = "fill"
     else if (name == ".bss.fw_ws") cat = "ws"
-    else if (file ~ /\/core\/[^\/]*\.o$/) cat = "core"
+    else if (file ~ /\/core\/([^\/]*\/)?[^\/]*\.o$/) cat = "core"
     else if (file ~ /\/fw\/[^\/]*\.o$/) cat = "fw"
     else if (file ~ /\.a\(/) cat = "lib"
     else cat = "other"

@@ -66,7 +66,7 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     g->src_bpp = bloom_format_bpp(cfg->in_fmt);
     g->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
     g->src_row_bytes = (size_t)cfg->width * (size_t)g->src_bpp;
-    g->aux_row_bytes = (size_t)cfg->width * (size_t)g->aux_bpp;
+    g->aux_row_bytes = (size_t)cfg->width * (size_t)bg_aux_bpp(g);
     g->scratch_len = (size_t)cfg->width * 3u + 16u;
     g->out_node = -1;
     g->dark_cut = NO_CUT;
@@ -105,13 +105,13 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
     if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
         const uint64_t before = off;
         TAKE(g->src_copy, uint8_t, (uint64_t)cap * g->src_row_bytes);
-        if (g->aux_bpp)
+        if (bg_aux_bpp(g))
             TAKE(g->aux_copy, uint8_t, (uint64_t)cap * g->aux_row_bytes);
         if (per_level)
             per_level[0] += (size_t)(off - before);
     } else {
         TAKE(g->src_ptr, const uint8_t *, cap);
-        if (g->aux_bpp)
+        if (bg_aux_bpp(g))
             TAKE(g->aux_ptr, const uint8_t *, cap);
     }
     TAKE(g->src_tag, int32_t, cap);

@@ -30,7 +30,7 @@ bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
 {
     if (!b || !aux)
         return BLOOM_E_NULL;
-    if (!b->aux_bpp)
+    if (!bg_aux_bpp(b))
         return BLOOM_E_AUX;
     b->aux_frame = (const uint8_t *)aux;
     b->aux_stride = aux_stride;
@@ -145,7 +145,7 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         return BLOOM_E_ALIAS;
     const uint8_t *aux = NULL;
     ptrdiff_t aux_stride = 0;
-    if (b->aux_bpp) {
+    if (bg_aux_bpp(b)) {
         aux = b->aux_frame;
         aux_stride = b->aux_stride;
         if (!aux)

@@ -87,7 +87,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN] = {NULL, NULL, NULL};
     int used = 0;
-    bool all_zero = g->skip && n->z;
+    bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
         const int from = ip->node, hin = in_height(g, from), b = base_row(ip->map, r);
@@ -110,18 +110,20 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
             if ((tag & ~ZBIT) != rr)
                 g->failed = true;
 #endif
-            if (tag & ZBIT)
+            if (BLOOM_USE_SKIP && (tag & ZBIT))
                 zm |= 1u << (j - ip->lo);
             rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
                                : src_slot(g, from, slot);
         }
+        if (!BLOOM_USE_SKIP)
+            continue;
         g->zin[i] = zm;
         if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
     if (all_zero)
         return ROW_SKIPPED;
-    return !n->fn(g, n, r, in, dst) && g->skip ? ROW_ZEROS : ROW_MADE;
+    return !n->fn(g, n, r, in, dst) && BLOOM_USE_SKIP && g->skip ? ROW_ZEROS : ROW_MADE;
 }
 
 /* Node row r into its ring slot, tagged. A zero row leaves zeros in the
@@ -196,9 +198,9 @@ void bloom_dry_frame(bloom_graph_t *g)
 
 bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row)
 {
-    if (g->aux_bpp && !aux_row)
+    if (bg_aux_bpp(g) && !aux_row)
         return BLOOM_E_AUX;
-    if (!g->aux_bpp && aux_row) /* a plane the preset does not read */
+    if (!bg_aux_bpp(g) && aux_row) /* a plane the preset does not read */
         return BLOOM_E_AUX;
     if (g->src_n >= g->h[0])
         return BLOOM_E_STATE;
@@ -207,11 +209,11 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
         return BLOOM_E_BUSY;
     if (g->src_copy) {
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
-        if (g->aux_bpp)
+        if (bg_aux_bpp(g))
             memcpy(g->aux_copy + (size_t)slot * g->aux_row_bytes, aux_row, g->aux_row_bytes);
     } else {
         g->src_ptr[slot] = (const uint8_t *)src_row;
-        if (g->aux_bpp)
+        if (bg_aux_bpp(g))
             g->aux_ptr[slot] = (const uint8_t *)aux_row;
     }
 #if BLOOM_USE_SKIP

@@ -37,19 +37,24 @@ int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
 
 void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
 {
-    if (n < 0 || n >= g->nnodes || g->node[n].nin >= BG_MAX_IN || from >= n || from < BG_AUX || lo > hi ||
-        hi - lo > 30) {   /* zin holds a bit per row */
-        g->failed = true; /* inputs must be built before their readers */
-        return;
-    }
-    bg_node_t *nd = &g->node[n];
-    int rows = hi - lo + 1; /* the rows run_row gathers for one node row */
-    for (int i = 0; i < nd->nin; i++)
-        rows += nd->in[i].hi - nd->in[i].lo + 1;
-    if (rows > BG_MAX_ROWS) {
+    if (n < 0 || g->node[n].nin >= BG_MAX_IN) { /* no node (out of room), or too many inputs */
         g->failed = true;
         return;
     }
+    bg_node_t *nd = &g->node[n];
+#if !BLOOM_SMALL
+    /* A build hook's mistakes (BLOOM_SMALL leaves these checks out: its only
+     * graph is the default's, which every other build checks the same way):
+     * inputs built before their readers, a bit of zin per row, at most
+     * BG_MAX_ROWS rows gathered for one node row. */
+    int rows = hi - lo + 1;
+    for (int i = 0; i < nd->nin; i++)
+        rows += nd->in[i].hi - nd->in[i].lo + 1;
+    if (n >= g->nnodes || from >= n || from < BG_AUX || lo > hi || hi - lo > 30 || rows > BG_MAX_ROWS) {
+        g->failed = true;
+        return;
+    }
+#endif
     nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi};
 }
 

@@ -165,11 +165,18 @@ static inline uint32_t *bg_scratch(const bloom_graph_t *g, int i)
 {
     return g->scratch + (size_t)i * g->scratch_len;
 }
-/* Whether rows lo .. hi (indices into in[i]) of input i are all zero. */
+/* Whether rows lo .. hi (indices into in[i]) of input i are all zero
+ * (never in a build without BLOOM_USE_SKIP: the shortcuts compile out). */
 static inline bool bg_in_zero(const bloom_graph_t *g, int i, int lo, int hi)
 {
     const uint32_t m = ((2u << hi) - 1u) & ~((1u << lo) - 1u);
-    return (g->zin[i] & m) == m;
+    return BLOOM_USE_SKIP && (g->zin[i] & m) == m;
+}
+/* Bytes per aux sample: always 0 in a build without presets (only they read
+ * an aux plane: its code compiles out of the default-only core). */
+static inline int bg_aux_bpp(const bloom_graph_t *g)
+{
+    return BLOOM_USE_GRAPH ? g->aux_bpp : 0;
 }
 /* A source row decoded to Q12.20 R, G, B (w0 pixels). */
 void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst);

@@ -74,42 +74,39 @@ bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     return true;
 }
 
+/* A zero-preserving node of level k (w, h of the level, 3 channels) made by
+ * fn from rows 2r-1 .. 2r+2 of `from`, and with aux from aux rows 2r .. 2r+1. */
+static int down_node(bloom_graph_t *g, bg_row_fn fn, int k, int from, bool aux)
+{
+    const int n = bg_node(g, fn, g->w[k], g->h[k], 3, k);
+    bg_input(g, n, from, BG_DOWN, -1, 2);
+    if (aux)
+        bg_input(g, n, BG_AUX, BG_DOWN, 0, 1);
+    bg_zero(g, n);
+    return n;
+}
+
 int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
 {
     const int L = g->L;
-    int D[BLOOM_MAX_LEVELS + 1], U;
+    int D[BLOOM_MAX_LEVELS + 1];
+    D[1] = D[2] = -1; /* (L >= 1 always: for the compiler) */
     /* down chain: D1 from the source, Dk from D(k-1) */
-    D[1] = bg_node(g, d1_fn, g->w[1], g->h[1], 3, 1);
-    bg_input(g, D[1], BG_SRC, BG_DOWN, -1, 2);
-    if (d1_aux)
-        bg_input(g, D[1], BG_AUX, BG_DOWN, 0, 1);
-    bg_zero(g, D[1]);
-    for (int k = 2; k <= L; k++) {
-        D[k] = bg_node(g, bg_fn_box, g->w[k], g->h[k], 3, k);
-        bg_input(g, D[k], D[k - 1], BG_DOWN, -1, 2);
-        bg_zero(g, D[k]);
-    }
+    for (int k = 1; k <= L; k++)
+        D[k] = k == 1 ? down_node(g, d1_fn, 1, BG_SRC, d1_aux) : down_node(g, bg_fn_box, k, D[k - 1], false);
     /* up chain: U_L = D_L; U_k = D_k + tent(U_k+1). D_1 is computed a
      * second time for the up pass and, when L >= 3, D_2 from that copy: no
      * delay line at the two widest levels (sim/docs/streaming.md). */
-    int up[3] = {0, D[1], L >= 2 ? D[2] : -1};
-    if (L >= 2) {
-        up[1] = bg_node(g, d1_fn, g->w[1], g->h[1], 3, 1);
-        bg_input(g, up[1], BG_SRC, BG_DOWN, -1, 2);
-        if (d1_aux)
-            bg_input(g, up[1], BG_AUX, BG_DOWN, 0, 1);
-        bg_zero(g, up[1]);
-    }
-    if (L >= 3) {
-        up[2] = bg_node(g, bg_fn_box, g->w[2], g->h[2], 3, 2);
-        bg_input(g, up[2], up[1], BG_DOWN, -1, 2);
-        bg_zero(g, up[2]);
-    }
-    U = D[L];
+    int up1 = D[1], up2 = L >= 2 ? D[2] : -1;
+    if (L >= 2)
+        up1 = down_node(g, d1_fn, 1, BG_SRC, d1_aux);
+    if (L >= 3)
+        up2 = down_node(g, bg_fn_box, 2, up1, false);
+    int U = D[L];
     for (int k = L - 1; k >= 1; k--) {
         const int u = bg_node(g, bg_fn_add_tent, g->w[k], g->h[k], 3, k);
         bg_input(g, u, U, BG_UP, -1, 1); /* first: the same level's row is made when the one below is ready */
-        bg_input(g, u, k <= 2 ? up[k] : D[k], BG_SAME, 0, 0);
+        bg_input(g, u, k == 1 ? up1 : k == 2 ? up2 : D[k], BG_SAME, 0, 0);
         bg_zero(g, u);
         U = u;
     }
@@ -121,6 +118,5 @@ int bg_build_out_add(bloom_graph_t *g, int u1)
     const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, u1, BG_UP, -1, 1);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
-    g->out_node = o;
-    return o;
+    return g->out_node = o;
 }
