@@ -499,6 +499,79 @@ static void row_interface(void)
     frame_free(&src);
     free(mask);
 }
+/* Skipping (arm.md): frames mostly at or below the dark codes, with a few
+ * bright spots, so that dark source rows and blocks, zero rows of every
+ * level, zero and bounded output chunks all occur. Bit-exact with the
+ * bit-true model, and the same bytes with BLOOM_FLAG_NO_SKIP and
+ * BLOOM_FLAG_NO_SIMD. */
+static void dark_frames(void)
+{
+    static const bloom_format_t f[][2] = {{BLOOM_FMT_RGB888, BLOOM_FMT_RGB888},
+                                          {BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888},
+                                          {BLOOM_FMT_RGB565, BLOOM_FMT_RGB565},
+                                          {BLOOM_FMT_RGBQ16, BLOOM_FMT_RGB888}};
+    static const int sz[][2] = {{61, 47}, {200, 90}, {131, 64}};
+    int runs = 0, failed = 0, differ = 0;
+    long long diff = 0;
+    for (size_t k = 0; k < 4 * 3 * 4; k++) {
+        const size_t fi = k % 4, si = (k / 4) % 3, var = k / 12;
+        bloom_config_t c;
+        bloom_config_default(&c, sz[si][0], sz[si][1]);
+        bloom_config_preset(&c, BLOOM_PRESET_ARM);
+        c.in_fmt = f[fi][0];
+        c.out_fmt = f[fi][1];
+        c.threshold = BLOOM_Q16(0.6);
+        c.levels = var == 3 ? 3 : 5;
+        if (var == 1)
+            c.flags |= BLOOM_FLAG_DEBUG_VIEW;
+        if (var == 2) {
+            c.p.tint[1] = BLOOM_Q16(0.5);
+            c.intensity = BLOOM_Q16(2.0);
+        }
+        if (var == 3)
+            c.aux_fmt = BLOOM_AUX_U8;
+        frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(k + 900));
+        /* dark: every byte scaled to a quarter (RGBQ16 words to 1/64);
+         * then two bright spots */
+        for (int y = 0; y < c.height; y++)
+            for (size_t i = 0; i < (size_t)c.width * (size_t)src.bpp; i++) {
+                uint8_t *q = src.p + (size_t)y * src.stride + i;
+                *q = c.in_fmt == BLOOM_FMT_RGBQ16   ? (i % 4 >= 2 ? 0 : (uint8_t)(*q >> 2))
+                     : c.in_fmt == BLOOM_FMT_RGB565 ? (uint8_t)(*q & 0x18)
+                                                    : (uint8_t)(*q >> 2);
+            }
+        for (int s = 0; s < 2; s++) {
+            const int cx = (int)((k * 37 + (size_t)s * 53) % (size_t)c.width), cy = (s + 1) * c.height / 3;
+            for (int y = cy - 2; y <= cy + 2; y++)
+                for (int x = cx - 2; x <= cx + 2; x++)
+                    if (x >= 0 && y >= 0 && x < c.width && y < c.height)
+                        memset(src.p + (size_t)y * src.stride + (size_t)x * (size_t)src.bpp,
+                               c.in_fmt == BLOOM_FMT_RGBQ16 ? 0x7F : 0xFF, (size_t)src.bpp);
+        }
+        ptrdiff_t as = 0;
+        void *aux = c.aux_fmt ? aux_plane(c.width, c.height, c.aux_fmt, (uint32_t)k, &as) : NULL;
+        preset_conform_t r = preset_conform(&c, &src, aux, as);
+        runs++;
+        failed += !r.ok;
+        diff += r.bittrue_diff;
+        bloom_config_t ns = c, nv = c;
+        ns.flags |= BLOOM_FLAG_NO_SKIP;
+        nv.flags |= BLOOM_FLAG_NO_SIMD;
+        frame_t o = aux ? run_engine_aux(&c, &src, aux, as) : run_engine(&c, &src);
+        frame_t o1 = aux ? run_engine_aux(&ns, &src, aux, as) : run_engine(&ns, &src);
+        frame_t o2 = aux ? run_engine_aux(&nv, &src, aux, as) : run_engine(&nv, &src);
+        differ += !frame_equal(&o, &o1) || !frame_equal(&o, &o2);
+        frame_free(&o);
+        frame_free(&o1);
+        frame_free(&o2);
+        free(aux);
+        frame_free(&src);
+    }
+    CHECKF(failed == 0, "arm dark frames: engine and models ran (%d of %d failed)", failed, runs);
+    CHECKF(diff == 0, "arm dark frames: bit-exact to the bit-true model (%lld samples differ)", diff);
+    CHECKF(differ == 0, "arm dark frames: NO_SKIP and NO_SIMD give the same bytes (%d of %d differ)", differ,
+           runs);
+}
 #endif
 
 int main(void)
@@ -510,6 +583,7 @@ int main(void)
     rings();
     row_interface();
     grid_bloom();
+    dark_frames();
     grid_baked();
     real_images();
     worst_case();

@@ -17,6 +17,7 @@
  *
  * Every value of the plane is a Q12.20 linear sample <= M = 2^28 - 16;
  * the sums that can pass 2^32 are formed in 64 bits (arm.md, overflow). */
+#include "bloom_preset_arm.h"
 #include "bloom_stages.h"
 #include "bloom_pixel.h"
 
@@ -54,29 +55,14 @@ static inline void pad(uint32_t *p, int sw)
     p[sw + 2] = p[sw];
 }
 
-/* Horizontal half of the dual down filter: c4 = 4-row column sums, c2 =
- * the centre two rows' sums, both padded (column i at index i + 1).
- * D = (S16 + 4 C4) / 32 rounded half to even, formed on the halved sum
- * y = (S16 >> 1) + 2 C4 (below 2^32: S16 <= 16M, C4 <= 4M): the quotient
- * rounds up when y mod 16 > 8, or = 8 with S16 odd (then past the half) or
- * with y >> 4 odd. */
-static void down_h(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int dw)
-{
-    for (int x = 0; x < dw; x++) {
-        const uint32_t *a = c4 + 2 * x, *b = c2 + 2 * x;
-        const uint32_t s16 = a[0] + a[1] + a[2] + a[3], cc = b[1] + b[2];
-        const uint32_t y = (s16 >> 1) + 2u * cc; /* (s16 + 4 cc) / 32, half to even */
-        dst[x] = (y + 7u + (((y >> 4) | s16) & 1u)) >> 4;
-    }
-}
-
 /* The soft knee on one channel, in place: max(soft, b - T), soft =
  * clamp(b - T + K, 0, 2K)^2 / (4K + 0.00004) rounded (as 2x^2 / (8K + E8),
- * bloom_internal.h); 0 below T - K. Below b = 2^F / 100000 the spec's
+ * bloom_internal.h); 0 below T - K (returns the OR of the results). Below b = 2^F / 100000 the spec's
  * max(b, 0.00001) scales it by b / 0.00001 (exact product, rounded). */
-static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
+static uint32_t knee1(uint32_t *row, int w, const bloom_knee_t *kn)
 {
     const uint32_t t = kn->t, k = kn->k, cut = t > k ? t - k : 0u, hi = t + k;
+    uint32_t any = 0;
     for (int x = 0; x < w; x++) {
         const uint32_t b = row[x];
         if (b <= cut) {
@@ -92,7 +78,9 @@ static void knee1(uint32_t *row, int w, const bloom_knee_t *kn)
         if ((uint64_t)b * 100000u < (1ull << BLOOM_LIN_BITS)) /* tiny b: v * b / 0.00001 */
             row[x] =
                 (uint32_t)(((uint64_t)row[x] * b * 100000u + (1u << (BLOOM_LIN_BITS - 1))) >> BLOOM_LIN_BITS);
+        any |= row[x];
     }
+    return any;
 }
 
 static inline uint32_t lum3(const uint32_t *o)
@@ -148,20 +136,21 @@ static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y,
 }
 #undef ARM_LUM_LOOP
 
-/* D_1. Input 0: source rows 2r-1 .. 2r+2; input 1 (with a mask): aux rows
- * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee. */
-static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                  void *dst)
+/* D_1 pixels xa .. xb-1 (in[] as fn_d1): P = Y * mask of source columns
+ * 2xa-1 .. 2xb-2+2 (clamped), their column sums, dual down, knee. Returns
+ * the OR of the pixels made. */
+static uint32_t d1_range(const bloom_graph_t *g, const void *const *const in[BG_MAX_IN], uint32_t *dst,
+                         int xa, int xb)
 {
-    (void)r;
-    const int w0 = g->w[0];
+    const int w0 = g->w[0], ca = imax(2 * xa - 1, 0), cb = imin(2 * xb, w0 - 1), nc = cb - ca + 1;
     uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *y = bg_scratch(g, 2);
     const bool u16 = g->aux_bpp == 2;
+    const size_t bpp = (size_t)g->src_bpp;
     for (int i = 0; i < 4; i++) {
-        lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i], y, w0);
+        lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i] + (size_t)ca * bpp, y + ca, nc);
         if (g->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
             const uint8_t *m = (const uint8_t *)in[1][i];
-            for (int x = 0; x < w0; x++) {
+            for (int x = ca; x <= cb; x++) {
                 const uint32_t q = aux_q24(m, x, u16);
                 if (q != 1u << 24)
                     y[x] = (uint32_t)(((uint64_t)y[x] * q + (1u << 23)) >> 24);
@@ -169,84 +158,124 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
         }
         uint32_t *c = c4 + 1, *h = c2 + 1;
         if (i == 0)
-            memcpy(c, y, (size_t)w0 * sizeof *y);
+            memcpy(c + ca, y + ca, (size_t)nc * sizeof *y);
         else
-            for (int x = 0; x < w0; x++)
+            for (int x = ca; x <= cb; x++)
                 c[x] += y[x];
         if (i == 1)
-            memcpy(h, y, (size_t)w0 * sizeof *y);
+            memcpy(h + ca, y + ca, (size_t)nc * sizeof *y);
         else if (i == 2)
-            for (int x = 0; x < w0; x++)
+            for (int x = ca; x <= cb; x++)
                 h[x] += y[x];
     }
-    pad(c4, w0);
-    pad(c2, w0);
-    down_h(c4, c2, (uint32_t *)dst, n->w);
-    knee1((uint32_t *)dst, n->w, &g->knee);
-    return true;
+    if (ca == 0)
+        c4[0] = c4[1], c2[0] = c2[1];
+    if (cb == w0 - 1)
+        pad(c4, w0), pad(c2, w0);
+    bloom_arm_kern(g->kern.isa)->down_h(c4 + 2 * xa, c2 + 2 * xa, dst + xa, xb - xa);
+    return knee1(dst + xa, xb - xa, &g->knee);
 }
 
-/* D_k, k >= 2. Input 0: D_k-1 rows 2r-1 .. 2r+2 (one channel). */
+/* D_1 pixels per block of ARM_DB whose source columns 2x-1 .. 2x+2 (x in
+ * the block) are dark in all four rows: zeros (arm.md, "skipping"). */
+#define ARM_DB 16
+
+/* D_1. Input 0: source rows 2r-1 .. 2r+2; input 1 (with a mask): aux rows
+ * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee; blocks of
+ * dark source pixels are zeros without being computed. False when the row
+ * came out all zero. */
+static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                  void *dst)
+{
+    (void)r;
+    const int dw = n->w, w0 = g->w[0];
+    uint32_t *d = (uint32_t *)dst;
+    if (!g->dark_src)
+        return d1_range(g, in, d, 0, dw) != 0;
+    const size_t bpp = (size_t)g->src_bpp;
+    uint32_t any = 0;
+    int run = 0; /* first pixel not written yet */
+    for (int x = 0; x < dw; x += ARM_DB) {
+        const int xe = imin(x + ARM_DB, dw), ca = imax(2 * x - 1, 0), cb = imin(2 * xe, w0 - 1);
+        bool dark = true;
+        for (int i = 0; i < 4 && dark; i++) /* a row tagged dark needs no test */
+            dark = bg_in_zero(g, 0, i, i) ||
+                   bloom_row_dark(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1,
+                                  &g->dark);
+        if (!dark)
+            continue; /* computed with its run */
+        if (run < x)
+            any |= d1_range(g, in, d, run, x);
+        memset(d + x, 0, (size_t)(xe - x) * sizeof *d);
+        run = xe;
+    }
+    if (run < dw)
+        any |= d1_range(g, in, d, run, dw);
+    return any != 0;
+}
+
+/* D_k, k >= 2. Input 0: D_k-1 rows 2r-1 .. 2r+2 (one channel). False when
+ * the row came out all zero. */
 static bool fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     (void)r;
+    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
     const int sw = g->node[n->in[0].node].w;
-    const uint32_t *s0 = (const uint32_t *)in[0][0], *s1 = (const uint32_t *)in[0][1],
-                   *s2 = (const uint32_t *)in[0][2], *s3 = (const uint32_t *)in[0][3];
     uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1);
-    for (int x = 0; x < sw; x++) {
-        const uint32_t mid = s1[x] + s2[x];
-        c2[x + 1] = mid;
-        c4[x + 1] = mid + s0[x] + s3[x];
-    }
+    K->down_v((const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2],
+              (const uint32_t *)in[0][3], c4 + 1, c2 + 1, sw);
     pad(c4, sw);
     pad(c2, sw);
-    down_h(c4, c2, (uint32_t *)dst, n->w);
-    return true;
+    return K->down_h(c4, c2, (uint32_t *)dst, n->w) != 0;
 }
 
 /* The dual up filter of rows u[0..2] = m-1, m, m+1 (width sw) onto a row of
- * parity odd (width dw = 2sw or 2sw - 1). Vertical: a = A0 (1,3,0), v = T
- * (3,4,1) (mirrored for odd rows), padded; horizontal: even column 2n
- * 11a(n-1) + 28a(n) + a(n+1) + v(n-1) + 3v(n), odd 2n+1 mirrored; the sum
- * S <= 192M is 64-bit; out = floor((S + 96) / 192) = floor(q / 3),
- * q = (S + 96) >> 6 < 2^30, q / 3 = (q * 0xAAAAAAAB) >> 33. */
-static void up_row(const bloom_graph_t *g, const uint32_t *u0, const uint32_t *u1, const uint32_t *u2,
-                   int odd, uint32_t *dst, int dw, int sw)
+ * parity odd (width dw = 2sw or 2sw - 1), in two halves (bloom_preset_arm.h).
+ * Vertical, lower columns c0 .. c1: a = A0 (1,3,0), v = T (3,4,1) (mirrored
+ * for odd rows) into a, v (column j at index j + 1), padded at the edges;
+ * horizontal, output pairs n0 .. n1-1 (columns 2n, 2n+1 < dw) into
+ * dst[2n - base]: even column 2n 11a(n-1) + 28a(n) + a(n+1) + v(n-1) +
+ * 3v(n), odd 2n+1 mirrored; the sum S <= 192M is 64-bit; out =
+ * floor((S + 96) / 192) = floor(q / 3), q = (S + 96) >> 6 < 2^30,
+ * q / 3 = (q * 0xAAAAAAAB) >> 33. Returns the OR of the pixels made. */
+static void up_av(const bloom_arm_kern_t *K, const uint32_t *const u[3], int odd, uint32_t *a, uint32_t *v,
+                  int c0, int c1, int sw)
 {
-    uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
-    if (odd) {
-        const uint32_t *t = u0;
-        u0 = u2;
-        u2 = t;
-    }
-    for (int i = 0; i < sw; i++) {
-        a[i + 1] = u0[i] + 3u * u1[i];
-        v[i + 1] = 3u * u0[i] + 4u * u1[i] + u2[i];
-    }
-    pad(a, sw);
-    pad(v, sw);
-    for (int n = 0; n < sw; n++) {
-        const uint64_t a0 = a[n], a1 = a[n + 1], a2 = a[n + 2], v0 = v[n], v1 = v[n + 1], v2 = v[n + 2];
-        const uint64_t se = 11u * a0 + 28u * a1 + a2 + v0 + 3u * v1;
-        const uint32_t qe = (uint32_t)((se + 96u) >> 6);
-        dst[2 * n] = (uint32_t)(((uint64_t)qe * 0xAAAAAAABu) >> 33);
-        if (2 * n + 1 < dw) {
-            const uint64_t so = a0 + 28u * a1 + 11u * a2 + 3u * v1 + v2;
-            const uint32_t qo = (uint32_t)((so + 96u) >> 6);
-            dst[2 * n + 1] = (uint32_t)(((uint64_t)qo * 0xAAAAAAABu) >> 33);
-        }
-    }
+    const uint32_t *u0 = odd ? u[2] : u[0], *u2 = odd ? u[0] : u[2];
+    K->up_v(u0 + c0, u[1] + c0, u2 + c0, a + 1 + c0, v + 1 + c0, c1 - c0 + 1);
+    if (c0 == 0)
+        a[0] = a[1], v[0] = v[1];
+    if (c1 == sw - 1)
+        a[sw + 1] = a[sw], v[sw + 1] = v[sw];
 }
 
-/* U_k. Input 0: U_k+1 rows m-1 .. m+1 (BG_UP). */
+static uint32_t up_out(const bloom_arm_kern_t *K, const uint32_t *a, const uint32_t *v, uint32_t *dst, int n0,
+                       int n1, int dw, int base)
+{
+    const bool last_even = 2 * (n1 - 1) + 1 >= dw; /* the last pair has no odd column */
+    const int np = n1 - n0 - (last_even ? 1 : 0);
+    uint32_t any = np > 0 ? K->up_h(a + n0, v + n0, dst + 2 * n0 - base, np) : 0u;
+    if (last_even) {
+        const uint64_t a0 = a[n1 - 1], a1 = a[n1], a2 = a[n1 + 1], v0 = v[n1 - 1], v1 = v[n1];
+        dst[2 * (n1 - 1) - base] = bloom_arm_div192(11u * a0 + 28u * a1 + a2 + v0 + 3u * v1);
+        any |= dst[2 * (n1 - 1) - base];
+    }
+    return any;
+}
+
+/* U_k. Input 0: U_k+1 rows m-1 .. m+1 (BG_UP). False when the row came out
+ * all zero. */
 static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
-    up_row(g, (const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2], r & 1,
-           (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
-    return true;
+    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
+    const int sw = g->node[n->in[0].node].w;
+    const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                  (const uint32_t *)in[0][2]};
+    uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
+    up_av(K, u, r & 1, a, v, 0, sw - 1, sw);
+    return up_out(K, a, v, (uint32_t *)dst, 0, sw, n->w, 0) != 0;
 }
 
 /* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
@@ -261,33 +290,88 @@ static inline uint32_t sat32(uint64_t v)
     return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
 }
 
+/* The largest of rows u[0..2], columns c0 .. c1. */
+static uint32_t umax3(const uint32_t *const u[3], int c0, int c1)
+{
+    uint32_t m = 0;
+    for (int i = 0; i < 3; i++)
+        for (int x = c0; x <= c1; x++)
+            m = u[i][x] > m ? u[i][x] : m;
+    return m;
+}
+
+/* 8-bit sRGB in and out of one format (RGB888, or XRGB8888 with x4):
+ * per sample P = (g_c B + 32768) >> 16 and the code enc(dec(c) + P),
+ * which is c itself when P <= max(A c, H0) (BLOOM_KEEP8, bloom_kernels.h)
+ * and otherwise the table encoder of the fast output path (the same codes
+ * as bloom_encode_row; P is clamped to 2^24, above which both give 255). */
+static void out_keep8(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
+                      bool x4)
+{
+    const int step = x4 ? 4 : 3, ch[3] = {x4 ? 2 : 0, 1, x4 ? 0 : 2}; /* byte q holds channel ch[q] */
+    for (int x = 0; x < n; x++, src += step, dst += step) {
+        const uint64_t bx = b[x];
+        for (int q = 0; q < 3; q++) {
+            const uint64_t p = (f[ch[q]] * bx + 32768u) >> 16;
+            const uint32_t c = src[q],
+                           lb = BLOOM_KEEP8_A * c > BLOOM_KEEP8_H0 ? BLOOM_KEEP8_A * c : BLOOM_KEEP8_H0;
+            dst[q] =
+                p <= lb
+                    ? (uint8_t)c
+                    : (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[c] + (p < (1u << 24) ? (uint32_t)p : 1u << 24));
+        }
+        if (x4)
+            dst[3] = 0xFF;
+    }
+}
+
 /* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
- * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels;
- * a chunk whose B is all zero is the source decoded and encoded again
- * (bloom_row_copy_c: the bytes themselves where that is the identity),
- * unless BLOOM_FLAG_NO_SKIP (same bits either way). */
+ * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels.
+ * Unless BLOOM_FLAG_NO_SKIP (same bits either way), a chunk is the source
+ * decoded and encoded again (bloom_row_copy_c: the bytes themselves where
+ * that is the identity) when its B is all zero, or, without computing B,
+ * when the U_1 values it reads are all zero, or for 8-bit sRGB in and out
+ * of one format when they bound every P_c by BLOOM_KEEP8_H0 (B <= max U:
+ * arm.md, skipping); so is a row whose U_1 rows are all zero. */
 #define ARM_CHUNK 64
 static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
-    const int w = n->w;
-    uint32_t *b = bg_scratch(g, 2), *v = bg_scratch(g, 3);
-    up_row(g, (const uint32_t *)in[1][0], (const uint32_t *)in[1][1], (const uint32_t *)in[1][2], r & 1, b, w,
-           g->node[n->in[1].node].w);
+    const int w = n->w, sw = g->node[n->in[1].node].w;
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
+    const bool skip = g->skip;
+    if (skip && bg_in_zero(g, 1, 0, 2)) { /* B = 0: the source row (debug view: zeros) */
+        bloom_row_copy_c(src, out, w, &g->out);
+        return true;
+    }
+    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
+    const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
+                                  (const uint32_t *)in[1][2]};
+    uint32_t *a = bg_scratch(g, 0), *av = bg_scratch(g, 1), *b = bg_scratch(g, 2), *v = bg_scratch(g, 3);
     const size_t ibpp = (size_t)g->src_bpp, obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
-    const bool skip = !(g->cfg.flags & BLOOM_FLAG_NO_SKIP);
     uint32_t f[3];
     tint_factors(g, f);
+    const uint64_t fmax = f[0] > f[1] ? (f[0] > f[2] ? f[0] : f[2]) : (f[1] > f[2] ? f[1] : f[2]);
+    const bool keep8 = skip && !g->out.debug && !g->out.linear && g->out.in_fmt == g->out.out_fmt &&
+                       (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888);
     for (int x0 = 0; x0 < w; x0 += ARM_CHUNK) {
-        const int cn = imin(ARM_CHUNK, w - x0);
-        const uint32_t *bc = b + x0;
-        uint32_t any = !skip;
-        for (int x = 0; x < cn; x++)
-            any |= bc[x];
-        if (!any) {
+        const int cn = imin(ARM_CHUNK, w - x0), n0 = x0 >> 1, n1 = ((x0 + cn - 1) >> 1) + 1;
+        const int c0 = imax(n0 - 1, 0), c1 = imin(n1, sw - 1);
+        if (skip) {
+            const uint64_t um = umax3(u, c0, c1);
+            if (um == 0 || (keep8 && ((fmax * um + 32768u) >> 16) <= BLOOM_KEEP8_H0)) {
+                bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+                continue;
+            }
+        }
+        up_av(K, u, r & 1, a, av, c0, c1, sw);
+        if (!up_out(K, a, av, b, n0, n1, w, x0) && skip) {
             bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+            continue;
+        }
+        if (keep8) {
+            out_keep8(src + (size_t)x0 * ibpp, b, f, out + (size_t)x0 * obpp, cn, ibpp == 4);
             continue;
         }
         if (g->out.debug)
@@ -295,7 +379,7 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         else
             bloom_decode_row(g->out.in_fmt, g->out.linear, src + (size_t)x0 * ibpp, v, cn);
         for (int x = 0; x < cn; x++) {
-            const uint64_t bx = bc[x];
+            const uint64_t bx = b[x];
             uint32_t *p = v + 3 * x;
             p[0] = sat32(((f[0] * bx + 32768u) >> 16) + p[0]);
             p[1] = sat32(((f[1] * bx + 32768u) >> 16) + p[1]);
@@ -306,11 +390,23 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     return true;
 }
 
+/* Whether map codes x0 .. x0+n-1 are all 0 (f = 0 there). */
+static bool map_zero(const uint8_t *map, int x0, int n, bool u16)
+{
+    const size_t b = u16 ? 2u : 1u;
+    uint8_t any = 0;
+    for (size_t i = (size_t)x0 * b; i < (size_t)(x0 + n) * b; i++)
+        any |= map[i];
+    return any == 0;
+}
+
 /* Baked output. Input 0: the source row; input 1: the map row.
  * f = (map_q24 * strength + 32768) >> 16 (Q24, <= 2^28), v = S + ((S f + 2^23) >> 24)
  * computed as (S (2^24 + f) + 2^23) >> 24 (S * 2^24 is a multiple of
  * 2^24; S (2^24 + f) <= 2^56.1): one multiply-add per channel. Debug view:
- * (S f + 2^23) >> 24. */
+ * (S f + 2^23) >> 24. Where f = 0 (strength 0, or a chunk of zero map
+ * codes) v = S: the source copied (bloom_row_copy_c), unless
+ * BLOOM_FLAG_NO_SKIP (same bits). */
 static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
@@ -320,11 +416,20 @@ static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
     const uint8_t *map = (const uint8_t *)in[1][0];
     const bool u16 = g->aux_bpp == 2;
     const uint64_t strength = g->cfg.p.strength, one = g->out.debug ? 0u : 1u << 24;
-    const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
+    const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt), ibpp = (size_t)g->src_bpp;
+    const uint8_t *src = (const uint8_t *)in[0][0];
+    uint8_t *out = (uint8_t *)dst;
+    if (g->skip && strength == 0) { /* f = 0: v = S (debug view: 0) */
+        bloom_row_copy_c(src, out, w, &g->out);
+        return true;
+    }
     for (int x0 = 0; x0 < w; x0 += 256) { /* chunks of 256 pixels stay in the cache */
         const int cn = imin(256, w - x0);
-        bloom_decode_row(g->out.in_fmt, g->out.linear,
-                         (const uint8_t *)in[0][0] + (size_t)x0 * (size_t)g->src_bpp, v, cn);
+        if (g->skip && map_zero(map, x0, cn, u16)) {
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+            continue;
+        }
+        bloom_decode_row(g->out.in_fmt, g->out.linear, src + (size_t)x0 * ibpp, v, cn);
         for (int x = 0; x < cn; x++) {
             const uint64_t f = ((uint64_t)aux_q24(map, x0 + x, u16) * strength + 32768u) >> 16;
             const uint64_t m = one + f;
@@ -333,7 +438,7 @@ static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
             p[1] = sat32((p[1] * m + (1u << 23)) >> 24);
             p[2] = sat32((p[2] * m + (1u << 23)) >> 24);
         }
-        bloom_encode_row(g->out.out_fmt, g->out.linear, v, (uint8_t *)dst + (size_t)x0 * obpp, cn);
+        bloom_encode_row(g->out.out_fmt, g->out.linear, v, out + (size_t)x0 * obpp, cn);
     }
     return true;
 }
@@ -379,19 +484,25 @@ static bloom_status_t build(bloom_graph_t *g)
         g->scratch_rows = 1;
         return BLOOM_OK;
     }
+    /* every node but the output is zero-preserving, and a source pixel with
+     * no channel above the knee's t - k makes zeros of D_1 (arm.md, skipping) */
+    g->dark_cut = bg_knee_cut(g);
     int d = bg_node(g, fn_d1, g->w[1], g->h[1], 1, 1);
     bg_input(g, d, BG_SRC, BG_DOWN, -1, 2);
     if (g->aux_bpp)
         bg_input(g, d, BG_AUX, BG_DOWN, -1, 2);
+    bg_zero(g, d);
     for (int k = 2; k <= L; k++) {
         const int nd = bg_node(g, fn_down, g->w[k], g->h[k], 1, k);
         bg_input(g, nd, d, BG_DOWN, -1, 2);
+        bg_zero(g, nd);
         d = nd;
     }
     int u = d; /* U_L = D_L */
     for (int k = L - 1; k >= 1; k--) {
         const int nu = bg_node(g, fn_up, g->w[k], g->h[k], 1, k);
         bg_input(g, nu, u, BG_UP, -1, 1);
+        bg_zero(g, nu);
         u = nu;
     }
     const int o = bg_node(g, fn_out, g->w[0], g->h[0], 3, 0);
