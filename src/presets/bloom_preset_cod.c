@@ -150,6 +150,23 @@ static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict 
     }
 }
 
+#if BLOOM_USE_RGB888
+/* The same sums straight from six rows of 8-bit sRGB codes (RGB888: sample
+ * i is byte i), decoded by the table as bloom_decode_row does: one pass
+ * instead of six decodes and six accumulations. */
+static void vsum6_dec8(const uint8_t *const s[6], uint32_t *restrict t, uint32_t *restrict c,
+                       uint32_t *restrict b, int n)
+{
+    const uint32_t *d = bloom_srgb_dec8;
+    for (int i = 0; i < n; i++) {
+        const uint32_t v1 = d[s[1][i]], mid = d[s[2][i]] + d[s[3][i]], v4 = d[s[4][i]];
+        t[i] = d[s[0][i]] + v1 + mid;
+        c[i] = v1 + mid + v4;
+        b[i] = mid + v4 + d[s[5][i]];
+    }
+}
+#endif
+
 /* Level 1. Input 0: source rows 2r-2 .. 2r+3. The five 4x4 box sums per
  * channel (each <= 16 M < 2^32), the Karis weights
  *   d_i = 2^F + floor(Y_i / 2^20), Y_i = 13933 R_i + 46871 G_i + 4732 B_i
@@ -163,15 +180,23 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
     (void)r;
     const int w0 = g->w[0], nw = 3 * w0;
     uint32_t *dec = bg_scratch(g, 0), *vt = bg_scratch(g, 1), *vc = bg_scratch(g, 2), *vb = bg_scratch(g, 3);
-    for (int j = 0; j < 6; j++) {
-        if (j == 0 || in[0][j] != in[0][j - 1])
-            bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
-        vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
-    }
+#if BLOOM_USE_RGB888
+    if (g->out.in_fmt == BLOOM_FMT_RGB888 && !g->out.linear) {
+        const uint8_t *const s[6] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
+                                     (const uint8_t *)in[0][2], (const uint8_t *)in[0][3],
+                                     (const uint8_t *)in[0][4], (const uint8_t *)in[0][5]};
+        vsum6_dec8(s, vt + PAD, vc + PAD, vb + PAD, nw);
+    } else
+#endif
+        for (int j = 0; j < 6; j++) {
+            if (j == 0 || in[0][j] != in[0][j - 1])
+                bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
+            vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
+        }
     pad_edges(vt, w0);
     pad_edges(vc, w0);
     pad_edges(vb, w0);
-    uint32_t *o = (uint32_t *)dst;
+    uint32_t *o = (uint32_t *)dst, any = 0;
     const uint64_t wnum = 1ull << (BLOOM_LIN_BITS + 28);
     for (int x = 0; x < n->w; x++) {
         /* padded column 2x - 2 + i is at 3 (2x + i) */
@@ -202,6 +227,7 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
                 p[ch] = (uint32_t)(((uint64_t)box[0][ch] + box[1][ch] + box[2][ch] + box[3][ch] +
                                     4u * (uint64_t)box[4][ch] + 64u) >>
                                    7);
+            any |= p[0] | p[1] | p[2];
             continue;
         }
         uint32_t gw[5], wsum = 0;
@@ -215,10 +241,11 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
                 num += (uint64_t)gw[i] * box[i][ch];
             p[ch] = bloom_div_u64_u32(num >> 4, wsum);
         }
+        any |= p[0] | p[1] | p[2];
     }
     if (g->knee.t != 0) /* threshold 0: the knee is the identity */
-        bloom_row_knee_c(o, n->w, &g->knee);
-    return true;
+        return bloom_row_knee_c(o, n->w, &g->knee);
+    return any != 0;
 }
 
 /* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1. Per column
@@ -241,7 +268,7 @@ static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
     }
     pad_edges(vo, sw);
     pad_edges(vi, sw);
-    uint32_t *o = (uint32_t *)dst;
+    uint32_t *o = (uint32_t *)dst, any = 0;
     for (int x = 0; x < n->w; x++) {
         const uint32_t *a = vo + 6 * x, *b = vi + 6 * x;
         for (int ch = 0; ch < 3; ch++) {
@@ -249,9 +276,10 @@ static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
                                 a[12 + ch] + a[15 + ch];
             const uint32_t si = b[3 + ch] + b[6 + ch] + b[9 + ch] + b[12 + ch];
             o[3 * x + ch] = (uint32_t)((so + 4u * (uint64_t)si + 64u) >> 7);
+            any |= o[3 * x + ch];
         }
     }
-    return true;
+    return any != 0;
 }
 
 /* The vertical half of the tent: V[j] = the four rows' weighted samples at
@@ -285,12 +313,27 @@ static const uint64_t *vtent(const bloom_graph_t *g, const void *const *rows, in
 static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = g->node[n->in[1].node].w, w = n->w;
-    const uint64_t *v = vtent(g, in[1], r & 1, sw);
+    const int sw = g->node[n->in[1].node].w, w = n->w, odd = r & 1;
     const uint32_t *dk = (const uint32_t *)in[0][0];
     uint32_t *o = (uint32_t *)dst;
     const uint64_t c = n->k[0];
     const uint64_t a = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
+    const size_t ns = (size_t)w * 3u;
+    if (bg_in_zero(g, 1, odd, odd + 3)) { /* T4 = 0: U = (a D + 2^23) >> 24 */
+        if (bg_in_zero(g, 0, 0, 0)) {
+            memset(o, 0, ns * sizeof *o);
+            return false;
+        }
+        if (a == 1u << 24) { /* additive or c = 0: U = D */
+            memcpy(o, dk, ns * sizeof *o);
+            return true;
+        }
+        uint32_t any = 0;
+        for (size_t i = 0; i < ns; i++)
+            any |= o[i] = (uint32_t)((a * dk[i] + (1u << 23)) >> 24);
+        return any != 0;
+    }
+    const uint64_t *v = vtent(g, in[1], odd, sw);
     for (int x = 0; x < w; x++) {
         const uint64_t *p = v + 3 * (x >> 1);
         for (int ch = 0; ch < 3; ch++) {
@@ -308,13 +351,29 @@ static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
 static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = g->node[n->in[1].node].w, w = n->w;
-    const uint64_t *v = vtent(g, in[1], r & 1, sw);
+    const int sw = g->node[n->in[1].node].w, w = n->w, odd = r & 1;
+    const uint8_t *src = (const uint8_t *)in[0][0];
     uint32_t *s = bg_scratch(g, 2), *o = bg_scratch(g, 3);
     const bool add = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = g->out.debug;
     const uint64_t a = dbg ? 0u : (add ? 65536u : 65536u - n->k[0]) << 8;
+    if (bg_in_zero(g, 1, odd, odd + 3)) {
+        /* T4 = 0: v = (a S + 2^23) >> 24, which is S for a = 2^24 and 0 in the
+         * debug view (a = 0): the row copied (bloom_row_copy_c encodes zeros
+         * in the debug view); also where the source row is dark with cut 0
+         * (S = 0, so v = 0 = S) */
+        if (a == 0u || a == 1u << 24 || (g->dark_cut == 0u && bg_in_zero(g, 0, 0, 0))) {
+            bloom_row_copy_c(src, (uint8_t *)dst, w, &g->out);
+            return true;
+        }
+        bloom_decode_row(g->out.in_fmt, g->out.linear, src, s, w);
+        for (size_t i = 0; i < (size_t)w * 3u; i++)
+            s[i] = (uint32_t)((a * s[i] + (1u << 23)) >> 24);
+        bloom_encode_row(g->out.out_fmt, g->out.linear, s, (uint8_t *)dst, w);
+        return true;
+    }
+    const uint64_t *v = vtent(g, in[1], odd, sw);
     const uint64_t f[3] = {n->k[1], n->k[2], n->k[3]};
-    bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][0], s, w);
+    bloom_decode_row(g->out.in_fmt, g->out.linear, src, s, w);
     for (int x = 0; x < w; x++) {
         const uint64_t *p = v + 3 * (x >> 1);
         for (int ch = 0; ch < 3; ch++) {
@@ -371,11 +430,18 @@ static bloom_status_t build(bloom_graph_t *g)
 {
     const int L = g->L;
     int D[BLOOM_MAX_LEVELS + 1];
+    /* Zero rows (cod.md, "Skipping"): a source pixel with no channel above
+     * the knee's cut t - k (0: black only, at Bevy's threshold 0) makes
+     * zeros through the Karis 13-tap and the knee; the 13-tap and the
+     * blends of zero rows are zero. */
+    g->dark_cut = bg_knee_cut(g);
     D[1] = bg_node(g, d1_karis, g->w[1], g->h[1], 3, 1);
     bg_input(g, D[1], BG_SRC, BG_DOWN, -2, 3);
+    bg_zero(g, D[1]);
     for (int k = 2; k <= L; k++) {
         D[k] = bg_node(g, d_13, g->w[k], g->h[k], 3, k);
         bg_input(g, D[k], D[k - 1], BG_DOWN, -2, 3);
+        bg_zero(g, D[k]);
     }
     /* The up pass reads D_1 .. D_R again, recomputed when it needs them --
      * D_1 from the source rows, which stay in memory for the composite
@@ -390,6 +456,7 @@ static bloom_status_t build(bloom_graph_t *g)
             continue;
         E[k] = bg_node(g, k == 1 ? d1_karis : d_13, g->w[k], g->h[k], 3, k);
         bg_input(g, E[k], k == 1 ? BG_SRC : E[k - 1], BG_DOWN, -2, 3);
+        bg_zero(g, E[k]);
     }
     int U = D[L];
     for (int k = L - 1; k >= 1; k--) {
@@ -397,6 +464,7 @@ static bloom_status_t build(bloom_graph_t *g)
         const int u = bg_node(g, u_blend, g->w[k], g->h[k], 3, k);
         bg_input(g, u, dk, BG_SAME, 0, 0);
         bg_input(g, u, U, BG_UP, -2, 2);
+        bg_zero(g, u);
         if (u >= 0)
             g->node[u].k[0] = g->cfg.p.level_weight[k];
         U = u;
