@@ -64,26 +64,35 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     g->skip = BLOOM_USE_SKIP && !(cfg->flags & BLOOM_FLAG_NO_SKIP);
     bloom_kernels_select(&g->kern, cfg->flags);
     g->src_bpp = bloom_format_bpp(cfg->in_fmt);
+#if BLOOM_USE_GRAPH
     g->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
+#endif
     g->src_row_bytes = (size_t)cfg->width * (size_t)g->src_bpp;
     g->aux_row_bytes = (size_t)cfg->width * (size_t)bg_aux_bpp(g);
     g->scratch_len = (size_t)cfg->width * 3u + 16u;
     g->out_node = -1;
-    g->dark_cut = NO_CUT;
+    if (BLOOM_USE_SKIP)
+        g->dark_cut = NO_CUT;
     bloom_status_t st = ops->build(g);
     if (st != BLOOM_OK)
         return st;
     if (g->failed && g->nnodes == cap && cap < BG_MAX_NODES)
         return BLOOM_E_WORKSPACE; /* bloom_init's buffer: too small for the nodes */
-    if (g->failed || g->out_node < 0 || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0] ||
+    if (g->failed)
+        return BLOOM_E_INTERNAL;
+#if !BLOOM_SMALL /* a build hook's mistakes (the default's graph is checked by every other build) */
+    if (g->out_node < 0 || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0] ||
         g->scratch_rows < 0 || g->scratch_rows > BG_SCRATCH)
         return BLOOM_E_INTERNAL;
+#endif
+#if BLOOM_USE_GRAPH /* (a list worth its code where graphs are big) */
     for (int i = 0; i < g->nnodes; i++)
         for (int j = 0; j < g->node[i].nin; j++)
             if (g->node[i].in[j].node < 0) {
                 g->src_reader[g->nsrc_readers++] = (int8_t)i;
                 break;
             }
+#endif
 #if BLOOM_USE_SKIP
     g->dark_src = g->skip && g->dark_cut != NO_CUT;
     if (g->dark_src)
@@ -96,26 +105,35 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
 /* Lay the rings out after the engine struct; with base NULL only count.
  * Counted in 64 bits: on a 32-bit target a huge configuration must be
  * refused (BLOOM_E_TOO_BIG), not wrap around. */
+/* `bytes` at offset *off of base (NULL: only counted), *off moved on,
+ * 8-byte aligned (BLOOM_TAKE as a function: one copy of the 64-bit sums). */
+static void *take(uint8_t *base, uint64_t *off, uint64_t bytes)
+{
+    void *p = base ? base + (size_t)*off : NULL;
+    *off = bloom_align8(*off + bytes);
+    return p;
+}
+
 uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
 {
     uint64_t off =
         bloom_align8(sizeof(bloom_graph_t)) + bloom_align8(sizeof(bg_node_t) * (uint64_t)g->nnodes);
     const int cap = imax(g->need_src, 1);
-#define TAKE(ptr, type, count) BLOOM_TAKE(base, off, ptr, type, count)
+    const uint64_t ucap = (uint64_t)cap;
     if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
         const uint64_t before = off;
-        TAKE(g->src_copy, uint8_t, (uint64_t)cap * g->src_row_bytes);
+        g->src_copy = (uint8_t *)take(base, &off, ucap * g->src_row_bytes);
         if (bg_aux_bpp(g))
-            TAKE(g->aux_copy, uint8_t, (uint64_t)cap * g->aux_row_bytes);
+            g->aux_copy = (uint8_t *)take(base, &off, ucap * g->aux_row_bytes);
         if (per_level)
             per_level[0] += (size_t)(off - before);
     } else {
-        TAKE(g->src_ptr, const uint8_t *, cap);
+        g->src_ptr = (const uint8_t **)take(base, &off, ucap * sizeof(const uint8_t *));
         if (bg_aux_bpp(g))
-            TAKE(g->aux_ptr, const uint8_t *, cap);
+            g->aux_ptr = (const uint8_t **)take(base, &off, ucap * sizeof(const uint8_t *));
     }
-    TAKE(g->src_tag, int32_t, cap);
-    TAKE(g->scratch, uint32_t, (uint64_t)g->scratch_rows * g->scratch_len);
+    g->src_tag = (int32_t *)take(base, &off, ucap * sizeof(int32_t));
+    g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
     if (base)
         g->src_cap = cap;
     for (int i = 0; i < g->nnodes; i++) {
@@ -124,18 +142,21 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
             continue;
         const uint64_t before = off;
         const int c = imax(n->need, 1);
-        TAKE(n->buf, uint32_t, (uint64_t)c * (uint64_t)n->w * n->ch);
-        TAKE(n->tag, int32_t, c);
+        const uint64_t words = (uint64_t)c * (uint64_t)n->w * n->ch;
+        n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
+        n->tag = (int32_t *)take(base, &off, (uint64_t)c * sizeof(int32_t));
         if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
             n->cap = c;
-            memset(n->buf, 0, (size_t)c * (size_t)n->w * n->ch * sizeof *n->buf);
-            for (int s = 0; s < c; s++)
-                n->tag[s] = BLOOM_TAG_ZERO | 0x3FFFFFFF;
+            if (BLOOM_USE_SKIP)
+                memset(n->buf, 0, (size_t)words * sizeof *n->buf);
+            /* every tag byte 0x40: the zero bit (bit 30) set in each tag,
+             * whatever the byte order; bloom_begin (bloom_init's last
+             * step) then makes each "no row", keeping that bit */
+            memset(n->tag, BLOOM_USE_SKIP ? 0x40 : 0, (size_t)c * sizeof *n->tag);
         }
         if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
             per_level[n->level] += (size_t)(off - before);
     }
-#undef TAKE
     return off;
 }
 

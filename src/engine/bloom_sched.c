@@ -36,14 +36,16 @@ static int oldest_of(const bloom_graph_t *g, int from)
 {
     int o = FAR;
     const int hin = in_height(g, from);
-    /* the source's readers are listed; a node's come after it */
-    const int nc = from < 0 ? g->nsrc_readers : g->nnodes;
+    /* a node's readers come after it; the source's are listed (builds
+     * with presets: their graphs are big) */
+    const bool list = BLOOM_USE_GRAPH && from < 0;
+    const int nc = list ? g->nsrc_readers : g->nnodes;
     for (int ci = (from < 0 ? 0 : from + 1); ci < nc; ci++) {
-        const bg_node_t *n = &g->node[from < 0 ? g->src_reader[ci] : ci];
+        const bg_node_t *n = &g->node[list ? g->src_reader[ci] : ci];
         if (n->next >= n->h)
             continue;
         for (int i = 0; i < n->nin; i++)
-            if (n->in[i].node == from || (from == BG_SRC && n->in[i].node == BG_AUX))
+            if (n->in[i].node == from || (BLOOM_USE_GRAPH && from == BG_SRC && n->in[i].node == BG_AUX))
                 o = imin(o, clampi(base_row(n->in[i].map, n->next) + n->in[i].lo, 0, hin - 1));
     }
     return o;
@@ -52,7 +54,7 @@ static int oldest_of(const bloom_graph_t *g, int from)
 /* The source (or aux) row held in slot `slot` of the source ring. */
 static const void *src_slot(const bloom_graph_t *g, int from, int slot)
 {
-    if (from == BG_SRC)
+    if (!BLOOM_USE_GRAPH || from == BG_SRC) /* (only presets read an aux plane) */
         return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
     return g->aux_copy ? g->aux_copy + (size_t)slot * g->aux_row_bytes : g->aux_ptr[slot];
 }
@@ -137,7 +139,7 @@ static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
     n->tag[s] = r;
     const int made = run_row(g, n, r, dst);
-    if (made == ROW_MADE)
+    if (!BLOOM_USE_SKIP || made == ROW_MADE)
         return;
     if (made == ROW_SKIPPED && !had_zeros)
         memset(dst, 0, len * sizeof *dst);

@@ -118,8 +118,8 @@ struct bloom {
     int src_bpp, aux_bpp;
     const uint8_t *aux_frame; /* bloom_set_aux */
     ptrdiff_t aux_stride;
-    /* the nodes that read the source or aux rings (bloom_plan), for the
-     * push's check of the oldest source row still needed */
+    /* the nodes that read the source or aux rings (bloom_plan, builds with
+     * presets), for the push's check of the oldest source row still needed */
     int8_t src_reader[BG_MAX_NODES];
     int nsrc_readers;
     /* progress */

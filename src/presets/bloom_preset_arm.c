@@ -305,6 +305,7 @@ static uint32_t umax3(const uint32_t *const u[3], int c0, int c1)
  * which is c itself when P <= max(A c, H0) (BLOOM_KEEP8, bloom_kernels.h)
  * and otherwise the table encoder of the fast output path (the same codes
  * as bloom_encode_row; P is clamped to 2^24, above which both give 255). */
+#if !BLOOM_SMALL /* (the table encoder of the fast output path: bloom_pixel.h) */
 static void out_keep8(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
                       bool x4)
 {
@@ -324,6 +325,7 @@ static void out_keep8(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
             dst[3] = 0xFF;
     }
 }
+#endif
 
 /* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
  * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels.
@@ -353,7 +355,8 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     uint32_t f[3];
     tint_factors(g, f);
     const uint64_t fmax = f[0] > f[1] ? (f[0] > f[2] ? f[0] : f[2]) : (f[1] > f[2] ? f[1] : f[2]);
-    const bool keep8 = skip && !g->out.debug && !g->out.linear && g->out.in_fmt == g->out.out_fmt &&
+    const bool keep8 = !BLOOM_SMALL && skip && !g->out.debug && !g->out.linear &&
+                       g->out.in_fmt == g->out.out_fmt &&
                        (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888);
     for (int x0 = 0; x0 < w; x0 += ARM_CHUNK) {
         const int cn = imin(ARM_CHUNK, w - x0), n0 = x0 >> 1, n1 = ((x0 + cn - 1) >> 1) + 1;
@@ -370,10 +373,12 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
             bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
             continue;
         }
+#if !BLOOM_SMALL
         if (keep8) {
             out_keep8(src + (size_t)x0 * ibpp, b, f, out + (size_t)x0 * obpp, cn, ibpp == 4);
             continue;
         }
+#endif
         if (g->out.debug)
             memset(v, 0, (size_t)cn * 3u * sizeof *v);
         else

@@ -80,7 +80,7 @@ static int down_node(bloom_graph_t *g, bg_row_fn fn, int k, int from, bool aux)
 {
     const int n = bg_node(g, fn, g->w[k], g->h[k], 3, k);
     bg_input(g, n, from, BG_DOWN, -1, 2);
-    if (aux)
+    if (BLOOM_USE_GRAPH && aux) /* (only a preset reads an aux plane) */
         bg_input(g, n, BG_AUX, BG_DOWN, 0, 1);
     bg_zero(g, n);
     return n;
