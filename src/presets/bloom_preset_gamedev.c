@@ -19,7 +19,7 @@
 
 #include "bloom_stages.h"
 #include "bloom_pixel.h"
-#include "bloom_preset_gamedev.h"
+#include "bloom_preset_gamedev_k.h"
 
 #if BLOOM_USE_GAMEDEV
 
@@ -34,18 +34,6 @@
 #define LUM_G 7152u
 #define LUM_B 722u
 #define LUM_DEN 10000u
-/* The 9-tap Gaussian: the article's weights divided by their printed sum
- * (1.000001), in Q24, rounded to nearest, the centre one 1 lower so that
- * 3808876 + 2 * (3264759 + 2040477 + 906875 + 272059) = 2^24 exactly (a
- * flat field stays flat). Each weight is within 1.21 * 2^-24 of its real
- * value. */
-#define GW0 3808876u
-#define GW1 3264759u
-#define GW2 2040477u
-#define GW3 906875u
-#define GW4 272059u
-#define GQ 24
-#define GHALF (1u << (GQ - 1))
 
 /* ---- level 1: box down, then the luminance threshold -------------------- */
 
@@ -56,9 +44,10 @@
  * < 2^32, one 64-by-32 division; each channel (c * f + 2^31) >> 32 (c <
  * 2^28: product < 2^60). A numerator not below the divisor (t = 0 and
  * L >= 1e-4) is the factor 1 exactly: the pixel is kept. */
-static void threshold_row(uint32_t *row, int w, uint32_t t)
+static bool threshold_row(uint32_t *row, int w, uint32_t t)
 {
     const uint64_t tx = (uint64_t)t * LUM_DEN;
+    uint32_t any = 0;
     for (int x = 0; x < w; x++) {
         uint32_t *p = row + 3 * x;
         const uint64_t lx = (uint64_t)LUM_R * p[0] + (uint64_t)LUM_G * p[1] + (uint64_t)LUM_B * p[2];
@@ -71,97 +60,124 @@ static void threshold_row(uint32_t *row, int w, uint32_t t)
         while ((den >> sh) > 0xFFFFFFFFu)
             sh++;
         const uint32_t d = (uint32_t)(den >> sh), n = (uint32_t)((lx - tx) >> sh);
-        if (n >= d)
+        if (n >= d) { /* kept: lx > 0, so a channel is not 0 */
+            any = 1;
             continue;
+        }
         const uint64_t f = bloom_div_u64_u32(((uint64_t)n << 32) + (d >> 1), d);
         for (int ch = 0; ch < 3; ch++)
             p[ch] = (uint32_t)((p[ch] * f + 0x80000000u) >> 32);
+        any |= p[0] | p[1] | p[2];
     }
+    return any != 0;
 }
 
-/* Input 0: source rows 2r-1 .. 2r+2 (BG_DOWN). */
+#if !BLOOM_SMALL
+/* Whether level-1 pixel x reads a source code above the dark code: bytes
+ * (pixels 2x-1 .. 2x+2) of the dark-block test's row b, which has zero
+ * bytes before and after it (a clamped pixel is one of the others). */
+static inline bool bright(const uint8_t *b, int x, int bpp)
+{
+    uint64_t p, q = 0;
+    if (bpp == 3) {
+        uint32_t q32;
+        memcpy(&p, b + 6 * x - 3, 8);
+        memcpy(&q32, b + 6 * x + 5, 4);
+        q = q32;
+    } else {
+        memcpy(&p, b + 8 * x - 4, 8);
+        memcpy(&q, b + 8 * x + 4, 8);
+    }
+    return (p | q) != 0;
+}
+
+/* Level 1 of RGB888 / XRGB8888 input by dark blocks: the pixels whose 4x4
+ * source block has no code above the dark code are zero (the box of
+ * samples at most t is at most t, and then Lx <= Tx: "Zero rows" in
+ * sim/docs/presets/gamedev.md), the others boxed and thresholded in runs.
+ * The test's bytes go to scratch row 0 (w0 * bpp + 20 bytes <= 12 w0 + 64). */
+static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t *const s[4], uint32_t *d,
+                      int w)
+{
+    const int w0 = g->w[0], bpp = g->src_bpp;
+    uint8_t *b = (uint8_t *)bg_scratch(g, 0);
+    memset(b, 0, 4);
+    b += 4;
+    k->bright(s, b, w0 * bpp, g->dark.c8);
+    memset(b + w0 * bpp, 0, 16);
+    bool any = false;
+    for (int x = 0; x < w;) {
+        int xa = x;
+        while (x < w && !bright(b, x, bpp))
+            x++;
+        if (x > xa)
+            memset(d + 3 * xa, 0, (size_t)(x - xa) * 3u * sizeof *d);
+        xa = x;
+        while (x < w && bright(b, x, bpp))
+            x++;
+        if (x > xa) {
+            bloom_row_box_src_range_c(s, g->out.in_fmt, g->out.linear, d, xa, x, w0);
+            any |= threshold_row(d + 3 * xa, x - xa, g->knee.t);
+        }
+    }
+    return any;
+}
+#endif
+
+/* Input 0: source rows 2r-1 .. 2r+2 (BG_DOWN). False when the row came out
+ * all zero (the engine then tags it zero). */
 static bool gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
+#if !BLOOM_SMALL
+    const gd_kern_t *k = gd_kern_for(g->kern.isa);
+    if (g->dark_src && k->bright &&
+        (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888))
+        return d1_blocks(g, k, s, (uint32_t *)dst, n->w);
+#endif
     bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
-    threshold_row((uint32_t *)dst, n->w, g->knee.t);
-    return true;
+    return threshold_row((uint32_t *)dst, n->w, g->knee.t);
 }
 
 /* ---- the Gaussian ----------------------------------------------------------- */
 
-/* Vertical pass over m samples of the nine rows a[0..8] (rows r-4 .. r+4,
- * clamped by the engine). Symmetric pairs are added first (< 2^29), each
- * product < 2^51, the sum < 2^24 * 2^28 = 2^52: a 64-bit sum, one UMLAL
- * per pair on Cortex-M. */
-static void gauss_v(const uint32_t *const a[9], uint32_t *dst, int m)
-{
-    const uint32_t *a0 = a[0], *a1 = a[1], *a2 = a[2], *a3 = a[3], *a4 = a[4], *a5 = a[5], *a6 = a[6],
-                   *a7 = a[7], *a8 = a[8];
-    for (int i = 0; i < m; i++) {
-        const uint64_t s = (uint64_t)GW0 * a4[i] + (uint64_t)GW1 * (a3[i] + a5[i]) +
-                           (uint64_t)GW2 * (a2[i] + a6[i]) + (uint64_t)GW3 * (a1[i] + a7[i]) +
-                           (uint64_t)GW4 * (a0[i] + a8[i]) + GHALF;
-        dst[i] = (uint32_t)(s >> GQ);
-    }
-}
-
-static inline int clampx(int x, int w)
-{
-    return x < 0 ? 0 : x >= w ? w - 1 : x;
-}
-
-/* Horizontal pass at an edge pixel x (columns clamped). */
-static void gauss_h_edge(const uint32_t *v, uint32_t *dst, int x, int w)
-{
-    static const uint32_t wt[5] = {GW0, GW1, GW2, GW3, GW4};
-    for (int ch = 0; ch < 3; ch++) {
-        uint64_t s = (uint64_t)GW0 * v[3 * x + ch] + GHALF;
-        for (int j = 1; j <= 4; j++)
-            s += (uint64_t)wt[j] * (v[3 * clampx(x - j, w) + ch] + v[3 * clampx(x + j, w) + ch]);
-        dst[3 * x + ch] = (uint32_t)(s >> GQ);
-    }
-}
-
-/* Horizontal pass of a row of w pixels: v (3 samples per pixel) -> dst. */
-static void gauss_h(const uint32_t *v, uint32_t *dst, int w)
-{
-    const int lo = w < 4 ? w : 4, hi = w - 4 > lo ? w - 4 : lo;
-    for (int x = 0; x < lo; x++)
-        gauss_h_edge(v, dst, x, w);
-    for (int i = 3 * lo; i < 3 * hi; i++) {
-        const uint64_t s = (uint64_t)GW0 * v[i] + (uint64_t)GW1 * (v[i - 3] + v[i + 3]) +
-                           (uint64_t)GW2 * (v[i - 6] + v[i + 6]) + (uint64_t)GW3 * (v[i - 9] + v[i + 9]) +
-                           (uint64_t)GW4 * (v[i - 12] + v[i + 12]) + GHALF;
-        dst[i] = (uint32_t)(s >> GQ);
-    }
-    for (int x = hi; x < w; x++)
-        gauss_h_edge(v, dst, x, w);
-}
-
 /* U_k = gauss9(D_k) (+ tent(U_k+1)). Inputs: [U_k+1 rows m-1 .. m+1 (BG_UP),]
  * D_k rows r-4 .. r+4 (BG_SAME), the last input. The vertical pass goes to
- * scratch row 0. */
+ * scratch row 0. Zero rows: gauss9 of nine zero rows is 0 ((0 + 2^23) >>
+ * 24) and the tent of three zero rows is 0, so the node is zero-preserving
+ * (bg_zero); with D_k's rows zero the row is the tent alone, with U_k+1's
+ * the Gaussian alone. */
 static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
-    const void *const *d = in[n->nin - 1];
-    const uint32_t *const rows[9] = {(const uint32_t *)d[0], (const uint32_t *)d[1], (const uint32_t *)d[2],
-                                     (const uint32_t *)d[3], (const uint32_t *)d[4], (const uint32_t *)d[5],
-                                     (const uint32_t *)d[6], (const uint32_t *)d[7], (const uint32_t *)d[8]};
-    uint32_t *v = bg_scratch(g, 0), *out = (uint32_t *)dst;
-    gauss_v(rows, v, 3 * n->w);
-    gauss_h(v, out, n->w);
-    if (n->nin == 2) {
+    const int di = n->nin - 1;
+    const void *const *d = in[di];
+    uint32_t *out = (uint32_t *)dst;
+    const bool dz = bg_in_zero(g, di, 0, 8), uz = n->nin == 1 || bg_in_zero(g, 0, 0, 2);
+    if (dz && uz) { /* not run when the engine skips: all zero */
+        memset(out, 0, (size_t)n->w * 3u * sizeof *out);
+        return false;
+    }
+    if (!dz) {
+        const gd_kern_t *k = gd_kern_for(g->kern.isa);
+        const uint32_t *const rows[9] = {
+            (const uint32_t *)d[0], (const uint32_t *)d[1], (const uint32_t *)d[2],
+            (const uint32_t *)d[3], (const uint32_t *)d[4], (const uint32_t *)d[5],
+            (const uint32_t *)d[6], (const uint32_t *)d[7], (const uint32_t *)d[8]};
+        uint32_t *v = bg_scratch(g, 0);
+        k->gauss_v(rows, v, 3 * n->w);
+        gd_gauss_h_row(k, v, out, n->w);
+    }
+    if (!uz) {
         const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                       (const uint32_t *)in[0][2]};
         /* the engine's tent, C or its SIMD twin (same bits), picked once at
          * bloom_init: picking it per row ran CPUID per row (a VM exit each
          * under virtualisation: 12x the default's time at 1080p) */
-        g->kern.tent(u, r & 1, out, out, 0, n->w, g->node[n->in[0].node].w);
+        g->kern.tent(u, r & 1, dz ? NULL : out, out, 0, n->w, g->node[n->in[0].node].w);
     }
     return true;
 }
@@ -175,29 +191,12 @@ static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
  * BLOOM_SMALL builds search t (branch-free binary search, h = (n+1)/2).
  * Same result. */
 #if !BLOOM_SMALL
-static inline uint32_t gd_key(uint32_t v)
-{
-    if (v < 64)
-        return v;
-#if defined(__GNUC__)
-    const int e = 31 - __builtin_clz(v);
-#else
-    int e = 31;
-    while (!(v >> e))
-        e--;
-#endif
-    return 64u + 32u * (uint32_t)(e - 6) + ((v >> (e - 5)) & 31u);
-}
-
 typedef const uint8_t *gd_bk_t;
 #define GD_TABLE(name) bloom_gd_##name##_bk
 static inline uint32_t code_of(const uint32_t *t, gd_bk_t bk, uint32_t half, uint32_t v)
 {
     (void)half;
-    uint32_t k = bk[gd_key(v)];
-    k += t[k + 1] <= v;
-    k += t[k + 1] <= v;
-    return k;
+    return gd_code_bk(t, bk, v);
 }
 #else
 typedef const void *gd_bk_t;
@@ -210,15 +209,14 @@ static inline uint32_t code_of(const uint32_t *t, gd_bk_t bk, uint32_t half, uin
         k += s & (0u - (uint32_t)(t[k + s] <= v));
     return k;
 }
-#endif
 
-/* c at F bits as the tables' Q12.20, saturated at 2^32 - 2 (every
- * threshold is below 2^30, so that changes no code). */
-static inline uint32_t to_q20(uint64_t c)
+static inline uint32_t gd_to_q20(uint64_t c)
 {
     c <<= 20 - BLOOM_LIN_BITS;
     return c > 0xFFFFFFFEu ? 0xFFFFFFFEu : (uint32_t)c;
 }
+#endif
+#define to_q20 gd_to_q20
 
 /* round(c / (c + 1) * 65536) = floor((2^17 c + d) / 2d), d = c + 2^F: the
  * tone-mapped value in Q16.16. c < 2^34, so the numerator is < 2^52 and the
@@ -239,34 +237,195 @@ static uint32_t tonemap_q16(uint64_t c)
     return q;
 }
 
+/* ---- rows without bloom: a table of each input code's output ----------------- */
+
+/* Where U_1's rows are zero, B = 0 and c = S (the debug view: c = 0): the
+ * output of a channel is a function of its input code alone, for 8/6/5-bit
+ * input. The table of those outputs (one uint32_t per input code and
+ * output class: 256 or 512 words for 8-bit input, 96 for RGB565) lives in
+ * scratch row 1, the decoded-source row of rows with bloom, and its last
+ * word GD_ZT_AT says whether it is there: cleared at row 0 of every frame
+ * (the scratch is the caller's memory, never assumed) and whenever a row
+ * with bloom decodes the source into that row, set when the table is
+ * built. No memory beyond the two scratch rows the preset had. */
+#define GD_ZT_MARK 0x67645a54u
+#define GD_ZT_AT(g) (bg_scratch((g), 1)[(g)->scratch_len - 1u])
+
+/* The output of a decoded sample S at output class cls: 8, 6 or 5 (codes
+ * by the gamma or linear thresholds), 16 (RGBQ16: the tone-mapped Q16). */
+static uint32_t out_value(const bloom_graph_t *g, uint32_t S, int cls)
+{
+    const bool lin = g->out.linear;
+    if (g->out.debug)
+        S = 0;
+    if (cls == 16)
+        return tonemap_q16(S);
+    if (cls == 8)
+        return code_of(lin ? bloom_gd_lin8 : bloom_gd_gamma8, lin ? GD_TABLE(lin8) : GD_TABLE(gamma8), 128,
+                       to_q20(S));
+    if (cls == 6)
+        return code_of(lin ? bloom_gd_lin6 : bloom_gd_gamma6, lin ? GD_TABLE(lin6) : GD_TABLE(gamma6), 32,
+                       to_q20(S));
+    return code_of(lin ? bloom_gd_lin5 : bloom_gd_gamma5, lin ? GD_TABLE(lin5) : GD_TABLE(gamma5), 16,
+                   to_q20(S));
+}
+
+/* The tables of channels R, G, B into tab[0..2], built in scratch row 1
+ * when it has room; NULL tab[0] when not (RGBQ16 input, or a row too short:
+ * the caller takes the general path). */
+static void zero_tables(const bloom_graph_t *g, const uint32_t *tab[3])
+{
+    const bloom_format_t in = g->out.in_fmt, of = g->out.out_fmt;
+    const int ocls = of == BLOOM_FMT_RGBQ16 ? 16 : of == BLOOM_FMT_RGB565 ? 5 : 8;
+    const int gcls = of == BLOOM_FMT_RGB565 ? 6 : ocls;
+    const bool in8 = in == BLOOM_FMT_RGB888 || in == BLOOM_FMT_XRGB8888;
+    const size_t size = in8 ? (gcls != ocls ? 512u : 256u) : 96u;
+    uint32_t *t = bg_scratch(g, 1);
+    tab[0] = NULL;
+    if ((!in8 && in != BLOOM_FMT_RGB565) || size + 1u > g->scratch_len)
+        return;
+    const uint32_t *tg = in8 && gcls == ocls ? t : t + (in8 ? 256 : 32);
+    tab[0] = tab[2] = t;
+    tab[1] = tg;
+    if (GD_ZT_AT(g) == GD_ZT_MARK)
+        return;
+    uint32_t o[3];
+    if (in8) {
+        for (uint32_t c = 0; c < 256; c++) {
+            bloom_dec3(c, c, c, o, g->out.linear);
+            t[c] = out_value(g, o[0], ocls);
+            if (tg != t)
+                t[256 + c] = out_value(g, o[1], gcls);
+        }
+    } else {
+        for (uint32_t c = 0; c < 64; c++) {
+            const uint32_t wd = ((c & 31u) << 11) | (c << 5);
+            const uint8_t px[2] = {(uint8_t)wd, (uint8_t)(wd >> 8)};
+            bloom_dec_rgb565(px, o, g->out.linear);
+            if (c < 32)
+                t[c] = out_value(g, o[0], ocls);
+            t[32 + c] = out_value(g, o[1], gcls);
+        }
+    }
+    GD_ZT_AT(g) = GD_ZT_MARK;
+}
+
+/* The output row from the tables: each pixel read whole before it is
+ * written (in place: same format, same place). False when there are no
+ * tables. */
+static bool zero_row(const bloom_graph_t *g, const uint8_t *s, uint8_t *d, int w)
+{
+    const uint32_t *tab[3];
+    zero_tables(g, tab);
+    if (!tab[0])
+        return false;
+    const bloom_format_t in = g->out.in_fmt, of = g->out.out_fmt;
+    const uint32_t *t0 = tab[0], *t1 = tab[1], *t2 = tab[2];
+    if (in == BLOOM_FMT_RGB888 && of == BLOOM_FMT_RGB888) {
+        gd_kern_for(g->kern.isa)->lut8(s, t0, d, 3 * w);
+        return true;
+    }
+    const int ib = bloom_format_bpp(in), ob = bloom_format_bpp(of);
+    for (int x = 0; x < w; x++, s += ib, d += ob) {
+        uint32_t c[3];
+        if (in == BLOOM_FMT_RGB565) {
+            const uint32_t wd = (uint32_t)s[0] | ((uint32_t)s[1] << 8);
+            c[0] = t0[wd >> 11];
+            c[1] = t1[(wd >> 5) & 63u];
+            c[2] = t2[wd & 31u];
+        } else {
+            const int o = in == BLOOM_FMT_XRGB8888 ? 2 : 0; /* XRGB8888 bytes: B, G, R, X */
+            c[0] = t0[s[o]];
+            c[1] = t1[s[1]];
+            c[2] = t2[s[2 - o]];
+        }
+        if (of == BLOOM_FMT_RGBQ16) {
+            memcpy(d, c, sizeof c);
+        } else if (of == BLOOM_FMT_RGB565) {
+            const uint32_t wd = (c[0] << 11) | (c[1] << 5) | c[2];
+            d[0] = (uint8_t)wd;
+            d[1] = (uint8_t)(wd >> 8);
+        } else if (of == BLOOM_FMT_XRGB8888) {
+            d[0] = (uint8_t)c[2];
+            d[1] = (uint8_t)c[1];
+            d[2] = (uint8_t)c[0];
+            d[3] = 0xFF;
+        } else {
+            d[0] = (uint8_t)c[0];
+            d[1] = (uint8_t)c[1];
+            d[2] = (uint8_t)c[2];
+        }
+    }
+    return true;
+}
+
+/* ---- the output row ------------------------------------------------------------ */
+
 /* Input 0: U_1 rows m-1 .. m+1 (BG_UP); input 1: the source row (BG_SAME).
- * B = tent(U_1) into scratch 0, S decoded into scratch 1, then per sample
- * c = S + ((strength * B + 2^15) >> 16) (u64: B < 3 * 2^28, strength <=
- * 2^20) and the code by the thresholds. */
+ * B = tent(U_1) into scratch 0 (U_1's rows zero: B = 0, by the tables above
+ * where they apply), S decoded into scratch 1 (8-bit output of sRGB RGB888
+ * input: decoded by the tone kernel on the fly), then per sample c = S +
+ * ((strength * B + 2^15) >> 16) (u64: B < 3 * 2^28, strength <= 2^20) and
+ * the code by the thresholds. */
 static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     const int w = n->w;
+    const uint8_t *src = (const uint8_t *)in[1][0];
     uint32_t *bl = bg_scratch(g, 0), *sv = bg_scratch(g, 1);
-    const uint64_t s = g->cfg.p.strength;
-    g->kern.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w); /* picked at bloom_init */
+    const uint32_t s = g->cfg.p.strength;
+    const bool zero = bg_in_zero(g, 0, 0, 2);
+    if (r == 0) /* a new frame: no table is trusted (an earlier engine's, or none) */
+        GD_ZT_AT(g) = 0;
+    if (zero && zero_row(g, src, (uint8_t *)dst, w))
+        return true;
+    if (zero)
+        memset(bl, 0, (size_t)w * 3u * sizeof *bl);
+    else
+        g->kern.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w); /* picked at bloom_init */
+    const bool lin = g->out.linear;
+    uint8_t *p = (uint8_t *)dst;
+#if !BLOOM_SMALL
+    if (g->out.out_fmt == BLOOM_FMT_RGB888 || g->out.out_fmt == BLOOM_FMT_XRGB8888) {
+        const bool fused = g->out.in_fmt == BLOOM_FMT_RGB888 && !lin && !g->out.debug;
+        if (!fused) {
+            GD_ZT_AT(g) = 0; /* sv is the zero tables' row */
+            if (g->out.debug)
+                memset(sv, 0, (size_t)w * 3u * sizeof *sv);
+            else
+                bloom_decode_row(g->out.in_fmt, lin, src, sv, w);
+        }
+        const bool xrgb = g->out.out_fmt == BLOOM_FMT_XRGB8888;
+        uint8_t *codes = xrgb ? (uint8_t *)bl : p;
+        gd_kern_for(g->kern.isa)
+            ->tone8(bl, sv, fused ? src : NULL, bloom_srgb_dec8, codes, 3 * w, s,
+                    lin ? bloom_gd_lin8 : bloom_gd_gamma8, lin ? GD_TABLE(lin8) : GD_TABLE(gamma8));
+        if (xrgb)
+            for (int x = 0; x < w; x++, p += 4) {
+                p[0] = codes[3 * x + 2];
+                p[1] = codes[3 * x + 1];
+                p[2] = codes[3 * x];
+                p[3] = 0xFF;
+            }
+        return true;
+    }
+#endif
+    GD_ZT_AT(g) = 0;
     if (g->out.debug)
         memset(sv, 0, (size_t)w * 3u * sizeof *sv);
     else
-        bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[1][0], sv, w);
-    uint8_t *p = (uint8_t *)dst;
+        bloom_decode_row(g->out.in_fmt, lin, src, sv, w);
     if (g->out.out_fmt == BLOOM_FMT_RGBQ16) {
         for (int x = 0; x < w; x++, p += 12) {
             uint32_t q[3];
             for (int ch = 0; ch < 3; ch++)
-                q[ch] = tonemap_q16(((s * bl[3 * x + ch] + 32768u) >> 16) + sv[3 * x + ch]);
+                q[ch] = tonemap_q16(((s * (uint64_t)bl[3 * x + ch] + 32768u) >> 16) + sv[3 * x + ch]);
             memcpy(p, q, sizeof q);
         }
         return true;
     }
-    const bool lin = g->out.linear;
     const uint32_t *t8 = lin ? bloom_gd_lin8 : bloom_gd_gamma8;
     const uint32_t *t6 = lin ? bloom_gd_lin6 : bloom_gd_gamma6;
     const uint32_t *t5 = lin ? bloom_gd_lin5 : bloom_gd_gamma5;
@@ -278,9 +437,9 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         for (int x = 0; x < w; x++) {
             uint32_t *c = bl + 3 * x;
             const uint32_t *sx = sv + 3 * x;
-            c[0] = code_of(t5, b5, 16, to_q20(((s * c[0] + 32768u) >> 16) + sx[0]));
-            c[1] = code_of(t6, b6, 32, to_q20(((s * c[1] + 32768u) >> 16) + sx[1]));
-            c[2] = code_of(t5, b5, 16, to_q20(((s * c[2] + 32768u) >> 16) + sx[2]));
+            c[0] = code_of(t5, b5, 16, to_q20(((s * (uint64_t)c[0] + 32768u) >> 16) + sx[0]));
+            c[1] = code_of(t6, b6, 32, to_q20(((s * (uint64_t)c[1] + 32768u) >> 16) + sx[1]));
+            c[2] = code_of(t5, b5, 16, to_q20(((s * (uint64_t)c[2] + 32768u) >> 16) + sx[2]));
             const uint32_t wd = (c[0] << 11) | (c[1] << 5) | c[2];
             p[2 * x] = (uint8_t)wd;
             p[2 * x + 1] = (uint8_t)(wd >> 8);
@@ -288,7 +447,7 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         return true;
     }
     for (int i = 0; i < 3 * w; i++)
-        bl[i] = code_of(t8, b8, 128, to_q20(((s * bl[i] + 32768u) >> 16) + sv[i]));
+        bl[i] = code_of(t8, b8, 128, to_q20(((s * (uint64_t)bl[i] + 32768u) >> 16) + sv[i]));
     if (g->out.out_fmt == BLOOM_FMT_XRGB8888) {
         for (int x = 0; x < w; x++, p += 4) {
             p[0] = (uint8_t)bl[3 * x + 2];
@@ -331,23 +490,32 @@ static bloom_status_t build(bloom_graph_t *g)
     g->knee.k = 0;                        /* no soft knee: bloom_query reports knee_q = 0 */
     g->out.intensity = g->cfg.p.strength; /* ... and intensity_q = the strength (linear Q16.16) */
     int D[GD_LEVELS + 1];
+    /* a source pixel with no channel above t is zero after the box and the
+     * threshold (sim/docs/presets/gamedev.md, "Zero rows"); every node but
+     * the output is zero-preserving */
+    g->dark_cut = g->knee.t;
     D[1] = bg_node(g, gd_d1, g->w[1], g->h[1], 3, 1);
     bg_input(g, D[1], BG_SRC, BG_DOWN, -1, 2);
+    bg_zero(g, D[1]);
     for (int k = 2; k <= L; k++) {
         D[k] = bg_node(g, bg_fn_box, g->w[k], g->h[k], 3, k);
         bg_input(g, D[k], D[k - 1], BG_DOWN, -1, 2);
+        bg_zero(g, D[k]);
     }
     int U = bg_node(g, gd_up, g->w[L], g->h[L], 3, L);
     bg_input(g, U, D[L], BG_SAME, -4, 4);
+    bg_zero(g, U);
     for (int k = L - 1; k >= 1; k--) {
         int dk = D[k];
         if (k == 1) { /* D_1 again for the up pass: no delay line at the widest level */
             dk = bg_node(g, gd_d1, g->w[1], g->h[1], 3, 1);
             bg_input(g, dk, BG_SRC, BG_DOWN, -1, 2);
+            bg_zero(g, dk);
         }
         const int u = bg_node(g, gd_up, g->w[k], g->h[k], 3, k);
         bg_input(g, u, U, BG_UP, -1, 1); /* first: D_k rows are made only when U_k+1 is ready */
         bg_input(g, u, dk, BG_SAME, -4, 4);
+        bg_zero(g, u);
         U = u;
     }
     const int o = bg_node(g, gd_out, g->w[0], g->h[0], 3, 0);
