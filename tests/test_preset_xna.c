@@ -284,6 +284,8 @@ static void threshold_above_all(void)
         }
 }
 
+#include "xna_dark_skip.h" /* dark_skip() */
+
 /* SATURATE: the bloom plane (DEBUG_VIEW, RGBQ16 out) never exceeds 1.0,
  * even from HDR input at intensity 10; without it, it does. */
 static void saturate_caps_bloom(void)
@@ -554,6 +556,7 @@ int main(void)
     lights_on_black();
     real_images();
     threshold_above_all();
+    dark_skip();
     saturate_caps_bloom();
     passes_and_levels();
     screen_below_one();

@@ -19,9 +19,17 @@
  *     other pass:  v = sum / 16, rounded half to even
  *     last pass:   v = min((v * I_q + 2^15) >> 16, LIN_MAX)
  *     SATURATE:    v = min(v, 2^F)
- *   screen: b = min(B, 2^F); v = b + ((S (2^F - b) + 2^(F-1)) >> F)  (u64 product). */
-#include "bloom_stages.h"
+ *   screen: b = min(B, 2^F); v = b + ((S (2^F - b) + 2^(F-1)) >> F)  (u64 product).
+ *
+ * Zero rows (xna.md, "Skipping"): dark source rows (no channel above T)
+ * skip H through a 16-row window, Q, the passes and the tent; an output
+ * row with B = 0 is the source copied. The passes' sums and the screen run
+ * in the kernels of bloom_preset_xna.h (SSE2/AVX2/NEON twins by
+ * g->kern.isa); the output row takes the default's flat tents and fused
+ * encoder with the screen as an addend. */
+#include "bloom_preset_xna.h"
 #include "bloom_pixel.h"
+#include "bloom_stages.h"
 
 #include <string.h>
 
@@ -34,7 +42,12 @@
 #define XNA_LAST 2u
 #define XNA_SAT 4u
 
-/* Half resolution: 4x4 box of the source rows base-1 .. base+2 (input 0). */
+/* Half resolution: 4x4 box of the source rows base-1 .. base+2 (input 0).
+ * Input 1, source rows base-7 .. base+8, only gives the engine the window
+ * of a dark skip: the node is marked zero-preserving, so where all 16 rows
+ * are dark the row is not computed and holds zeros instead of its values
+ * (<= T). Every quarter row that reads such a row is dark, so it is zero
+ * whatever H holds (xna.md, "Skipping"). */
 static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
@@ -46,64 +59,108 @@ static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
 }
 
 /* Quarter resolution: 4x4 box of H, then the threshold subtraction (and
- * the clamp to 1.0 with SATURATE). Input 0: H rows base-1 .. base+2. */
+ * the clamp to 1.0 with SATURATE). Input 0: H rows base-1 .. base+2. A
+ * zero-tagged H row among them (skipped: its window was dark) means the
+ * row is dark, so zero; false when the row came out all zero. */
 static bool fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
                        const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
+    const int cnt = 3 * n->w;
+    uint32_t *row = (uint32_t *)dst;
+    if (g->zin[0] != 0) {
+        memset(row, 0, (size_t)cnt * sizeof *row);
+        return false;
+    }
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    uint32_t *row = (uint32_t *)dst;
     g->kern.box(s, row, n->w, g->node[n->in[0].node].w); /* C or SIMD, same bits */
     const uint32_t t = g->knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
-    const int cnt = 3 * n->w;
+    uint32_t any = 0;
     for (int i = 0; i < cnt; i++) {
         uint32_t v = row[i] > t ? row[i] - t : 0u;
         row[i] = v > cap ? cap : v;
+        any |= v;
     }
-    return true;
+    return any != 0;
 }
 
-/* Sum of the four column sums at x-i-1, x-i, x+i, x+i+1 (clamped) of
- * cs, for destination columns xa .. xb-1 into dst. Each column sum is below
- * 2^30 (four samples <= LIN_MAX < 2^28), so the sum stays below 2^32. */
-static void kawase_h(const uint32_t *cs, uint32_t *dst, int xa, int xb, int i, int w)
+void xna_kawase_c(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
 {
-    for (int x = xa; x < xb; x++) {
-        const int a = x - i - 1 < 0 ? 0 : x - i - 1, b = x - i < 0 ? 0 : x - i;
-        const int c = x + i > w - 1 ? w - 1 : x + i, d = x + i + 1 > w - 1 ? w - 1 : x + i + 1;
-        for (int ch = 0; ch < 3; ch++)
-            dst[3 * x + ch] = cs[3 * a + ch] + cs[3 * b + ch] + cs[3 * c + ch] + cs[3 * d + ch];
+    const int cnt = 3 * w;
+    for (int j = 0; j < cnt; j++)
+        cs[j] = r[0][j] + r[1][j] + r[2][j] + r[3][j];
+    int xa, xb;
+    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
+    for (int j = 3 * xa; j < 3 * xb; j++) /* interior: flat in the sample index */
+        dst[j] = cs[j - 3 * i - 3] + cs[j - 3 * i] + cs[j + 3 * i] + cs[j + 3 * i + 3];
+    if (rnd)
+        for (int j = 0; j < cnt; j++)
+            dst[j] = BLOOM_BOX_RND(dst[j]); /* sum / 16, half to even (bloom_internal.h) */
+}
+
+void xna_screen_c(const uint32_t *s, uint32_t *x, int n)
+{
+    for (int j = 0; j < n; j++) {
+        const uint32_t b = x[j] > BLOOM_LIN_ONE ? BLOOM_LIN_ONE : x[j];
+        const uint64_t p = ((uint64_t)s[j] * b + (BLOOM_LIN_ONE >> 1) - 1u) >> BLOOM_LIN_BITS;
+        x[j] = b - (uint32_t)p;
+    }
+}
+
+void xna_kernels(bloom_isa_t isa, xna_kawase_fn *kawase, xna_screen_fn *screen)
+{
+    *kawase = xna_kawase_c;
+    *screen = xna_screen_c;
+    switch (isa) {
+#if defined(BLOOM_SIMD_AVX2)
+    case BLOOM_ISA_AVX2:
+        *kawase = xna_kawase_avx2;
+        *screen = xna_screen_avx2;
+        break;
+#endif
+#if defined(BLOOM_SIMD_SSE2)
+    case BLOOM_ISA_SSE2:
+        *kawase = xna_kawase_sse2;
+        *screen = xna_screen_sse2;
+        break;
+#endif
+#if defined(BLOOM_SIMD_NEON)
+    case BLOOM_ISA_NEON:
+        *kawase = xna_kawase_neon;
+        *screen = xna_screen_neon;
+        break;
+#endif
+    default:
+        break;
     }
 }
 
 /* Kawase pass i = k[0] at quarter resolution. Input 0: rows r-i-1 .. r+i+1
  * of the previous pass (or Q); the pass reads the first two and the last
- * two of them. k[1]: XNA_FIRST/LAST/SAT; k[2], k[3]: low and high word of
- * the range-restore factor f (Q24, up to 2^40). */
+ * two of them (all four zero: a zero row). k[1]: XNA_FIRST/LAST/SAT;
+ * k[2], k[3]: low and high word of the range-restore factor f (Q24, up to
+ * 2^40). */
 static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
                       const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
     const int i = (int)n->k[0], w = n->w, cnt = 3 * w;
-    const uint32_t *r0 = (const uint32_t *)in[0][0], *r1 = (const uint32_t *)in[0][1];
-    const uint32_t *r2 = (const uint32_t *)in[0][2 * i + 1], *r3 = (const uint32_t *)in[0][2 * i + 2];
-    uint32_t *cs = bg_scratch(g, 0), *row = (uint32_t *)dst;
-    for (int j = 0; j < cnt; j++)
-        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
-    /* interior columns need no clamping: i + 1 <= x <= w - i - 2 */
-    const int xa = imin(i + 1, w), xb = w - i - 1 > xa ? w - i - 1 : xa;
-    kawase_h(cs, row, 0, xa, i, w);
-    for (int x = xa; x < xb; x++) {
-        const uint32_t *a = cs + 3 * (x - i - 1), *c = cs + 3 * (x + i);
-        row[3 * x] = a[0] + a[3] + c[0] + c[3];
-        row[3 * x + 1] = a[1] + a[4] + c[1] + c[4];
-        row[3 * x + 2] = a[2] + a[5] + c[2] + c[5];
+    uint32_t *row = (uint32_t *)dst;
+    if (bg_in_zero(g, 0, 0, 1) && bg_in_zero(g, 0, 2 * i + 1, 2 * i + 2)) {
+        memset(row, 0, (size_t)cnt * sizeof *row);
+        return false;
     }
-    kawase_h(cs, row, xb, w, i, w);
+    const uint32_t *const rows[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                     (const uint32_t *)in[0][2 * i + 1], (const uint32_t *)in[0][2 * i + 2]};
     const uint32_t flags = n->k[1];
     const uint64_t f = (uint64_t)n->k[2] | ((uint64_t)n->k[3] << 32);
-    if ((flags & XNA_FIRST) && f != 1u << 24) {
+    const bool restore = (flags & XNA_FIRST) && f != 1u << 24;
+    xna_kawase_fn kawase;
+    xna_screen_fn screen;
+    xna_kernels(g->kern.isa, &kawase, &screen);
+    kawase(rows, bg_scratch(g, 0), row, w, i, !restore);
+    if (restore) {
         for (int j = 0; j < cnt; j++) {
             /* sum f / 2^28 with f <= 2^40: the sum split at bit 16 keeps both
              * products below 2^56 (the low one's 16 dropped bits are below
@@ -112,9 +169,6 @@ static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
             const uint64_t v = (sh * f + ((sl * f) >> 16) + (1u << 11)) >> 12;
             row[j] = v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)v;
         }
-    } else {
-        for (int j = 0; j < cnt; j++)
-            row[j] = BLOOM_BOX_RND(row[j]); /* sum / 16, half to even (bloom_internal.h) */
     }
     if ((flags & XNA_LAST) && g->out.intensity != 65536u) {
         const uint64_t I = g->out.intensity;
@@ -130,7 +184,8 @@ static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
 }
 
 /* Half resolution, the way back: tent of the last pass (input 0: rows
- * m-1 .. m+1, BG_UP), nothing added. */
+ * m-1 .. m+1, BG_UP), nothing added (zero-preserving: the tent of zeros is
+ * zero). */
 static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
@@ -140,8 +195,91 @@ static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     return true;
 }
 
+#if !BLOOM_SMALL
+/* Level-1 columns per chunk of the fast output path. */
+#define XNA_OUT_CH 32
+
+/* The decoded source (8-bit sRGB codes, channel c at byte c or 2 - c)
+ * of nx pixels of bpp bytes: even pixels into se, odd into so. Inlined with
+ * constant bpp and cr. */
+static BLOOM_ALWAYS_INLINE void gather_s(const uint8_t *s, uint32_t *se, uint32_t *so, int nx, size_t bpp,
+                                         size_t cr)
+{
+    const uint32_t *dec = bloom_srgb_dec8;
+    int x = 0;
+    for (; x + 2 <= nx; x += 2, s += 2 * bpp, se += 3, so += 3) {
+        se[0] = dec[s[cr]];
+        se[1] = dec[s[1]];
+        se[2] = dec[s[2 - cr]];
+        so[0] = dec[s[bpp + cr]];
+        so[1] = dec[s[bpp + 1]];
+        so[2] = dec[s[bpp + 2 - cr]];
+    }
+    if (x < nx) {
+        se[0] = dec[s[cr]];
+        se[1] = dec[s[1]];
+        se[2] = dec[s[2 - cr]];
+    }
+}
+
+/* The output row through the flat tent kernels (their 32-bit sums are exact:
+ * every sample is at most LIN_MAX < 2^29) and the fused encoder of the
+ * default's fast path (g->kern.eo: out = enc(S + P)), with P the screen as
+ * an addend (xna_screen_fn): enc(S + P) = enc(b + S (1 - b)). Per chunk of
+ * level-1 columns: V, the even and odd columns e, od of B, then P in place
+ * of B (the debug view: B itself). RGB888 and XRGB8888 input, 8/6/5-bit
+ * sRGB output (bloom_encode_eo_ok); B = 0 on a chunk: the source copied. */
+static void out_fast(const bloom_graph_t *g, const uint32_t *const u[3], int odd, const uint8_t *src,
+                     uint8_t *dst, int w, int sw)
+{
+    const bloom_out_t *o = &g->out;
+    const bloom_kernels_t *k = &g->kern;
+    const bool x8 = o->in_fmt == BLOOM_FMT_XRGB8888;
+    const size_t ibpp = x8 ? 4u : 3u, obpp = (size_t)bloom_format_bpp(o->out_fmt);
+    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
+    uint32_t vb[3 * (XNA_OUT_CH + 2)], eo[6 * XNA_OUT_CH], se[6 * XNA_OUT_CH];
+    uint32_t *e = eo, *od = eo + 3 * XNA_OUT_CH;
+    xna_kawase_fn kawase;
+    xna_screen_fn screen;
+    xna_kernels(k->isa, &kawase, &screen);
+    for (int m0 = 0; m0 < sw; m0 += XNA_OUT_CH) {
+        const int nn = imin(XNA_OUT_CH, sw - m0);
+        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns computed */
+        const size_t c0 = (size_t)lo * 3u;
+        const int x0 = 2 * m0, nx = imin(2 * nn, w - x0);
+        const uint8_t *s = src + (size_t)x0 * ibpp;
+        uint8_t *d = dst + (size_t)x0 * obpp;
+        if (!k->vtent(ua + c0, ub + c0, uc + c0, vb + (size_t)(lo - m0 + 1) * 3u, 3 * (hi - lo + 1))) {
+            bloom_row_copy_c(s, d, nx, o); /* V = 0: B = 0 here */
+            continue;
+        }
+        if (m0 == 0)
+            memcpy(vb, vb + 3, 3u * sizeof *vb);
+        if (m0 + nn == sw)
+            memcpy(vb + 3 * (nn + 1), vb + 3 * nn, 3u * sizeof *vb);
+        if (!k->htent_eo(vb + 3, e, od, 3 * nn)) {
+            bloom_row_copy_c(s, d, nx, o); /* B = 0 on this chunk */
+            continue;
+        }
+        if (!o->debug) {
+            /* S of every output pixel in the order of e (pixel 2j) and od (2j + 1) */
+            uint32_t *sv = se, *so = se + 3 * XNA_OUT_CH;
+            if (x8)
+                gather_s(s, sv, so, nx, 4, 2);
+            else
+                gather_s(s, sv, so, nx, 3, 0);
+            screen(sv, e, 3 * ((nx + 1) >> 1));
+            screen(so, od, 3 * (nx >> 1));
+        }
+        k->eo(o->in_fmt, o->out_fmt, o->debug, s, e, od, d, nx);
+    }
+}
+#endif
+
 /* Output: input 0 the source row (BG_SAME 0..0), input 1 the half-resolution
- * bloom rows m-1 .. m+1 (BG_UP). B = tent; screen combine; encode. */
+ * bloom rows m-1 .. m+1 (BG_UP). B = tent; screen combine; encode. All
+ * three bloom rows zero: B = 0, out = b + S (1 - b) = S exactly (debug
+ * view: 0), which is bloom_row_copy_c. */
 static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
@@ -152,6 +290,17 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const bloom_out_t *o = &g->out;
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
     const int w = n->w, sw = g->node[n->in[1].node].w;
+    if (bg_in_zero(g, 1, 0, 2)) {
+        bloom_row_copy_c(src, out, w, o);
+        return true;
+    }
+#if !BLOOM_SMALL
+    if (g->kern.vtent && (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_XRGB8888) &&
+        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+        out_fast(g, u, r & 1, src, out, w, sw);
+        return true;
+    }
+#endif
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
         const int cnt = imin(BLOOM_OUT_CHUNK, w - x0);
@@ -209,16 +358,28 @@ static bloom_status_t build(bloom_graph_t *g)
     const uint64_t fr = ((uint64_t)rh << 32) - (uint64_t)ql * d;
     const uint64_t f = ((uint64_t)qh << 32) + ql + (fr >= (d + 1u) / 2u);
 
+    /* zero rows (xna.md, "Skipping"): a source pixel with no channel above T
+     * is dark; H skips where its 16-row window is dark, Q where any H row it
+     * reads was skipped; the passes and the tent are zero-preserving */
+    g->dark_cut = g->knee.t;
     const int hn = bg_node(g, fn_half, g->w[1], g->h[1], 3, 1);
     bg_input(g, hn, BG_SRC, BG_DOWN, -1, 2);
+    if (!(g->cfg.flags & BLOOM_FLAG_COPY_SOURCE)) {
+        /* the window keeps 6 more source rows: pointers here, but with
+         * COPY_SOURCE 6 copied rows (34 KB at 1080p): there H is always made */
+        bg_input(g, hn, BG_SRC, BG_DOWN, -7, 8);
+        bg_zero(g, hn);
+    }
     const int q = bg_node(g, fn_quarter, g->w[2], g->h[2], 3, 2);
     bg_input(g, q, hn, BG_DOWN, -1, 2);
+    bg_zero(g, q);
     if (q >= 0)
         g->node[q].k[1] = sat;
     int prev = q;
     for (int i = 0; i < P; i++) {
         const int kn = bg_node(g, fn_kawase, g->w[2], g->h[2], 3, 2);
         bg_input(g, kn, prev, BG_SAME, -i - 1, i + 1);
+        bg_zero(g, kn);
         if (kn < 0)
             return BLOOM_E_INTERNAL;
         bg_node_t *nd = &g->node[kn];
@@ -230,6 +391,7 @@ static bloom_status_t build(bloom_graph_t *g)
     }
     const int up = bg_node(g, fn_up, g->w[1], g->h[1], 3, 1);
     bg_input(g, up, prev, BG_UP, -1, 1);
+    bg_zero(g, up);
     const int o = bg_node(g, fn_out, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, up, BG_UP, -1, 1);

@@ -1,0 +1,79 @@
+/* AVX2 twins of the xna preset's kernels (bloom_preset_xna.h), compiled
+ * for AVX2 by a target pragma (the rest of the core stays baseline
+ * x86-64), picked when the engine's kernel set is AVX2 (g->kern.isa:
+ * bloom_cpu_avx2, not BLOOM_FLAG_NO_AVX2 or NO_SIMD). Same bits as
+ * xna_kawase_c and xna_screen_c (tests/test_simd_xna.c). */
+#include "bloom_preset_xna.h"
+
+#if BLOOM_USE_XNA && defined(BLOOM_SIMD_AVX2)
+#include <immintrin.h>
+
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+
+#define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
+#define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
+
+static inline __m256i box_rnd8(__m256i s)
+{
+    const __m256i odd = _mm256_and_si256(_mm256_srli_epi32(s, 4), _mm256_set1_epi32(1));
+    return _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(s, _mm256_set1_epi32(7)), odd), 4);
+}
+
+void xna_kawase_avx2(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
+{
+    const int cnt = 3 * w;
+    const uint32_t *r0 = r[0], *r1 = r[1], *r2 = r[2], *r3 = r[3];
+    int j = 0;
+    for (; j + 8 <= cnt; j += 8)
+        ST8(cs + j, _mm256_add_epi32(_mm256_add_epi32(LD8(r0 + j), LD8(r1 + j)),
+                                     _mm256_add_epi32(LD8(r2 + j), LD8(r3 + j))));
+    for (; j < cnt; j++)
+        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
+    int xa, xb;
+    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
+    if (rnd)
+        xna_round_edges(dst, w, xa, xb);
+    const int o1 = 3 * i + 3, o2 = 3 * i, end = 3 * xb;
+    for (j = 3 * xa; j + 8 <= end; j += 8) {
+        const __m256i s = _mm256_add_epi32(_mm256_add_epi32(LD8(cs + j - o1), LD8(cs + j - o2)),
+                                           _mm256_add_epi32(LD8(cs + j + o2), LD8(cs + j + o1)));
+        ST8(dst + j, rnd ? box_rnd8(s) : s);
+    }
+    for (; j < end; j++) {
+        const uint32_t s = cs[j - o1] + cs[j - o2] + cs[j + o2] + cs[j + o1];
+        dst[j] = rnd ? BLOOM_BOX_RND(s) : s;
+    }
+}
+
+void xna_screen_avx2(const uint32_t *s, uint32_t *x, int n)
+{
+    const __m256i one = _mm256_set1_epi32((int)BLOOM_LIN_ONE);
+    const __m256i c = _mm256_set1_epi64x((long long)((BLOOM_LIN_ONE >> 1) - 1u));
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const __m256i sv = LD8(s + j), b = _mm256_min_epu32(LD8(x + j), one);
+        const __m256i pe = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(sv, b), c), BLOOM_LIN_BITS);
+        const __m256i po = _mm256_srli_epi64(
+            _mm256_add_epi64(_mm256_mul_epu32(_mm256_srli_epi64(sv, 32), _mm256_srli_epi64(b, 32)), c),
+            BLOOM_LIN_BITS);
+        const __m256i p = _mm256_blend_epi32(pe, _mm256_slli_epi64(po, 32), 0xAA);
+        ST8(x + j, _mm256_sub_epi32(b, p));
+    }
+    if (j < n)
+        xna_screen_c(s + j, x + j, n - j);
+}
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+
+#else
+typedef int bloom_preset_xna_avx2_unused_t;
+#endif

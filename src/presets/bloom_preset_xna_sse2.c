@@ -1,0 +1,68 @@
+/* SSE2 twins of the xna preset's kernels (bloom_preset_xna.h): the Kawase
+ * sums with their rounding, and the screen combine as an addend. x86-64,
+ * where SSE2 is baseline. Same bits as xna_kawase_c and xna_screen_c
+ * (tests/test_simd_xna.c). Empty on other targets. */
+#include "bloom_preset_xna.h"
+
+#if BLOOM_USE_XNA && defined(BLOOM_SIMD_SSE2)
+#include <emmintrin.h>
+
+#define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
+#define ST4(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
+
+/* (s + 7 + ((s >> 4) & 1)) >> 4 in wrapping lanes (BLOOM_BOX_RND) */
+static inline __m128i box_rnd4(__m128i s)
+{
+    const __m128i odd = _mm_and_si128(_mm_srli_epi32(s, 4), _mm_set1_epi32(1));
+    return _mm_srli_epi32(_mm_add_epi32(_mm_add_epi32(s, _mm_set1_epi32(7)), odd), 4);
+}
+
+void xna_kawase_sse2(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
+{
+    const int cnt = 3 * w;
+    const uint32_t *r0 = r[0], *r1 = r[1], *r2 = r[2], *r3 = r[3];
+    int j = 0;
+    for (; j + 4 <= cnt; j += 4)
+        ST4(cs + j,
+            _mm_add_epi32(_mm_add_epi32(LD4(r0 + j), LD4(r1 + j)), _mm_add_epi32(LD4(r2 + j), LD4(r3 + j))));
+    for (; j < cnt; j++)
+        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
+    int xa, xb;
+    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
+    if (rnd)
+        xna_round_edges(dst, w, xa, xb);
+    const int o1 = 3 * i + 3, o2 = 3 * i, end = 3 * xb;
+    for (j = 3 * xa; j + 4 <= end; j += 4) {
+        const __m128i s = _mm_add_epi32(_mm_add_epi32(LD4(cs + j - o1), LD4(cs + j - o2)),
+                                        _mm_add_epi32(LD4(cs + j + o2), LD4(cs + j + o1)));
+        ST4(dst + j, rnd ? box_rnd4(s) : s);
+    }
+    for (; j < end; j++) {
+        const uint32_t s = cs[j - o1] + cs[j - o2] + cs[j + o2] + cs[j + o1];
+        dst[j] = rnd ? BLOOM_BOX_RND(s) : s;
+    }
+}
+
+void xna_screen_sse2(const uint32_t *s, uint32_t *x, int n)
+{
+    const __m128i sign = _mm_set1_epi32((int)0x80000000u), one = _mm_set1_epi32((int)BLOOM_LIN_ONE);
+    const __m128i c = _mm_set1_epi64x((long long)((BLOOM_LIN_ONE >> 1) - 1u));
+    const __m128i lo = _mm_set1_epi64x(0xFFFFFFFFll);
+    int j = 0;
+    for (; j + 4 <= n; j += 4) {
+        const __m128i v = LD4(x + j), sv = LD4(s + j);
+        const __m128i gt = _mm_cmpgt_epi32(_mm_xor_si128(v, sign), _mm_xor_si128(one, sign));
+        const __m128i b = _mm_or_si128(_mm_and_si128(gt, one), _mm_andnot_si128(gt, v)); /* min(v, ONE) */
+        const __m128i pe = _mm_srli_epi64(_mm_add_epi64(_mm_mul_epu32(sv, b), c), BLOOM_LIN_BITS);
+        const __m128i po = _mm_srli_epi64(
+            _mm_add_epi64(_mm_mul_epu32(_mm_srli_epi64(sv, 32), _mm_srli_epi64(b, 32)), c), BLOOM_LIN_BITS);
+        const __m128i p = _mm_or_si128(_mm_and_si128(pe, lo), _mm_slli_epi64(po, 32));
+        ST4(x + j, _mm_sub_epi32(b, p));
+    }
+    if (j < n)
+        xna_screen_c(s + j, x + j, n - j);
+}
+
+#else
+typedef int bloom_preset_xna_sse2_unused_t;
+#endif
