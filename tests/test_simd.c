@@ -403,6 +403,14 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         fprintf(stderr, "box_src_range: sw %d fmt %d %d..%d differs\n", sw, (int)fmts[fi], xa,
                                 xb);
                     }
+                    memset(a.p, 0, (size_t)dw * 12u); /* the twin's box from the source, same range */
+                    ks->box_src(sp, fmts[fi], lin, a.p, xa, xb, sw);
+                    if (memcmp(a.p + 3 * xa, c.p + 3 * xa, (size_t)(xb - xa) * 12u) != 0 ||
+                        !row_guard_ok(&a)) {
+                        bad++;
+                        fprintf(stderr, "box_src (%s): sw %d fmt %d %d..%d differs\n", ks->name, sw,
+                                (int)fmts[fi], xa, xb);
+                    }
                     const bool ra = ks->d1(sp, fmts[fi], lin, a.p, dw, sw, &kn, &dk);
                     const bool rc = kc->d1(sp, fmts[fi], lin, c.p, dw, sw, &kn, &dk);
                     cases++;
@@ -672,7 +680,7 @@ static void test_frames(void)
 static void test_set(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 {
     if (bloom_kernels_simd(ks))
-        printf("SIMD kernels: %s (box, tent, composite, d1, vtent, htent_eo, scale, eo) against C\n",
+        printf("SIMD kernels: %s (box, tent, composite, d1, box_src, vtent, htent_eo, scale, eo) against C\n",
                ks->name);
     else
         printf("no SIMD kernels on this target (or BLOOM_NO_SIMD): comparing C with C\n");

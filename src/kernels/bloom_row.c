@@ -522,7 +522,9 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->htent_eo = bloom_row_htent_eo_c;
     k->scale = bloom_row_scale_c;
     k->eo = bloom_encode_eo;
+    k->box_src = bloom_row_box_src_range_c;
 #else
+    k->box_src = NULL;
     k->d1 = NULL; /* compute_d1 calls the box and the knee itself */
     k->vtent = NULL;
     k->htent_eo = NULL;
@@ -554,6 +556,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
         k->vtent = bloom_row_vtent_avx2;
         k->htent_eo = bloom_row_htent_eo_avx2;
         k->eo = bloom_encode_eo_avx2;
+        k->box_src = bloom_row_box_src_avx2;
         k->name = "avx2";
         k->isa = BLOOM_ISA_AVX2;
     }

@@ -262,9 +262,9 @@ static inline __attribute__((always_inline)) void box_src8(const uint8_t *const 
 }
 
 /* The box for a run: the gathers for 8-bit sRGB RGB888 and XRGB8888, else
- * the C box. */
-static void box_src_run(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int xa,
-                        int xb, int sw)
+ * the C box (kern.box_src of the AVX2 set). */
+void bloom_row_box_src_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int xa,
+                            int xb, int sw)
 {
     if (BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888 && !linear)
         box_src8(s, dst, xa, xb, sw, false);
@@ -293,7 +293,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         if (bright18(s, (size_t)(2 * x - 1) * bpp, x8, c))
             continue; /* computed with its run */
         if (run < x) {
-            box_src_run(s, fmt, linear, dst, run, x, sw);
+            bloom_row_box_src_avx2(s, fmt, linear, dst, run, x, sw);
             any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
         }
         uint32_t *d = dst + (size_t)x * 3u;
@@ -303,7 +303,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         run = x + 8;
     }
     if (run < dw) {
-        box_src_run(s, fmt, linear, dst, run, dw, sw);
+        bloom_row_box_src_avx2(s, fmt, linear, dst, run, dw, sw);
         any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
     }
     return any;

@@ -116,7 +116,7 @@ static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t 
         while (x < w && bright(b, x, bpp))
             x++;
         if (x > xa) {
-            bloom_row_box_src_range_c(s, g->out.in_fmt, g->out.linear, d, xa, x, w0);
+            g->kern.box_src(s, g->out.in_fmt, g->out.linear, d, xa, x, w0); /* C or AVX2 */
             any |= threshold_row(d + 3 * xa, x - xa, g->knee.t);
         }
     }

@@ -54,7 +54,11 @@ static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
+#if BLOOM_SMALL
     bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
+#else
+    g->kern.box_src(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, 0, n->w, g->w[0]); /* C or AVX2 */
+#endif
     return true;
 }
 
