@@ -116,7 +116,9 @@ typedef struct {
     bloom_scale_fn scale;       /* NULL in BLOOM_SMALL builds */
     bloom_eo_fn eo;             /* bloom_encode_eo or its AVX2 twin; NULL if BLOOM_SMALL */
     bloom_box_src_fn box_src;   /* the box from the source for pixels xa .. xb-1 (no knee: the
-                                   presets' first stages); NULL if BLOOM_SMALL */
+                                   presets' first stages); C in every set today (an AVX2
+                                   one by table gathers took fewer instructions and more time:
+                                   sim/docs/profile.md); NULL if BLOOM_SMALL */
     const char *name;           /* "c", "sse2", "avx2", "neon" */
     bloom_isa_t isa;            /* the same as a value: presets pick their own twins by it */
 } bloom_kernels_t;
@@ -152,8 +154,6 @@ void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *ad
                          int n, int sw);
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
-void bloom_row_box_src_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int xa,
-                            int xb, int sw);
 void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
 #endif

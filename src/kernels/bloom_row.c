@@ -556,7 +556,6 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
         k->vtent = bloom_row_vtent_avx2;
         k->htent_eo = bloom_row_htent_eo_avx2;
         k->eo = bloom_encode_eo_avx2;
-        k->box_src = bloom_row_box_src_avx2;
         k->name = "avx2";
         k->isa = BLOOM_ISA_AVX2;
     }

@@ -196,84 +196,6 @@ static inline bool bright18(const uint8_t *const s[4], size_t off, bool x8, __m2
     return !_mm256_testz_si256(_mm256_subs_epu8(a, c), _mm256_set1_epi8(-1));
 }
 
-/* The box from 8-bit sRGB RGB888 or XRGB8888 source rows for destination
- * pixels xa .. xb-1, 8 at a time where no column clamps and the 64- or
- * 96-byte loads stay in the row: the 18 source pixels 2x-1 .. 2x+16 of
- * each of the 4 rows are decoded by table gathers (8 bytes per gather, X
- * bytes too) and summed down the rows into v (byte order: pixel, byte);
- * destination sample o = 3j + c (pixel x+j, channel c) is the sum over
- * k = 0..3 of v[bpp (2j + k) + byte of c], four gathers from v, rounded
- * half to even (BLOOM_BOX_RND). The sums are those of the C box (16
- * decoded samples, exact in 32 bits). The rest of the range goes to
- * bloom_row_box_src_range_c. */
-static inline __attribute__((always_inline)) void box_src8(const uint8_t *const s[4], uint32_t *dst, int xa,
-                                                           int xb, int sw, const bool x8)
-{
-    const bloom_format_t fmt = x8 ? BLOOM_FMT_XRGB8888 : BLOOM_FMT_RGB888;
-    const size_t bpp = x8 ? 4u : 3u, rd = x8 ? 96u : 64u, row = (size_t)sw * bpp;
-    int x = xa < 1 ? 1 : xa;
-    if (x > xa)
-        bloom_row_box_src_range_c(s, fmt, false, dst, xa, x, sw);
-    const int *const tab = (const int *)(const void *)bloom_srgb_dec8;
-    /* lane l of idx[m]: the v index of output o = 8m + l for k = 0:
-     * bpp 2 (o / 3) + the byte of channel o % 3 (R, G, B; XRGB8888 B, G, R) */
-    static const int32_t vi3[24] = {0,  1,  2,  6,  7,  8,  12, 13, 14, 18, 19, 20,
-                                    24, 25, 26, 30, 31, 32, 36, 37, 38, 42, 43, 44};
-    static const int32_t vi4[24] = {2,  1,  0,  10, 9,  8,  18, 17, 16, 26, 25, 24,
-                                    34, 33, 32, 42, 41, 40, 50, 49, 48, 58, 57, 56};
-    const int32_t *vi = x8 ? vi4 : vi3;
-    const __m256i idx[3] = {LD8(vi), LD8(vi + 8), LD8(vi + 16)}, step = _mm256_set1_epi32((int)bpp);
-    const __m256i seven = _mm256_set1_epi32(7), one = _mm256_set1_epi32(1);
-    enum { NG = 9 }; /* 8-byte groups: 9 for XRGB8888 (72 bytes), 7 for RGB888 (54 of 56) */
-    const int ng = x8 ? 9 : 7;
-    for (; x + 8 <= xb && 2 * x + 16 <= sw - 1 && (size_t)(2 * x - 1) * bpp + rd <= row; x += 8) {
-        const size_t off = (size_t)(2 * x - 1) * bpp;
-        int32_t v[8 * NG];
-        __m256i acc[NG];
-        for (int r = 0; r < 4; r++) {
-            const uint8_t *p = s[r] + off;
-            const __m256i l0 = LD8(p), l1 = LD8(p + 32), l2 = x8 ? LD8(p + 64) : l1;
-            const __m128i h[6] = {_mm256_castsi256_si128(l0), _mm256_extracti128_si256(l0, 1),
-                                  _mm256_castsi256_si128(l1), _mm256_extracti128_si256(l1, 1),
-                                  _mm256_castsi256_si128(l2), _mm256_extracti128_si256(l2, 1)};
-#pragma GCC unroll 9
-            for (int q = 0; q < ng; q++) {
-                const __m128i b8 = q & 1 ? _mm_srli_si128(h[q >> 1], 8) : h[q >> 1];
-                const __m256i dv = _mm256_i32gather_epi32(tab, _mm256_cvtepu8_epi32(b8), 4);
-                acc[q] = r ? _mm256_add_epi32(acc[q], dv) : dv;
-            }
-        }
-#pragma GCC unroll 9
-        for (int q = 0; q < ng; q++)
-            ST8(v + 8 * q, acc[q]);
-        uint32_t *d = dst + (size_t)x * 3u;
-        for (int m = 0; m < 3; m++) {
-            __m256i at = idx[m], sum = _mm256_i32gather_epi32(v, at, 4);
-            for (int k = 1; k < 4; k++) {
-                at = _mm256_add_epi32(at, step);
-                sum = _mm256_add_epi32(sum, _mm256_i32gather_epi32(v, at, 4));
-            }
-            /* (sum + 7 + ((sum >> 4) & 1)) >> 4: half to even */
-            const __m256i odd = _mm256_and_si256(_mm256_srli_epi32(sum, 4), one);
-            ST8(d + 8 * m, _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(sum, seven), odd), 4));
-        }
-    }
-    bloom_row_box_src_range_c(s, fmt, false, dst, x, xb, sw);
-}
-
-/* The box for a run: the gathers for 8-bit sRGB RGB888 and XRGB8888, else
- * the C box (kern.box_src of the AVX2 set). */
-void bloom_row_box_src_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int xa,
-                            int xb, int sw)
-{
-    if (BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888 && !linear)
-        box_src8(s, dst, xa, xb, sw, false);
-    else if (BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888 && !linear)
-        box_src8(s, dst, xa, xb, sw, true);
-    else
-        bloom_row_box_src_range_c(s, fmt, linear, dst, xa, xb, sw);
-}
-
 /* bloom_row_d1_sse2 in blocks of 8 level-1 pixels (RGB888 and XRGB8888;
  * the others go to the SSE2 twin): a block whose 4 x 18 source pixels have
  * no colour code above the dark code is written as zeros, the others run
@@ -293,7 +215,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         if (bright18(s, (size_t)(2 * x - 1) * bpp, x8, c))
             continue; /* computed with its run */
         if (run < x) {
-            bloom_row_box_src_avx2(s, fmt, linear, dst, run, x, sw);
+            bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);
             any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
         }
         uint32_t *d = dst + (size_t)x * 3u;
@@ -303,7 +225,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         run = x + 8;
     }
     if (run < dw) {
-        bloom_row_box_src_avx2(s, fmt, linear, dst, run, dw, sw);
+        bloom_row_box_src_range_c(s, fmt, linear, dst, run, dw, sw);
         any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
     }
     return any;

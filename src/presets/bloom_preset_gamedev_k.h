@@ -116,9 +116,6 @@ void gd_gauss_h_sse2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 void gd_bright_avx2(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 void gd_gauss_v_avx2(const uint32_t *const a[9], uint32_t *dst, int m);
 void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1);
-void gd_tone8_avx2(const uint32_t *bl, const uint32_t *sv, const uint8_t *sc, const uint32_t *dec,
-                   uint8_t *out, int n, uint32_t s, const uint32_t *t, const uint8_t *bk);
-void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
 #endif
 #endif
 #if defined(BLOOM_SIMD_NEON) && !BLOOM_SMALL

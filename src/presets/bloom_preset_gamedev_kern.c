@@ -91,7 +91,7 @@ static const gd_kern_t gd_kern_sse2 = {gd_bright_sse2, gd_gauss_v_sse2, gd_gauss
                                        gd_tone8_c,     gd_lut8_c,       "sse2"};
 #if defined(BLOOM_SIMD_AVX2)
 static const gd_kern_t gd_kern_avx2 = {gd_bright_avx2, gd_gauss_v_avx2, gd_gauss_h_avx2,
-                                       gd_tone8_avx2,  gd_lut8_avx2,    "avx2"};
+                                       gd_tone8_c,     gd_lut8_c,       "avx2"};
 #endif
 #endif
 #if defined(BLOOM_SIMD_NEON) && !BLOOM_SMALL
