@@ -24,31 +24,22 @@ static inline __m256i box_rnd8(__m256i s)
     return _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(s, _mm256_set1_epi32(7)), odd), 4);
 }
 
-void xna_kawase_avx2(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
-{
-    const int cnt = 3 * w;
-    const uint32_t *r0 = r[0], *r1 = r[1], *r2 = r[2], *r3 = r[3];
-    int j = 0;
-    for (; j + 8 <= cnt; j += 8)
-        ST8(cs + j, _mm256_add_epi32(_mm256_add_epi32(LD8(r0 + j), LD8(r1 + j)),
-                                     _mm256_add_epi32(LD8(r2 + j), LD8(r3 + j))));
-    for (; j < cnt; j++)
-        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
-    int xa, xb;
-    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
-    if (rnd)
-        xna_round_edges(dst, w, xa, xb);
-    const int o1 = 3 * i + 3, o2 = 3 * i, end = 3 * xb;
-    for (j = 3 * xa; j + 8 <= end; j += 8) {
-        const __m256i s = _mm256_add_epi32(_mm256_add_epi32(LD8(cs + j - o1), LD8(cs + j - o2)),
-                                           _mm256_add_epi32(LD8(cs + j + o2), LD8(cs + j + o1)));
-        ST8(dst + j, rnd ? box_rnd8(s) : s);
-    }
-    for (; j < end; j++) {
-        const uint32_t s = cs[j - o1] + cs[j - o2] + cs[j + o2] + cs[j + o1];
-        dst[j] = rnd ? BLOOM_BOX_RND(s) : s;
-    }
-}
+/* the Kawase sums: bloom_preset_xna_simd.h on 8 lanes */
+#define VT __m256i
+#define W 8
+#define LDV LD8
+#define STV ST8
+#define ADDV _mm256_add_epi32
+#define RNDV box_rnd8
+#define XNA_KAWASE xna_kawase_avx2
+#include "bloom_preset_xna_simd.h"
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef RNDV
+#undef XNA_KAWASE
 
 void xna_screen_avx2(const uint32_t *s, uint32_t *x, int n)
 {

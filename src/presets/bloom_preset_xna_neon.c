@@ -12,31 +12,22 @@ static inline uint32x4_t box_rnd4(uint32x4_t s)
     return vshrq_n_u32(vaddq_u32(vaddq_u32(s, vdupq_n_u32(7)), odd), 4);
 }
 
-void xna_kawase_neon(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
-{
-    const int cnt = 3 * w;
-    const uint32_t *r0 = r[0], *r1 = r[1], *r2 = r[2], *r3 = r[3];
-    int j = 0;
-    for (; j + 4 <= cnt; j += 4)
-        vst1q_u32(cs + j, vaddq_u32(vaddq_u32(vld1q_u32(r0 + j), vld1q_u32(r1 + j)),
-                                    vaddq_u32(vld1q_u32(r2 + j), vld1q_u32(r3 + j))));
-    for (; j < cnt; j++)
-        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
-    int xa, xb;
-    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
-    if (rnd)
-        xna_round_edges(dst, w, xa, xb);
-    const int o1 = 3 * i + 3, o2 = 3 * i, end = 3 * xb;
-    for (j = 3 * xa; j + 4 <= end; j += 4) {
-        const uint32x4_t s = vaddq_u32(vaddq_u32(vld1q_u32(cs + j - o1), vld1q_u32(cs + j - o2)),
-                                       vaddq_u32(vld1q_u32(cs + j + o2), vld1q_u32(cs + j + o1)));
-        vst1q_u32(dst + j, rnd ? box_rnd4(s) : s);
-    }
-    for (; j < end; j++) {
-        const uint32_t s = cs[j - o1] + cs[j - o2] + cs[j + o2] + cs[j + o1];
-        dst[j] = rnd ? BLOOM_BOX_RND(s) : s;
-    }
-}
+/* the Kawase sums: bloom_preset_xna_simd.h on 4 lanes */
+#define VT uint32x4_t
+#define W 4
+#define LDV vld1q_u32
+#define STV vst1q_u32
+#define ADDV vaddq_u32
+#define RNDV box_rnd4
+#define XNA_KAWASE xna_kawase_neon
+#include "bloom_preset_xna_simd.h"
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef RNDV
+#undef XNA_KAWASE
 
 void xna_screen_neon(const uint32_t *s, uint32_t *x, int n)
 {

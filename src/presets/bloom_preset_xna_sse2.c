@@ -17,31 +17,22 @@ static inline __m128i box_rnd4(__m128i s)
     return _mm_srli_epi32(_mm_add_epi32(_mm_add_epi32(s, _mm_set1_epi32(7)), odd), 4);
 }
 
-void xna_kawase_sse2(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w, int i, bool rnd)
-{
-    const int cnt = 3 * w;
-    const uint32_t *r0 = r[0], *r1 = r[1], *r2 = r[2], *r3 = r[3];
-    int j = 0;
-    for (; j + 4 <= cnt; j += 4)
-        ST4(cs + j,
-            _mm_add_epi32(_mm_add_epi32(LD4(r0 + j), LD4(r1 + j)), _mm_add_epi32(LD4(r2 + j), LD4(r3 + j))));
-    for (; j < cnt; j++)
-        cs[j] = r0[j] + r1[j] + r2[j] + r3[j];
-    int xa, xb;
-    xna_kawase_edges(cs, dst, w, i, &xa, &xb);
-    if (rnd)
-        xna_round_edges(dst, w, xa, xb);
-    const int o1 = 3 * i + 3, o2 = 3 * i, end = 3 * xb;
-    for (j = 3 * xa; j + 4 <= end; j += 4) {
-        const __m128i s = _mm_add_epi32(_mm_add_epi32(LD4(cs + j - o1), LD4(cs + j - o2)),
-                                        _mm_add_epi32(LD4(cs + j + o2), LD4(cs + j + o1)));
-        ST4(dst + j, rnd ? box_rnd4(s) : s);
-    }
-    for (; j < end; j++) {
-        const uint32_t s = cs[j - o1] + cs[j - o2] + cs[j + o2] + cs[j + o1];
-        dst[j] = rnd ? BLOOM_BOX_RND(s) : s;
-    }
-}
+/* the Kawase sums: bloom_preset_xna_simd.h on 4 lanes */
+#define VT __m128i
+#define W 4
+#define LDV LD4
+#define STV ST4
+#define ADDV _mm_add_epi32
+#define RNDV box_rnd4
+#define XNA_KAWASE xna_kawase_sse2
+#include "bloom_preset_xna_simd.h"
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef RNDV
+#undef XNA_KAWASE
 
 void xna_screen_sse2(const uint32_t *s, uint32_t *x, int n)
 {
