@@ -36,15 +36,7 @@ bool bloom_cpu_avx2(void)
     return (b & (1u << 5)) != 0;
 }
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-
-#define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
-#define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
+#include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
 static inline uint32_t or_lanes8(__m256i v)
 {
@@ -314,11 +306,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
         bloom_encode_eo(in_fmt, out_fmt, false, src, e, o, dst, n - 8 * g);
 }
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "bloom_avx2_end.h"
 
 #else
 typedef int bloom_row_avx2_empty; /* ISO C wants a declaration in every file */

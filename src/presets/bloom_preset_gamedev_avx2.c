@@ -18,17 +18,8 @@
 #include "bloom_preset_gamedev_k.h"
 
 #if BLOOM_USE_GAMEDEV && defined(BLOOM_SIMD_AVX2) && !BLOOM_SMALL
-#include <immintrin.h>
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-
-#define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
-#define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
+#include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
 /* (W0 c + W1 p1 + W2 p2 + W3 p3 + W4 p4 + 2^23) >> 24 in eight 32-bit lanes
  * (the SSE2 twin's gauss4 on 8 lanes). */
@@ -97,11 +88,7 @@ void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1)
         gd_gauss_h_c(v, dst, i, i1);
 }
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "bloom_avx2_end.h"
 
 #else
 typedef int bloom_preset_gamedev_avx2_empty; /* ISO C wants a declaration in every file */

@@ -5,12 +5,10 @@
  * (sum + 2^23) >> 24 < 2^28 put back in its 32-bit lane. Empty on other
  * targets. */
 #include "bloom_preset_gamedev_k.h"
+#include "bloom_simd4.h"
 
 #if BLOOM_USE_GAMEDEV && defined(BLOOM_SIMD_SSE2) && !BLOOM_SMALL
 #include <emmintrin.h>
-
-#define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
-#define ST4(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
 
 /* (W0 c + W1 p1 + W2 p2 + W3 p3 + W4 p4 + 2^23) >> 24 in four 32-bit lanes. */
 static inline __m128i gauss4(__m128i c, __m128i p1, __m128i p2, __m128i p3, __m128i p4)

@@ -6,23 +6,8 @@
 #include "bloom_preset_xna.h"
 
 #if BLOOM_USE_XNA && defined(BLOOM_SIMD_AVX2)
-#include <immintrin.h>
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-
-#define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
-#define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
-
-static inline __m256i box_rnd8(__m256i s)
-{
-    const __m256i odd = _mm256_and_si256(_mm256_srli_epi32(s, 4), _mm256_set1_epi32(1));
-    return _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(s, _mm256_set1_epi32(7)), odd), 4);
-}
+#include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
 /* the Kawase sums: bloom_preset_xna_simd.h on 8 lanes */
 #define VT __m256i
@@ -30,7 +15,7 @@ static inline __m256i box_rnd8(__m256i s)
 #define LDV LD8
 #define STV ST8
 #define ADDV _mm256_add_epi32
-#define RNDV box_rnd8
+#define RNDV bloom_box_rnd8
 #define XNA_KAWASE xna_kawase_avx2
 #include "bloom_preset_xna_simd.h"
 #undef VT
@@ -59,11 +44,7 @@ void xna_screen_avx2(const uint32_t *s, uint32_t *x, int n)
         xna_screen_c(s + j, x + j, n - j);
 }
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "bloom_avx2_end.h"
 
 #else
 typedef int bloom_preset_xna_avx2_unused_t;

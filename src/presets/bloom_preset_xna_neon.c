@@ -2,15 +2,9 @@
  * only. Same bits as xna_kawase_c and xna_screen_c (tests/test_simd_xna.c
  * under aarch64 emulation). Empty on other targets. */
 #include "bloom_preset_xna.h"
+#include "bloom_simd4.h"
 
 #if BLOOM_USE_XNA && defined(BLOOM_SIMD_NEON)
-#include <arm_neon.h>
-
-static inline uint32x4_t box_rnd4(uint32x4_t s)
-{
-    const uint32x4_t odd = vandq_u32(vshrq_n_u32(s, 4), vdupq_n_u32(1));
-    return vshrq_n_u32(vaddq_u32(vaddq_u32(s, vdupq_n_u32(7)), odd), 4);
-}
 
 /* the Kawase sums: bloom_preset_xna_simd.h on 4 lanes */
 #define VT uint32x4_t
@@ -18,7 +12,7 @@ static inline uint32x4_t box_rnd4(uint32x4_t s)
 #define LDV vld1q_u32
 #define STV vst1q_u32
 #define ADDV vaddq_u32
-#define RNDV box_rnd4
+#define RNDV bloom_box_rnd4
 #define XNA_KAWASE xna_kawase_neon
 #include "bloom_preset_xna_simd.h"
 #undef VT

@@ -3,19 +3,9 @@
  * where SSE2 is baseline. Same bits as xna_kawase_c and xna_screen_c
  * (tests/test_simd_xna.c). Empty on other targets. */
 #include "bloom_preset_xna.h"
+#include "bloom_simd4.h"
 
 #if BLOOM_USE_XNA && defined(BLOOM_SIMD_SSE2)
-#include <emmintrin.h>
-
-#define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
-#define ST4(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
-
-/* (s + 7 + ((s >> 4) & 1)) >> 4 in wrapping lanes (BLOOM_BOX_RND) */
-static inline __m128i box_rnd4(__m128i s)
-{
-    const __m128i odd = _mm_and_si128(_mm_srli_epi32(s, 4), _mm_set1_epi32(1));
-    return _mm_srli_epi32(_mm_add_epi32(_mm_add_epi32(s, _mm_set1_epi32(7)), odd), 4);
-}
 
 /* the Kawase sums: bloom_preset_xna_simd.h on 4 lanes */
 #define VT __m128i
@@ -23,7 +13,7 @@ static inline __m128i box_rnd4(__m128i s)
 #define LDV LD4
 #define STV ST4
 #define ADDV _mm_add_epi32
-#define RNDV box_rnd4
+#define RNDV bloom_box_rnd4
 #define XNA_KAWASE xna_kawase_sse2
 #include "bloom_preset_xna_simd.h"
 #undef VT
