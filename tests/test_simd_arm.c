@@ -100,6 +100,85 @@ static int check_set(const bloom_arm_kern_t *k, bufs_t *b)
     return bad;
 }
 
+/* max3, lum8, dark and out8 (8-bit sRGB RGB888 and XRGB8888 rows) over
+ * widths 1 .. 1921, unaligned: random codes, all 255, codes near the dark
+ * code; blooms random <= M, M itself, and the edges of the keep bound;
+ * factors 0, random, the largest (intensity 10, white tint) and 2^32 - 1;
+ * out8 also in place. */
+typedef struct {
+    uint8_t src[4 * NMAX + 64], o1[4 * NMAX + 64], o2[4 * NMAX + 64];
+    uint32_t c4[2][NMAX + PAD], c2[2][NMAX + PAD];
+} bytes_t;
+
+static int check_px(const bloom_arm_kern_t *k, bufs_t *b, bytes_t *t)
+{
+    const bloom_arm_kern_t *c = &bloom_arm_kern_c;
+    int bad = 0;
+    for (int n = 1; n <= NMAX; n++)
+        for (int mode = 0; mode < 4; mode++) {
+            if (n > 80 && mode != 0 && n % 7 != 0)
+                continue;
+            const int off = (n + mode) % 4;
+            uint32_t *u[3] = {b->in[0] + off, b->in[1] + off + 1, b->in[2] + off + 2};
+            for (int i = 0; i < 3; i++)
+                fill(u[i], n, M, mode);
+            bad += c->max3(u[0], u[1], u[2], n) != k->max3(u[0], u[1], u[2], n);
+            for (int x4 = 0; x4 < 2; x4++) {
+                const int bpp = x4 ? 4 : 3;
+                const size_t nb = (size_t)n * (size_t)bpp;
+                uint8_t *s = t->src + off;
+                const uint32_t r0 = next();
+                for (size_t i = 0; i < nb; i++) {
+                    const uint32_t r = next() >> 8;
+                    s[i] = (uint8_t)(mode == 1 ? 255u : mode == 2 ? (r0 & 63u) + r % 3u : r);
+                }
+                /* lum8: rows 0 .. 3 summed */
+                uint32_t *a4 = t->c4[0] + off, *a2 = t->c2[0] + off, *b4 = t->c4[1] + off,
+                         *b2 = t->c2[1] + off;
+                for (int i = 0; i < 4; i++) {
+                    c->lum8(s, a4, a2, n, x4, i);
+                    k->lum8(s, b4, b2, n, x4, i);
+                }
+                bad += memcmp(a4, b4, (size_t)n * 4u) != 0 || memcmp(a2, b2, (size_t)n * 4u) != 0;
+                /* dark, at the byte of the codes, one above and one below */
+                const bloom_format_t fmt = x4 ? BLOOM_FMT_XRGB8888 : BLOOM_FMT_RGB888;
+                for (int dc = -1; dc <= 1; dc++) {
+                    bloom_dark_t d = {(uint32_t)((r0 & 63u) + 1 + dc) % 256u, 0, 0, 0};
+                    if (mode == 0)
+                        d.c8 = next() % 256u;
+                    bad += bloom_row_dark(fmt, s, n, &d) != k->dark(fmt, s, n, &d);
+                }
+#if !BLOOM_SMALL
+                /* out8 */
+                uint32_t *bl = b->in[3] + off;
+                fill(bl, n, M, mode == 3 ? 0 : mode);
+                if (mode == 3)
+                    for (int i = 0; i < n; i++) /* P at the keep bound: B near 158, 12 c */
+                        bl[i] = (next() % 2 ? 158u : 12u * (next() % 256u)) + next() % 3u - 1u + 1u;
+                uint32_t f[3];
+                for (int ch = 0; ch < 3; ch++) {
+                    const uint32_t r = next() % 8u;
+                    f[ch] = r == 0   ? 0u
+                            : r == 1 ? 655360u
+                            : r == 2 ? 0xFFFFFFFFu
+                            : r == 3 ? 65536u
+                                     : next() % 700000u;
+                }
+                uint8_t *o1 = t->o1 + off + 1, *o2 = t->o2 + off + 2;
+                memset(o1, 0x33, nb + 8);
+                memset(o2, 0x33, nb + 8);
+                c->out8(s, bl, f, o1, n, x4);
+                k->out8(s, bl, f, o2, n, x4);
+                bad += memcmp(o1, o2, nb + 8) != 0;
+                memcpy(o2, s, nb); /* in place */
+                k->out8(o2, bl, f, o2, n, x4);
+                bad += memcmp(o1, o2, nb) != 0;
+#endif
+            }
+        }
+    return bad;
+}
+
 static void run(const bloom_arm_kern_t *k, bloom_isa_t isa)
 {
     static bufs_t b;
@@ -108,12 +187,21 @@ static void run(const bloom_arm_kern_t *k, bloom_isa_t isa)
     CHECKF(bad == 0, "arm %s twins = C kernels over widths 1 .. %d, unaligned (%d cases differ)", k->name,
            NMAX, bad);
     printf("arm %s: down_v, down_h, up_v, up_h bit-identical to C, widths 1 .. %d\n", k->name, NMAX);
+    static bytes_t t;
+    const int badp = check_px(k, &b, &t);
+    CHECKF(badp == 0, "arm %s max3, lum8, dark, out8 = C over widths 1 .. %d, unaligned (%d cases differ)",
+           k->name, NMAX, badp);
+    printf("arm %s: max3, lum8, dark, out8 bit-identical to C, widths 1 .. %d\n", k->name, NMAX);
 }
 #endif
 
 int main(void)
 {
 #if BLOOM_USE_ARM
+    /* the AVX2 encoder reads the bucket table as words at v >> 8, v <= t[255] */
+    CHECKF((bloom_srgb_enc8[255] >> (BLOOM_LIN_BITS - 12)) + 4u <= sizeof bloom_srgb_bkt8,
+           "arm out8: a word read of the bucket table at t[255] >> %d stays in its %zu bytes",
+           BLOOM_LIN_BITS - 12, sizeof bloom_srgb_bkt8);
     run(&bloom_arm_kern_c, BLOOM_ISA_C);
 #if defined(BLOOM_SIMD_SSE2)
     run(&bloom_arm_kern_sse2, BLOOM_ISA_SSE2);

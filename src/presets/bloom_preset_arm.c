@@ -25,13 +25,9 @@
 
 #if BLOOM_USE_ARM
 
-/* Rec.709 luminance weights, Q24: each the nearest integer to 2^24 times
- * the real weight (3566836.1, 11999064.9, 1211315.0), and they sum to 2^24
- * (grey stays grey). Q16 weights were off by up to 5.3e-6 of a sample,
- * which an intensity of 224 made tens of RGBQ16 LSB, one-sided. */
-#define ARM_WR 3566836u
-#define ARM_WG 11999065u
-#define ARM_WB 1211315u
+#define ARM_WR BLOOM_ARM_WR /* Rec.709, Q24 (bloom_preset_arm.h) */
+#define ARM_WG BLOOM_ARM_WG
+#define ARM_WB BLOOM_ARM_WB
 
 /* A mask or map code as Q24 (0 .. 2^24), = bg_aux_q24: U8 c*2^24/255
  * rounded = 65793c + (c >= 128); U16 c*2^24/65535 rounded. */
@@ -146,33 +142,41 @@ static uint32_t d1_range(const bloom_graph_t *g, const void *const *const in[BG_
     uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *y = bg_scratch(g, 2);
     const bool u16 = g->aux_bpp == 2;
     const size_t bpp = (size_t)g->src_bpp;
-    for (int i = 0; i < 4; i++) {
-        lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i] + (size_t)ca * bpp, y + ca, nc);
-        if (g->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
-            const uint8_t *m = (const uint8_t *)in[1][i];
-            for (int x = ca; x <= cb; x++) {
-                const uint32_t q = aux_q24(m, x, u16);
-                if (q != 1u << 24)
-                    y[x] = (uint32_t)(((uint64_t)y[x] * q + (1u << 23)) >> 24);
+    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
+    const bloom_format_t fmt = g->out.in_fmt;
+    if (!g->aux_bpp && !g->out.linear && (fmt == BLOOM_FMT_RGB888 || fmt == BLOOM_FMT_XRGB8888)) {
+        for (int i = 0; i < 4; i++) /* 8-bit sRGB, no mask: Y summed into the column sums */
+            K->lum8((const uint8_t *)in[0][i] + (size_t)ca * bpp, c4 + 1 + ca, c2 + 1 + ca, nc,
+                    fmt == BLOOM_FMT_XRGB8888, i);
+    } else {
+        for (int i = 0; i < 4; i++) {
+            lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i] + (size_t)ca * bpp, y + ca, nc);
+            if (g->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
+                const uint8_t *m = (const uint8_t *)in[1][i];
+                for (int x = ca; x <= cb; x++) {
+                    const uint32_t q = aux_q24(m, x, u16);
+                    if (q != 1u << 24)
+                        y[x] = (uint32_t)(((uint64_t)y[x] * q + (1u << 23)) >> 24);
+                }
             }
+            uint32_t *c = c4 + 1, *h = c2 + 1;
+            if (i == 0)
+                memcpy(c + ca, y + ca, (size_t)nc * sizeof *y);
+            else
+                for (int x = ca; x <= cb; x++)
+                    c[x] += y[x];
+            if (i == 1)
+                memcpy(h + ca, y + ca, (size_t)nc * sizeof *y);
+            else if (i == 2)
+                for (int x = ca; x <= cb; x++)
+                    h[x] += y[x];
         }
-        uint32_t *c = c4 + 1, *h = c2 + 1;
-        if (i == 0)
-            memcpy(c + ca, y + ca, (size_t)nc * sizeof *y);
-        else
-            for (int x = ca; x <= cb; x++)
-                c[x] += y[x];
-        if (i == 1)
-            memcpy(h + ca, y + ca, (size_t)nc * sizeof *y);
-        else if (i == 2)
-            for (int x = ca; x <= cb; x++)
-                h[x] += y[x];
     }
     if (ca == 0)
         c4[0] = c4[1], c2[0] = c2[1];
     if (cb == w0 - 1)
         pad(c4, w0), pad(c2, w0);
-    bloom_arm_kern(g->kern.isa)->down_h(c4 + 2 * xa, c2 + 2 * xa, dst + xa, xb - xa);
+    K->down_h(c4 + 2 * xa, c2 + 2 * xa, dst + xa, xb - xa);
     return knee1(dst + xa, xb - xa, &g->knee);
 }
 
@@ -193,15 +197,16 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     if (!g->dark_src)
         return d1_range(g, in, d, 0, dw) != 0;
     const size_t bpp = (size_t)g->src_bpp;
+    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
     uint32_t any = 0;
     int run = 0; /* first pixel not written yet */
     for (int x = 0; x < dw; x += ARM_DB) {
         const int xe = imin(x + ARM_DB, dw), ca = imax(2 * x - 1, 0), cb = imin(2 * xe, w0 - 1);
         bool dark = true;
         for (int i = 0; i < 4 && dark; i++) /* a row tagged dark needs no test */
-            dark = bg_in_zero(g, 0, i, i) ||
-                   bloom_row_dark(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1,
-                                  &g->dark);
+            dark =
+                bg_in_zero(g, 0, i, i) ||
+                K->dark(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1, &g->dark);
         if (!dark)
             continue; /* computed with its run */
         if (run < x)
@@ -290,43 +295,6 @@ static inline uint32_t sat32(uint64_t v)
     return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
 }
 
-/* The largest of rows u[0..2], columns c0 .. c1. */
-static uint32_t umax3(const uint32_t *const u[3], int c0, int c1)
-{
-    uint32_t m = 0;
-    for (int i = 0; i < 3; i++)
-        for (int x = c0; x <= c1; x++)
-            m = u[i][x] > m ? u[i][x] : m;
-    return m;
-}
-
-/* 8-bit sRGB in and out of one format (RGB888, or XRGB8888 with x4):
- * per sample P = (g_c B + 32768) >> 16 and the code enc(dec(c) + P),
- * which is c itself when P <= max(A c, H0) (BLOOM_KEEP8, bloom_kernels.h)
- * and otherwise the table encoder of the fast output path (the same codes
- * as bloom_encode_row; P is clamped to 2^24, above which both give 255). */
-#if !BLOOM_SMALL /* (the table encoder of the fast output path: bloom_pixel.h) */
-static void out_keep8(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
-                      bool x4)
-{
-    const int step = x4 ? 4 : 3, ch[3] = {x4 ? 2 : 0, 1, x4 ? 0 : 2}; /* byte q holds channel ch[q] */
-    for (int x = 0; x < n; x++, src += step, dst += step) {
-        const uint64_t bx = b[x];
-        for (int q = 0; q < 3; q++) {
-            const uint64_t p = (f[ch[q]] * bx + 32768u) >> 16;
-            const uint32_t c = src[q],
-                           lb = BLOOM_KEEP8_A * c > BLOOM_KEEP8_H0 ? BLOOM_KEEP8_A * c : BLOOM_KEEP8_H0;
-            dst[q] =
-                p <= lb
-                    ? (uint8_t)c
-                    : (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[c] + (p < (1u << 24) ? (uint32_t)p : 1u << 24));
-        }
-        if (x4)
-            dst[3] = 0xFF;
-    }
-}
-#endif
-
 /* Output. Input 0: the source row; input 1: U_1 rows m-1 .. m+1 (BG_UP).
  * v_c = S_c + ((g_c * B + 32768) >> 16), encoded, in chunks of 64 pixels.
  * Unless BLOOM_FLAG_NO_SKIP (same bits either way), a chunk is the source
@@ -362,7 +330,7 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         const int cn = imin(ARM_CHUNK, w - x0), n0 = x0 >> 1, n1 = ((x0 + cn - 1) >> 1) + 1;
         const int c0 = imax(n0 - 1, 0), c1 = imin(n1, sw - 1);
         if (skip) {
-            const uint64_t um = umax3(u, c0, c1);
+            const uint64_t um = K->max3(u[0] + c0, u[1] + c0, u[2] + c0, c1 - c0 + 1);
             if (um == 0 || (keep8 && ((fmax * um + 32768u) >> 16) <= BLOOM_KEEP8_H0)) {
                 bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
                 continue;
@@ -375,7 +343,7 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         }
 #if !BLOOM_SMALL
         if (keep8) {
-            out_keep8(src + (size_t)x0 * ibpp, b, f, out + (size_t)x0 * obpp, cn, ibpp == 4);
+            K->out8(src + (size_t)x0 * ibpp, b, f, out + (size_t)x0 * obpp, cn, ibpp == 4);
             continue;
         }
 #endif

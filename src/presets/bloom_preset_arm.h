@@ -8,6 +8,8 @@
 
 #include "bloom_kernels.h"
 
+#include <stddef.h>
+
 typedef struct {
     /* Vertical half of the down filter: c2[i] = s1[i] + s2[i],
      * c4[i] = c2[i] + s0[i] + s3[i], i < n. */
@@ -25,8 +27,39 @@ typedef struct {
      * S_e = 11 a[i] + 28 a[i+1] + a[i+2] + v[i] + 3 v[i+1], and dst[2i+1]
      * the mirror (reads a, v [0 .. np+1]). Returns the OR of dst[0 .. 2np-1]. */
     uint32_t (*up_h)(const uint32_t *a, const uint32_t *v, uint32_t *dst, int np);
+    /* The largest of u0[i], u1[i], u2[i], i < n (0 when n < 1). */
+    uint32_t (*max3)(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int n);
+    /* Luminance of n 8-bit sRGB pixels at p (RGB888, or XRGB8888 B G R X
+     * with x4): Y = (WR R + WG G + WB B + 2^23) >> 24 of the decoded
+     * samples (BLOOM_ARM_W*), summed into the column sums as source row i
+     * of 4: i = 0: c4 = Y; 1: c4 += Y, c2 = Y; 2: c4 += Y, c2 += Y;
+     * 3: c4 += Y (index x of p is index x of c4, c2). */
+    void (*lum8)(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i);
+    /* bloom_row_dark (the C set's is that one; the twins take RGB888 and
+     * XRGB8888 rows of at least 32 bytes, and pass the others on). */
+    bool (*dark)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+    /* 8-bit sRGB in and out of one format (RGB888, or XRGB8888 with x4, X
+     * written 0xFF), n pixels: per sample of code c, P = min((f_c B + 2^15)
+     * >> 16, 2^24) (f_c < 2^32: channels R, G, B; B = b[x]) and the code
+     * enc(dec(c) + P) of the fast output path (BLOOM_FENC8: the codes of
+     * bloom_encode_row). src may be dst. NULL in BLOOM_SMALL builds. */
+    void (*out8)(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n, bool x4);
     const char *name;
 } bloom_arm_kern_t;
+
+#if BLOOM_SMALL
+#define BLOOM_ARM_OUT8(f) NULL
+#else
+#define BLOOM_ARM_OUT8(f) f
+#endif
+
+/* Rec.709 luminance weights, Q24: each the nearest integer to 2^24 times
+ * the real weight (3566836.1, 11999064.9, 1211315.0), and they sum to 2^24
+ * (grey stays grey). Q16 weights were off by up to 5.3e-6 of a sample,
+ * which an intensity of 224 made tens of RGBQ16 LSB, one-sided. */
+#define BLOOM_ARM_WR 3566836u
+#define BLOOM_ARM_WG 11999065u
+#define BLOOM_ARM_WB 1211315u
 
 extern const bloom_arm_kern_t bloom_arm_kern_c;
 #if defined(BLOOM_SIMD_SSE2)

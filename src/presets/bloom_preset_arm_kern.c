@@ -2,6 +2,7 @@
  * its SIMD twins are held to, and the choice of a kernel set by the
  * engine's instruction set. */
 #include "bloom_preset_arm.h"
+#include "bloom_pixel.h"
 
 #if BLOOM_USE_ARM
 
@@ -53,7 +54,72 @@ static uint32_t up_h_c(const uint32_t *a, const uint32_t *v, uint32_t *dst, int 
     return any;
 }
 
-const bloom_arm_kern_t bloom_arm_kern_c = {down_v_c, down_h_c, up_v_c, up_h_c, "c"};
+static uint32_t max3_c(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int n)
+{
+    uint32_t m = 0;
+    for (int x = 0; x < n; x++) {
+        const uint32_t a = u0[x] > u1[x] ? u0[x] : u1[x];
+        m = a > m ? a : m;
+        m = u2[x] > m ? u2[x] : m;
+    }
+    return m;
+}
+
+/* Y <= M: 64-bit products (Q24 weights x 2^28, their sum < 2^53). */
+#define ARM_LUM8_LOOP(OP)                                                                                    \
+    for (int x = 0; x < n; x++, p += step) {                                                                 \
+        const uint32_t y = (uint32_t)((BLOOM_ARM_WR * (uint64_t)bloom_srgb_dec8[p[r]] +                      \
+                                       BLOOM_ARM_WG * (uint64_t)bloom_srgb_dec8[p[1]] +                      \
+                                       BLOOM_ARM_WB * (uint64_t)bloom_srgb_dec8[p[b]] + (1u << 23)) >>       \
+                                      24);                                                                   \
+        OP;                                                                                                  \
+    }
+static void lum8_c(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i)
+{
+    const int step = x4 ? 4 : 3, r = x4 ? 2 : 0, b = x4 ? 0 : 2;
+    switch (i) {
+    case 0:
+        ARM_LUM8_LOOP(c4[x] = y)
+        break;
+    case 1:
+        ARM_LUM8_LOOP((c4[x] += y, c2[x] = y))
+        break;
+    case 2:
+        ARM_LUM8_LOOP((c4[x] += y, c2[x] += y))
+        break;
+    default:
+        ARM_LUM8_LOOP(c4[x] += y)
+        break;
+    }
+}
+#undef ARM_LUM8_LOOP
+
+/* The code c itself where P <= max(A c, H0) (BLOOM_KEEP8, bloom_kernels.h:
+ * the encoder gives c back), the table encoder (P clamped to 2^24, above
+ * which both encoders give 255) otherwise. */
+#if !BLOOM_SMALL /* (the table encoder of the fast output path: bloom_pixel.h) */
+static void out8_c(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n, bool x4)
+{
+    const int step = x4 ? 4 : 3, ch[3] = {x4 ? 2 : 0, 1, x4 ? 0 : 2}; /* byte q holds channel ch[q] */
+    for (int x = 0; x < n; x++, src += step, dst += step) {
+        const uint64_t bx = b[x];
+        for (int q = 0; q < 3; q++) {
+            const uint64_t p = (f[ch[q]] * bx + 32768u) >> 16;
+            const uint32_t c = src[q],
+                           lb = BLOOM_KEEP8_A * c > BLOOM_KEEP8_H0 ? BLOOM_KEEP8_A * c : BLOOM_KEEP8_H0;
+            dst[q] =
+                p <= lb
+                    ? (uint8_t)c
+                    : (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[c] + (p < (1u << 24) ? (uint32_t)p : 1u << 24));
+        }
+        if (x4)
+            dst[3] = 0xFF;
+    }
+}
+#endif
+
+const bloom_arm_kern_t bloom_arm_kern_c = {
+    down_v_c, down_h_c, up_v_c, up_h_c, max3_c, lum8_c, bloom_row_dark, BLOOM_ARM_OUT8(out8_c), "c"};
 
 const bloom_arm_kern_t *bloom_arm_kern(bloom_isa_t isa)
 {

@@ -11,10 +11,10 @@
 #include "bloom_preset_arm.h"
 
 #if BLOOM_USE_ARM && defined(BLOOM_SIMD_SSE2)
-#include <emmintrin.h>
+#include "bloom_simd4.h"
 
-#define LD(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
-#define ST(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
+#define LD(p) LD4(p)
+#define ST(p, v) ST4(p, v)
 #define EVENS(p, q)                                                                                          \
     _mm_castps_si128(_mm_shuffle_ps(_mm_castsi128_ps(p), _mm_castsi128_ps(q), _MM_SHUFFLE(2, 0, 2, 0)))
 #define ODDS(p, q)                                                                                           \
@@ -125,7 +125,63 @@ static uint32_t up_h_sse2(const uint32_t *a, const uint32_t *v, uint32_t *dst, i
     return r;
 }
 
-const bloom_arm_kern_t bloom_arm_kern_sse2 = {down_v_sse2, down_h_sse2, up_v_sse2, up_h_sse2, "sse2"};
+/* The samples are <= M < 2^31: the signed compare orders them. */
+static inline __m128i max_s(__m128i a, __m128i b)
+{
+    const __m128i gt = _mm_cmpgt_epi32(a, b);
+    return _mm_or_si128(_mm_and_si128(gt, a), _mm_andnot_si128(gt, b));
+}
+
+static uint32_t max3_sse2(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int n)
+{
+    if (n < 4)
+        return bloom_arm_kern_c.max3(u0, u1, u2, n);
+    __m128i m = _mm_setzero_si128();
+    for (int i = 0;; i += 4) {
+        if (i + 4 > n) /* the last 4 again */
+            i = n - 4;
+        m = max_s(m, max_s(LD(u0 + i), max_s(LD(u1 + i), LD(u2 + i))));
+        if (i + 4 >= n)
+            break;
+    }
+    m = max_s(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = max_s(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(2, 3, 0, 1)));
+    return (uint32_t)_mm_cvtsi128_si32(m);
+}
+
+static void lum8_sse2(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i)
+{
+    bloom_arm_kern_c.lum8(p, c4, c2, n, x4, i); /* the decode is table reads */
+}
+
+/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
+ * least 16 bytes, by 16-byte loads, the last ending at the row's end. */
+static bool dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
+        return bloom_row_dark(fmt, p, n, d);
+    __m128i m = LD(p + nb - 16);
+    for (int i = 0; i + 16 < nb; i += 16)
+        m = _mm_max_epu8(m, LD(p + i));
+    if (x4)
+        m = _mm_and_si128(m, _mm_set1_epi32(0x00FFFFFF));
+    const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
+    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) == 0xFFFF;
+}
+
+#if !BLOOM_SMALL
+static void out8_sse2(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
+                      bool x4)
+{
+    bloom_arm_kern_c.out8(src, b, f, dst, n, x4); /* the encode is table reads */
+}
+#endif
+
+const bloom_arm_kern_t bloom_arm_kern_sse2 = {down_v_sse2, down_h_sse2, up_v_sse2, up_h_sse2,
+                                              max3_sse2,   lum8_sse2,   dark_sse2, BLOOM_ARM_OUT8(out8_sse2),
+                                              "sse2"};
 
 #else
 typedef int bloom_preset_arm_sse2_unused_t;
