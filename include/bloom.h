@@ -96,9 +96,10 @@ typedef enum {
     BLOOM_E_ATTENUATION = -18,
     BLOOM_E_WEIGHT = -19,
     BLOOM_E_TINT = -20,
-    BLOOM_E_AUX = -21,  /* aux plane missing, unexpected or of an unknown format */
-    BLOOM_E_ALIAS = -22 /* destination overlaps source rows still needed: in place
+    BLOOM_E_AUX = -21,   /* aux plane missing, unexpected or of an unknown format */
+    BLOOM_E_ALIAS = -22, /* destination overlaps source rows still needed: in place
                                 needs the same format and stride */
+    BLOOM_E_TILE = -23   /* the output rectangle is not inside the frame */
 } bloom_status_t;
 
 /* Parameters of the presets other than the default; a preset ignores the
@@ -125,6 +126,11 @@ typedef struct {
     bloom_preset_t preset;      /* BLOOM_PRESET_UNITY (0) unless set */
     bloom_aux_format_t aux_fmt; /* BLOOM_AUX_NONE unless the preset reads a plane */
     bloom_preset_params_t p;    /* the preset's own parameters */
+    /* The output rectangle (a tile): the engine writes exactly these pixels
+     * of the frame, bit for bit what the whole frame would have there, and
+     * reads the source rectangle bloom_query reports (the tile and its
+     * halo). tile_w == 0 (bloom_config_default) is the whole frame. */
+    int tile_x, tile_y, tile_w, tile_h;
 } bloom_config_t;
 
 typedef struct {
@@ -139,6 +145,9 @@ typedef struct {
     size_t ring_bytes[BLOOM_MAX_LEVELS + 1]; /* row memory per level; [0] = source copy */
     uint32_t threshold_q, knee_q;            /* quantized threshold and knee, Q12.20 */
     uint32_t intensity_q;                    /* linear intensity I_q, Q16.16 */
+    /* The source rectangle the engine reads for its output rectangle (the
+     * whole frame without a tile); level_w/h are the sizes over it. */
+    int src_x, src_y, src_w, src_h;
 } bloom_info_t;
 
 typedef struct bloom bloom_t;
@@ -207,7 +216,14 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
  * and strides match; a destination row that overlaps a source row still
  * needed, or source row y in another format, is refused (BLOOM_E_ALIAS).
  * BLOOM_SMALL builds (the size build) refuse only the same rows in another
- * format or stride; the other overlaps are then the caller's to avoid. */
+ * format or stride; the other overlaps are then the caller's to avoid.
+ * With a tile (cfg.tile_w > 0): the rows pushed are those of the source
+ * rectangle (info.src_y .. src_y + src_h - 1), each given as its frame row
+ * (column 0: the engine reads columns src_x .. src_x + src_w - 1, so every
+ * strip engine of a frame is pushed the same rows); pull writes the tile's
+ * columns of the frame row dst_row for output rows tile_y ..
+ * tile_y + tile_h - 1; bloom_rows_in/out count those rows. A tile is never
+ * written in place: its halo reads its neighbours' source (BLOOM_E_ALIAS). */
 bloom_status_t bloom_begin(bloom_t *b);
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row);
 /* The same with the aux plane's row (presets that read one). */
@@ -222,11 +238,14 @@ int bloom_rows_out(const bloom_t *b);
 
 /* Band interface: push source rows rows_in .. rows_in + nrows - 1 (src is
  * the frame's row 0, src_stride bytes apart) and write every output row that
- * becomes ready to dst (frame row 0, dst_stride bytes apart). */
+ * becomes ready to dst (frame row 0, dst_stride bytes apart). With a tile,
+ * rows are counted from the source rectangle's first row (info.src_y), and
+ * src and dst are still the frames' row 0. */
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
                               ptrdiff_t dst_stride);
 
-/* Whole frame: bloom_begin + bloom_run_rows(height) + drain. */
+/* Whole frame (with a tile: the tile of the frame): bloom_begin +
+ * bloom_run_rows(all source rows) + drain. */
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
                              ptrdiff_t dst_stride);
 

@@ -166,7 +166,10 @@ static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
                   !run(&e[i], src, dst, w); /* warm-up */
     size_t slot = 0;
     for (int r = 0; r < runs; r++) {
-        for (int i = 0; i < NE; i++) {
+        /* the order rotates with the round: none always runs first after
+         * the cold copy (or last before it) */
+        for (int q = 0; q < NE; q++) {
+            const int i = (q + r) % NE;
             if (!have[i])
                 continue;
             const double t0 = now_ms();

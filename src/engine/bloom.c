@@ -42,7 +42,9 @@ static void set_dark(bloom_graph_t *g)
 
 #define NO_CUT 0xFFFFFFFFu
 
-bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap)
+/* The graph over the window x0, y0, w x h of the frame (no dry run yet). */
+static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap,
+                                  int x0, int y0, int w, int h)
 {
     const bloom_preset_ops_t *ops = bloom_preset_ops(cfg->preset);
     if (!ops)
@@ -51,8 +53,17 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     g->node = nodes;
     g->node_cap = cap;
     g->cfg = *cfg;
-    g->w[0] = cfg->width;
-    g->h[0] = cfg->height;
+#if !BLOOM_SMALL /* (else the window is the frame, bg_win_x/y are 0) */
+    g->frame_w = cfg->width;
+    g->frame_h = cfg->height;
+    g->win_x = x0;
+    g->win_y = y0;
+#else
+    (void)x0;
+    (void)y0;
+#endif
+    g->w[0] = w;
+    g->h[0] = h;
     bg_levels(g, cfg->levels);
     g->knee.t = cfg->threshold << BLOOM_Q16_SHIFT; /* Q16.16 -> internal, exact */
     g->knee.k = (uint32_t)(((uint64_t)g->knee.t * cfg->soft_knee + 32768u) >> 16);
@@ -67,9 +78,9 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
 #if BLOOM_USE_GRAPH
     g->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
 #endif
-    g->src_row_bytes = (size_t)cfg->width * (size_t)g->src_bpp;
-    g->aux_row_bytes = (size_t)cfg->width * (size_t)bg_aux_bpp(g);
-    g->scratch_len = (size_t)cfg->width * 3u + 16u;
+    g->src_row_bytes = (size_t)w * (size_t)g->src_bpp;
+    g->aux_row_bytes = (size_t)w * (size_t)bg_aux_bpp(g);
+    g->scratch_len = (size_t)w * 3u + 16u;
     g->out_node = -1;
     if (BLOOM_USE_SKIP)
         g->dark_cut = NO_CUT;
@@ -98,8 +109,67 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     if (g->dark_src)
         set_dark(g);
 #endif
-    bloom_dry_frame(g);
     return BLOOM_OK;
+}
+
+#if !BLOOM_SMALL
+/* How far (in frame pixels, either way and in either direction) the output
+ * node's pixels reach into the source: down the graph, each input adds its
+ * row reach at its resolution, plus one of its pixels for the rounding of
+ * the positions. A kernel reaches as far across as its rows reach down
+ * (the box, the tents, the Gaussian, Kawase, the 13-tap: square
+ * footprints), so this is the halo of a tile. */
+static int halo_of(const bloom_graph_t *g)
+{
+    int reach[BG_MAX_NODES];
+    for (int i = 0; i < g->nnodes; i++) {
+        const bg_node_t *n = &g->node[i];
+        reach[i] = 0;
+        for (int j = 0; j < n->nin; j++) {
+            const bg_input_t *in = &n->in[j];
+            const int from = in->node, scale = from < 0 ? 1 : 1 << g->node[from].level;
+            const int r = imax(in->lo < 0 ? -in->lo : in->lo, in->hi < 0 ? -in->hi : in->hi) + 1;
+            reach[i] = imax(reach[i], (from < 0 ? 0 : reach[from]) + scale * r);
+        }
+    }
+    return reach[g->out_node];
+}
+
+/* [a, b) of a frame side n around [t, t + tn): the margin m either side,
+ * then out to multiples of `align` (the window's levels then halve like the
+ * frame's), within the frame. */
+static void window_side(int t, int tn, int n, int m, int align, int *a, int *b)
+{
+    const long lo = (long)t - m, hi = (long)t + tn + m;
+    *a = lo <= 0 ? 0 : (int)(lo / align * align);
+    *b = hi >= n ? n : (int)imin(n, (int)((hi + align - 1) / align * align));
+}
+#endif
+
+bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap)
+{
+    bloom_status_t st = plan_window(g, cfg, nodes, cap, 0, 0, cfg->width, cfg->height);
+#if !BLOOM_SMALL
+    if (st == BLOOM_OK && cfg->tile_w > 0) {
+        /* the graph over the whole frame says how far its pixels reach; the
+         * window is the tile with that halo (and one deepest-level pixel
+         * more), aligned to the deepest level so its levels halve as the
+         * frame's, and the graph is built again over it */
+        const int align = 1 << g->L, m = halo_of(g);
+        int x0, x1, y0, y1;
+        window_side(cfg->tile_x, cfg->tile_w, cfg->width, m, align, &x0, &x1);
+        window_side(cfg->tile_y, cfg->tile_h, cfg->height, m, align, &y0, &y1);
+        st = plan_window(g, cfg, nodes, cap, x0, y0, x1 - x0, y1 - y0);
+        g->tiled = true;
+        g->tile_x0 = cfg->tile_x - x0;
+        g->tile_x1 = g->tile_x0 + cfg->tile_w;
+        g->tile_y0 = cfg->tile_y - y0;
+        g->tile_y1 = g->tile_y0 + cfg->tile_h;
+    }
+#endif
+    if (st == BLOOM_OK)
+        bloom_dry_frame(g);
+    return st;
 }
 
 /* Lay the rings out after the engine struct; with base NULL only count.
@@ -133,6 +203,8 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
             g->aux_ptr = (const uint8_t **)take(base, &off, ucap * sizeof(const uint8_t *));
     }
     g->src_tag = (int32_t *)take(base, &off, ucap * sizeof(int32_t));
+    if (bg_tiled(g))
+        g->out_row = (uint8_t *)take(base, &off, (uint64_t)g->w[0] * (uint64_t)bloom_bpp(g->cfg.out_fmt));
     g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
     if (base)
         g->src_cap = cap;
@@ -183,6 +255,12 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
     info->threshold_q = tmp.knee.t;
     info->knee_q = tmp.knee.k;
     info->intensity_q = tmp.out.intensity;
+#if !BLOOM_SMALL /* (else no tiles: the whole frame, from 0, 0) */
+    info->src_x = tmp.win_x;
+    info->src_y = tmp.win_y;
+#endif
+    info->src_w = tmp.w[0];
+    info->src_h = tmp.h[0];
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);
     if (bytes > SIZE_MAX)
         return BLOOM_E_TOO_BIG;
@@ -234,6 +312,7 @@ bloom_status_t bloom_begin(bloom_t *b)
     if (!b)
         return BLOOM_E_NULL;
     b->src_n = 0;
+    b->out_rows = 0;
     b->failed = false;
     for (int i = 0; i < b->src_cap; i++)
         b->src_tag[i] = -1;

@@ -18,12 +18,22 @@ int bloom_rows_out(const bloom_t *b)
 {
     if (!b)
         return BLOOM_E_NULL;
-    return b->node[b->out_node].next;
+    return b->out_rows;
 }
 
+/* Source rows of a frame (the source rectangle's), and output rows (the
+ * tile's), and the frame rows the first of each is. */
 static int rows_total(const bloom_t *b)
 {
-    return b->cfg.height;
+    return b->h[0];
+}
+static int out_total(const bloom_t *b)
+{
+    return bg_tiled(b) ? b->cfg.tile_h : b->h[0];
+}
+static int out_row0(const bloom_t *b)
+{
+    return bg_tiled(b) ? b->cfg.tile_y : 0;
 }
 
 bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
@@ -89,10 +99,13 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
 {
     if (!b || !dst_row)
         return BLOOM_E_NULL;
-    const bool same = b->cfg.in_fmt == b->cfg.out_fmt;
-    const size_t out_bytes = (size_t)b->cfg.width * (size_t)bloom_format_bpp(b->cfg.out_fmt);
+    /* a tile writes its columns of the row, and never in place */
+    const bool same = b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(b);
+    const size_t obpp = (size_t)bloom_format_bpp(b->cfg.out_fmt);
+    const size_t out_bytes = (size_t)(bg_tiled(b) ? b->cfg.tile_w : b->cfg.width) * obpp;
+    const uint8_t *d = (const uint8_t *)dst_row + (bg_tiled(b) ? (size_t)b->cfg.tile_x * obpp : 0u);
     if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes, same,
-                                     bloom_rows_out(b), (const uint8_t *)dst_row))
+                                     b->node[b->out_node].next, d))
         return BLOOM_E_ALIAS;
     return bloom_sched_pull(b, dst_row);
 }
@@ -116,7 +129,7 @@ static void span(const uint8_t *p, ptrdiff_t stride, int r0, int r1, uintptr_t *
 static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, const uint8_t *d, ptrdiff_t ds,
                            int r0, int r1)
 {
-    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt) || r1 <= r0)
+    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(b)) || r1 <= r0)
         return false;
 #if BLOOM_SMALL /* the size build: the same buffer in another format or stride only */
     (void)ds;
@@ -124,8 +137,13 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 #else
     uintptr_t slo, shi, dlo, dhi;
     const size_t w = (size_t)b->cfg.width;
-    span(s, ss, r0, r1, &slo, &shi);
-    span(d, ds, r0, r1, &dlo, &dhi);
+    /* rows r0 .. r1 - 1 of the frames (with a tile, conservatively: the
+     * source rectangle's rows and every row of the tile) */
+    span(s, ss, bg_win_y(b) + r0, bg_win_y(b) + r1, &slo, &shi);
+    if (bg_tiled(b))
+        span(d, ds, b->cfg.tile_y, b->cfg.tile_y + b->cfg.tile_h, &dlo, &dhi);
+    else
+        span(d, ds, r0, r1, &dlo, &dhi);
     return ranges_meet(slo, shi - slo + w * (size_t)bloom_format_bpp(b->cfg.in_fmt), dlo,
                        dhi - dlo + w * (size_t)bloom_format_bpp(b->cfg.out_fmt));
 #endif
@@ -154,15 +172,16 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
     for (;;) {
         bloom_status_t st;
         do
-            st = bloom_sched_pull(b, d + (ptrdiff_t)bloom_rows_out(b) * dst_stride); /* span checked above */
+            st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
+                                             dst_stride); /* span checked above */
         while (st == BLOOM_OK);
         if (st < 0)
             return st;
         const int r = bloom_rows_in(b);
         if (r == end)
             return BLOOM_OK;
-        st = bloom_push_row_aux(b, s + (ptrdiff_t)r * src_stride,
-                                aux ? aux + (ptrdiff_t)r * aux_stride : NULL);
+        const ptrdiff_t fr = (ptrdiff_t)bg_win_y(b) + r; /* the frame row */
+        st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
     }
@@ -174,7 +193,7 @@ bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, 
     bloom_status_t st = bloom_begin(b);
     if (st == BLOOM_OK)
         st = bloom_run_rows(b, src, src_stride, rows_total(b), dst, dst_stride);
-    if (st == BLOOM_OK && bloom_rows_out(b) != rows_total(b))
+    if (st == BLOOM_OK && bloom_rows_out(b) != out_total(b))
         st = BLOOM_E_INTERNAL;
     return st;
 }

@@ -47,6 +47,8 @@ const char *bloom_status_str(bloom_status_t st)
         return "preset unknown or compiled out";
     case BLOOM_E_AUX:
         return "aux plane missing, not used by the preset, or of unknown format";
+    case BLOOM_E_TILE:
+        return "tile outside the frame";
     case BLOOM_E_ALIAS:
         return "dst overlaps src rows still needed (in place: same format, stride)";
 #if BLOOM_USE_GRAPH /* only presets other than the default return these */
@@ -101,6 +103,16 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
                                BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 |
                                BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
         return BLOOM_E_FLAGS;
+    if ((c->tile_w | c->tile_h | c->tile_x | c->tile_y) != 0) {
+        /* (compared by subtraction: no int overflow) */
+#if BLOOM_SMALL
+        return BLOOM_E_TILE; /* the size build has no tiles */
+#else
+        if (c->tile_w < 1 || c->tile_h < 1 || c->tile_x < 0 || c->tile_y < 0 ||
+            c->tile_x > c->width - c->tile_w || c->tile_y > c->height - c->tile_h)
+            return BLOOM_E_TILE;
+#endif
+    }
     const bloom_preset_ops_t *ops = bloom_preset_ops(c->preset);
     if (!ops)
         return BLOOM_E_PRESET;

@@ -206,9 +206,17 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
         return BLOOM_E_AUX;
     if (g->src_n >= g->h[0])
         return BLOOM_E_STATE;
+    if (bg_tiled(g) && g->node[g->out_node].next >= g->tile_y1) {
+        g->src_n++; /* the tile is out: the rest of the window's rows are not needed */
+        return BLOOM_OK;
+    }
     const int r = g->src_n, slot = r % g->src_cap;
     if (r - g->src_cap >= oldest_of(g, BG_SRC))
         return BLOOM_E_BUSY;
+    /* the window's columns of the frame row (win_x is 0 without a tile) */
+    src_row = (const uint8_t *)src_row + (size_t)bg_win_x(g) * (size_t)g->src_bpp;
+    if (bg_aux_bpp(g))
+        aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(g) * (size_t)bg_aux_bpp(g);
     if (g->src_copy) {
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
         if (bg_aux_bpp(g))
@@ -232,14 +240,27 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
 bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
 {
     bg_node_t *o = &g->node[g->out_node];
+#if !BLOOM_SMALL
+    if (g->tiled) /* halo rows above the tile: their inputs are made, they are not */
+        while (o->next < g->tile_y0 && o->next < g->src_n && ensure_inputs(g, o, o->next))
+            o->next++;
+#endif
     const int y = o->next;
-    if (y >= g->h[0])
+    if (y >= g->h[0] || (bg_tiled(g) && y >= g->tile_y1))
         return BLOOM_DONE;
     if (y >= g->src_n || !ensure_inputs(g, o, y))
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
-    run_row(g, o, y, dst_row);
+    if (!bg_tiled(g)) {
+        run_row(g, o, y, dst_row);
+    } else { /* the tile's columns of the window's row */
+        const size_t bpp = (size_t)bloom_bpp(g->cfg.out_fmt);
+        run_row(g, o, y, g->out_row);
+        memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp, g->out_row + (size_t)g->tile_x0 * bpp,
+               (size_t)(g->tile_x1 - g->tile_x0) * bpp);
+    }
     if (g->failed)
         return BLOOM_E_INTERNAL;
     o->next++;
+    g->out_rows++;
     return BLOOM_OK;
 }

@@ -8,13 +8,15 @@
 
 void bg_levels(bloom_graph_t *g, int n)
 {
+    int fw = g->frame_w, fh = g->frame_h;
     g->L = 1;
     for (int k = 1; k <= BLOOM_MAX_LEVELS; k++) {
-        const int w = (g->w[k - 1] + 1) / 2, h = (g->h[k - 1] + 1) / 2;
-        if (k > 1 && (k > n || imin(w, h) < 2))
+        fw = BLOOM_SMALL ? (g->w[k - 1] + 1) / 2 : (fw + 1) / 2; /* (no tiles: the frame is the window) */
+        fh = BLOOM_SMALL ? (g->h[k - 1] + 1) / 2 : (fh + 1) / 2;
+        if (k > 1 && (k > n || imin(fw, fh) < 2))
             break;
-        g->w[k] = w;
-        g->h[k] = h;
+        g->w[k] = (g->w[k - 1] + 1) / 2;
+        g->h[k] = (g->h[k - 1] + 1) / 2;
         g->L = k;
     }
 }

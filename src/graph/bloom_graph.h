@@ -103,6 +103,16 @@ struct bloom {
     bool dark_src;        /* source rows are tagged dark by `dark` (the build hook set dark_cut) */
     uint32_t dark_cut;    /* build hook: a source pixel with no channel above it makes zeros */
     bloom_dark_t dark;    /* the largest codes of each width at or below dark_cut */
+    /* The frame, and the window of it the graph works on (bloom_plan): the
+     * source rectangle, from column win_x and row win_y of the frame, w[0]
+     * x h[0]. With a tile (tiled) the output is the window's columns
+     * tile_x0 .. tile_x1 - 1 and rows tile_y0 .. tile_y1 - 1 (the tile):
+     * the output node writes out_row, the tile's part is copied out. */
+    int frame_w, frame_h, win_x, win_y;
+    bool tiled;
+    int tile_x0, tile_x1, tile_y0, tile_y1;
+    uint8_t *out_row;
+    int out_rows; /* output rows given to the caller this frame */
     int nnodes, out_node;
     uint32_t zin[BG_MAX_IN]; /* during a row function: which input rows are zero */
     /* scratch rows for row functions: scratch_rows rows of scratch_len words */
@@ -135,8 +145,9 @@ struct bloom {
 
 /* ---- graph construction (for build hooks) ---------------------------- */
 
-/* Level sizes by the common rule (bloom-model.md) for n requested levels;
- * sets g->L, g->w, g->h. */
+/* Level sizes by the common rule (bloom-model.md) for n requested levels:
+ * the level count from the frame's size, the sizes from the window's
+ * (g->w[0], g->h[0]: the same halving); sets g->L, g->w, g->h. */
 void bg_levels(bloom_graph_t *g, int n);
 /* A node of w x h x ch at `level`; returns its index, or -1 when full. */
 int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level);
@@ -171,6 +182,21 @@ static inline bool bg_in_zero(const bloom_graph_t *g, int i, int lo, int hi)
 {
     const uint32_t m = ((2u << hi) - 1u) & ~((1u << lo) - 1u);
     return BLOOM_USE_SKIP && (g->zin[i] & m) == m;
+}
+/* Whether the engine renders a tile (never in BLOOM_SMALL builds: the
+ * tile code compiles out of the size build). */
+static inline bool bg_tiled(const bloom_graph_t *g)
+{
+    return !BLOOM_SMALL && g->tiled;
+}
+/* The window's first column and row in the frame (0 without tiles). */
+static inline int bg_win_x(const bloom_graph_t *g)
+{
+    return BLOOM_SMALL ? 0 : g->win_x;
+}
+static inline int bg_win_y(const bloom_graph_t *g)
+{
+    return BLOOM_SMALL ? 0 : g->win_y;
 }
 /* Bytes per aux sample: always 0 in a build without presets (only they read
  * an aux plane: its code compiles out of the default-only core). */

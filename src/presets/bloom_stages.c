@@ -112,11 +112,3 @@ int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
     }
     return U;
 }
-
-int bg_build_out_add(bloom_graph_t *g, int u1)
-{
-    const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
-    bg_input(g, o, u1, BG_UP, -1, 1);
-    bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
-    return g->out_node = o;
-}

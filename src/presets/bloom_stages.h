@@ -19,7 +19,15 @@ bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void
  * 2r .. 2r+1), every node zero-preserving. Returns the node of U_1 (D_1
  * when L = 1). */
 int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux);
-/* The output node S + I * tent(U_1) reading node u1; sets g->out_node. */
-int bg_build_out_add(bloom_graph_t *g, int u1);
+/* The output node S + I * tent(U_1) reading node u1; sets g->out_node.
+ * (Inline: the default's build hook is its only caller in a default-only
+ * build, the Cortex-M flash figure.) */
+static inline int bg_build_out_add(bloom_graph_t *g, int u1)
+{
+    const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
+    bg_input(g, o, u1, BG_UP, -1, 1);
+    bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
+    return g->out_node = o;
+}
 
 #endif
