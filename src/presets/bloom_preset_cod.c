@@ -18,6 +18,7 @@
  * Indices outside the image are clamped (the edge rule). */
 #include "bloom_stages.h"
 #include "bloom_pixel.h"
+#include "bloom_preset_cod.h"
 
 /* Reach of L = 1 .. 10 levels in tenths of a pixel: the RMS radius of the
  * bloom of a point light with Bevy's NATURAL weights, measured through the
@@ -44,11 +45,6 @@ int bloom_levels_for_radius(int radius_px)
 }
 
 #if BLOOM_USE_COD
-
-/* Rec.709 luma coefficients in Q16 (sum 65536). */
-#define COD_KR 13933u
-#define COD_KG 46871u
-#define COD_KB 4732u
 
 /* Default blend factors c_k (k = 0 .. L-1) of Bevy's BloomSettings::NATURAL
  * (intensity 0.15, low_frequency_boost 0.7, curvature 0.95, high pass 1.0,
@@ -95,17 +91,9 @@ static const uint32_t cod_natural[BLOOM_MAX_LEVELS][BLOOM_MAX_LEVELS] = {
  * on the right, copies of the edge columns (the edge rule), so that the
  * horizontal passes need no clamping: column j of a padded row p is
  * p[3 * (j + 2) + ch], j = -2 .. n + 2, 3 (n + 5) words <= the scratch
- * row's 3 w0 + 16. */
-#define PAD 6
-static void pad_edges(uint32_t *p, int n)
-{
-    for (int ch = 0; ch < 3; ch++) {
-        const uint32_t l = p[PAD + ch], r = p[PAD + 3 * (n - 1) + ch];
-        p[ch] = p[3 + ch] = l;
-        for (int j = 0; j < 3; j++)
-            p[PAD + 3 * (n + j) + ch] = r;
-    }
-}
+ * row's 3 w0 + 16 (cod_pad_edges). The row kernels (bloom_preset_cod.h,
+ * bloom_preset_cod_kern.c) and their SIMD twins are picked by g->kern.isa. */
+#define PAD COD_PAD
 
 /* Vertical box sums of six rows (2y-2 .. 2y+3): top = rows 0..3, centre =
  * rows 1..4, bottom = rows 2..5, accumulated row by row. */
@@ -150,174 +138,69 @@ static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict 
     }
 }
 
-#if BLOOM_USE_RGB888
-/* The same sums straight from six rows of 8-bit sRGB codes (RGB888: sample
- * i is byte i), decoded by the table as bloom_decode_row does: one pass
- * instead of six decodes and six accumulations. */
-static void vsum6_dec8(const uint8_t *const s[6], uint32_t *restrict t, uint32_t *restrict c,
-                       uint32_t *restrict b, int n)
-{
-    const uint32_t *d = bloom_srgb_dec8;
-    for (int i = 0; i < n; i++) {
-        const uint32_t v1 = d[s[1][i]], mid = d[s[2][i]] + d[s[3][i]], v4 = d[s[4][i]];
-        t[i] = d[s[0][i]] + v1 + mid;
-        c[i] = v1 + mid + v4;
-        b[i] = mid + v4 + d[s[5][i]];
-    }
-}
-#endif
-
 /* Level 1. Input 0: source rows 2r-2 .. 2r+3. The five 4x4 box sums per
- * channel (each <= 16 M < 2^32), the Karis weights
- *   d_i = 2^F + floor(Y_i / 2^20), Y_i = 13933 R_i + 46871 G_i + 4732 B_i
- *   w_i = floor(2^(F+28) / d_i) (<= 2^28), g_i w_i with g = 1, 1, 1, 1, 4
- *   D = floor(floor((sum_i g_i w_i Box_i + 8 W) / 16) / W), W = sum g_i w_i
- * then the knee. Equal d_i give equal weights, and then D is exactly
- * (sum_i g_i Box_i + 64) >> 7 (nested floors): no division. */
+ * channel (each <= 16 M < 2^32), the Karis weights and average
+ * (cod_karis_c), then the knee. RGB888 sRGB rows are decoded and summed in
+ * one pass (cod_vsum6_c: no six decodes and six accumulations). */
 static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
     const int w0 = g->w[0], nw = 3 * w0;
+    cod_kernels_t k;
+    cod_kernels(g->kern.isa, &k);
     uint32_t *dec = bg_scratch(g, 0), *vt = bg_scratch(g, 1), *vc = bg_scratch(g, 2), *vb = bg_scratch(g, 3);
 #if BLOOM_USE_RGB888
     if (g->out.in_fmt == BLOOM_FMT_RGB888 && !g->out.linear) {
         const uint8_t *const s[6] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                      (const uint8_t *)in[0][2], (const uint8_t *)in[0][3],
                                      (const uint8_t *)in[0][4], (const uint8_t *)in[0][5]};
-        vsum6_dec8(s, vt + PAD, vc + PAD, vb + PAD, nw);
+        k.vsum6(s, vt + PAD, vc + PAD, vb + PAD, nw);
     } else
 #endif
         for (int j = 0; j < 6; j++) {
             if (j == 0 || in[0][j] != in[0][j - 1])
-                bloom_decode_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
+                k.dec(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
             vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
         }
-    pad_edges(vt, w0);
-    pad_edges(vc, w0);
-    pad_edges(vb, w0);
-    uint32_t *o = (uint32_t *)dst, any = 0;
-    const uint64_t wnum = 1ull << (BLOOM_LIN_BITS + 28);
-    for (int x = 0; x < n->w; x++) {
-        /* padded column 2x - 2 + i is at 3 (2x + i) */
-        const uint32_t *t = vt + 6 * x, *c = vc + 6 * x, *b = vb + 6 * x;
-        uint32_t box[5][3]; /* TL, TR, BL, BR, C */
-        for (int ch = 0; ch < 3; ch++) {
-            const uint32_t t01 = t[ch] + t[3 + ch], t23 = t[6 + ch] + t[9 + ch],
-                           t45 = t[12 + ch] + t[15 + ch];
-            const uint32_t b01 = b[ch] + b[3 + ch], b23 = b[6 + ch] + b[9 + ch],
-                           b45 = b[12 + ch] + b[15 + ch];
-            box[0][ch] = t01 + t23;
-            box[1][ch] = t23 + t45;
-            box[2][ch] = b01 + b23;
-            box[3][ch] = b23 + b45;
-            box[4][ch] = c[3 + ch] + c[6 + ch] + c[9 + ch] + c[12 + ch];
-        }
-        uint32_t d[5];
-        bool same = true;
-        for (int i = 0; i < 5; i++) {
-            const uint64_t y =
-                (uint64_t)COD_KR * box[i][0] + (uint64_t)COD_KG * box[i][1] + (uint64_t)COD_KB * box[i][2];
-            d[i] = BLOOM_LIN_ONE + (uint32_t)(y >> 20);
-            same = same && d[i] == d[0];
-        }
-        uint32_t *p = o + 3 * x;
-        if (same) {
-            for (int ch = 0; ch < 3; ch++)
-                p[ch] = (uint32_t)(((uint64_t)box[0][ch] + box[1][ch] + box[2][ch] + box[3][ch] +
-                                    4u * (uint64_t)box[4][ch] + 64u) >>
-                                   7);
-            any |= p[0] | p[1] | p[2];
-            continue;
-        }
-        uint32_t gw[5], wsum = 0;
-        for (int i = 0; i < 5; i++) {
-            gw[i] = bloom_div_u64_u32(wnum, d[i]) << (i == 4 ? 2 : 0);
-            wsum += gw[i];
-        }
-        for (int ch = 0; ch < 3; ch++) {
-            uint64_t num = 8u * (uint64_t)wsum;
-            for (int i = 0; i < 5; i++)
-                num += (uint64_t)gw[i] * box[i][ch];
-            p[ch] = bloom_div_u64_u32(num >> 4, wsum);
-        }
-        any |= p[0] | p[1] | p[2];
-    }
+    cod_pad_edges(vt, w0);
+    cod_pad_edges(vc, w0);
+    cod_pad_edges(vb, w0);
+    uint32_t *o = (uint32_t *)dst;
+    const uint32_t any = k.karis(vt, vc, vb, o, n->w);
     if (g->knee.t != 0) /* threshold 0: the knee is the identity */
         return bloom_row_knee_c(o, n->w, &g->knee);
     return any != 0;
 }
 
-/* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1. Per column
- * vO = r0 + r1 + 2 (r2 + r3) + r4 + r5 (<= 8 M) and vI = r1 + .. + r4; per
- * pixel sO = the same weights across vO (<= 64 M, 64-bit), sI across vI
- * columns 1..4; D = (sO + 4 sI + 64) >> 7, which is the box form above. */
+/* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1 (cod_down13_c). */
 static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                  void *dst)
 {
     (void)r;
-    const int sw = g->node[n->in[0].node].w, nw = 3 * sw;
-    uint32_t *vo = bg_scratch(g, 0), *vi = bg_scratch(g, 1);
-    const uint32_t *r0 = (const uint32_t *)in[0][0], *r1 = (const uint32_t *)in[0][1],
-                   *r2 = (const uint32_t *)in[0][2], *r3 = (const uint32_t *)in[0][3],
-                   *r4 = (const uint32_t *)in[0][4], *r5 = (const uint32_t *)in[0][5];
-    for (int i = 0; i < nw; i++) {
-        const uint32_t mid = r2[i] + r3[i];
-        vi[PAD + i] = r1[i] + mid + r4[i];
-        vo[PAD + i] = r0[i] + r1[i] + 2u * mid + r4[i] + r5[i];
-    }
-    pad_edges(vo, sw);
-    pad_edges(vi, sw);
-    uint32_t *o = (uint32_t *)dst, any = 0;
-    for (int x = 0; x < n->w; x++) {
-        const uint32_t *a = vo + 6 * x, *b = vi + 6 * x;
-        for (int ch = 0; ch < 3; ch++) {
-            const uint64_t so = (uint64_t)a[ch] + a[3 + ch] + 2u * ((uint64_t)a[6 + ch] + a[9 + ch]) +
-                                a[12 + ch] + a[15 + ch];
-            const uint32_t si = b[3 + ch] + b[6 + ch] + b[9 + ch] + b[12 + ch];
-            o[3 * x + ch] = (uint32_t)((so + 4u * (uint64_t)si + 64u) >> 7);
-            any |= o[3 * x + ch];
-        }
-    }
-    return any != 0;
+    const int sw = g->node[n->in[0].node].w;
+    cod_kernels_t k;
+    cod_kernels(g->kern.isa, &k);
+    const uint32_t *const rows[6] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                     (const uint32_t *)in[0][2], (const uint32_t *)in[0][3],
+                                     (const uint32_t *)in[0][4], (const uint32_t *)in[0][5]};
+    return k.down13(rows, bg_scratch(g, 0), bg_scratch(g, 1), (uint32_t *)dst, n->w, sw) != 0;
 }
-
-/* The vertical half of the tent: V[j] = the four rows' weighted samples at
- * low-resolution column j (u rows m-2 .. m+2, parity odd), each
- * <= 16 * 2^32, 64-bit, in scratch rows 0 and 1 (contiguous, 8-aligned),
- * padded like the rows above (2 columns left, 2 right). Returns column 0. */
-static const uint64_t *vtent(const bloom_graph_t *g, const void *const *rows, int odd, int sw)
-{
-    uint64_t *v = (uint64_t *)(void *)bg_scratch(g, 0) + 6;
-    const uint32_t *a = (const uint32_t *)rows[odd], *b = (const uint32_t *)rows[odd + 1],
-                   *c = (const uint32_t *)rows[odd + 2], *d = (const uint32_t *)rows[odd + 3];
-    const uint32_t wa = odd ? 3u : 1u, wb = odd ? 7u : 5u, wc = odd ? 5u : 7u, wd = odd ? 1u : 3u;
-    for (int i = 0; i < 3 * sw; i++)
-        v[i] = (uint64_t)wa * a[i] + (uint64_t)wb * b[i] + (uint64_t)wc * c[i] + (uint64_t)wd * d[i];
-    for (int ch = 0; ch < 3; ch++) {
-        v[ch - 6] = v[ch - 3] = v[ch];
-        v[3 * sw + ch] = v[3 * sw + 3 + ch] = v[3 * (sw - 1) + ch];
-    }
-    return v;
-}
-
-/* The horizontal half for output columns x = 2m (weights 1, 5, 7, 3 over
- * m-2 .. m+1) and 2m + 1 (3, 7, 5, 1 over m-1 .. m+2): the exact 2-D tent
- * sums (256 x the mean), <= 2^40, into e[3 m + ch] and o[3 m + ch]. */
-#define TENT_EVEN(p, ch) ((p)[(ch)-6] + 5u * (p)[(ch)-3] + 7u * (p)[(ch)] + 3u * (p)[(ch) + 3])
-#define TENT_ODD(p, ch) (3u * (p)[(ch)-3] + 7u * (p)[(ch)] + 5u * (p)[(ch) + 3] + (p)[(ch) + 6])
 
 /* U_k. Input 0: D_k row r; input 1: U_(k+1) rows m-2 .. m+2. k[0] = c_k.
  * Energy-conserving: U = ((65536 - c) 256 D + c T4 + 2^23) >> 24 (<= 2^52
- * + 2^52); additive: U = D + ((c T4 + 2^23) >> 24) (c T4 <= 2^56). */
+ * + 2^52); additive: U = D + ((c T4 + 2^23) >> 24) (c T4 <= 2^56), the
+ * same with a = 2^24. The tent: cod_blend_c (T4, the exact 2-D tent sum,
+ * 256 x the mean, per axis weights (1, 5, 7, 3) / 16 for x = 2m over
+ * m-2 .. m+1 and (3, 7, 5, 1) / 16 for x = 2m + 1 over m-1 .. m+2). */
 static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     const int sw = g->node[n->in[1].node].w, w = n->w, odd = r & 1;
     const uint32_t *dk = (const uint32_t *)in[0][0];
     uint32_t *o = (uint32_t *)dst;
-    const uint64_t c = n->k[0];
-    const uint64_t a = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
+    const uint32_t c = n->k[0];
+    const uint32_t a = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
     const size_t ns = (size_t)w * 3u;
     if (bg_in_zero(g, 1, odd, odd + 3)) { /* T4 = 0: U = (a D + 2^23) >> 24 */
         if (bg_in_zero(g, 0, 0, 0)) {
@@ -330,17 +213,14 @@ static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
         }
         uint32_t any = 0;
         for (size_t i = 0; i < ns; i++)
-            any |= o[i] = (uint32_t)((a * dk[i] + (1u << 23)) >> 24);
+            any |= o[i] = (uint32_t)(((uint64_t)a * dk[i] + (1u << 23)) >> 24);
         return any != 0;
     }
-    const uint64_t *v = vtent(g, in[1], odd, sw);
-    for (int x = 0; x < w; x++) {
-        const uint64_t *p = v + 3 * (x >> 1);
-        for (int ch = 0; ch < 3; ch++) {
-            const uint64_t t = (x & 1) ? TENT_ODD(p, ch) : TENT_EVEN(p, ch);
-            o[3 * x + ch] = (uint32_t)((a * dk[3 * x + ch] + c * t + (1u << 23)) >> 24);
-        }
-    }
+    cod_kernels_t k;
+    cod_kernels(g->kern.isa, &k);
+    const uint32_t *const u[4] = {(const uint32_t *)in[1][odd], (const uint32_t *)in[1][odd + 1],
+                                  (const uint32_t *)in[1][odd + 2], (const uint32_t *)in[1][odd + 3]};
+    k.blend(u, odd, dk, o, w, sw, a, c, bg_scratch(g, 0));
     return true;
 }
 
@@ -355,7 +235,9 @@ static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint32_t *s = bg_scratch(g, 2), *o = bg_scratch(g, 3);
     const bool add = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = g->out.debug;
-    const uint64_t a = dbg ? 0u : (add ? 65536u : 65536u - n->k[0]) << 8;
+    const uint32_t a = dbg ? 0u : (add ? 65536u : 65536u - n->k[0]) << 8;
+    cod_kernels_t k;
+    cod_kernels(g->kern.isa, &k);
     if (bg_in_zero(g, 1, odd, odd + 3)) {
         /* T4 = 0: v = (a S + 2^23) >> 24, which is S for a = 2^24 and 0 in the
          * debug view (a = 0): the row copied (bloom_row_copy_c encodes zeros
@@ -365,24 +247,18 @@ static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
             bloom_row_copy_c(src, (uint8_t *)dst, w, &g->out);
             return true;
         }
-        bloom_decode_row(g->out.in_fmt, g->out.linear, src, s, w);
+        k.dec(g->out.in_fmt, g->out.linear, src, s, w);
         for (size_t i = 0; i < (size_t)w * 3u; i++)
-            s[i] = (uint32_t)((a * s[i] + (1u << 23)) >> 24);
-        bloom_encode_row(g->out.out_fmt, g->out.linear, s, (uint8_t *)dst, w);
+            s[i] = (uint32_t)(((uint64_t)a * s[i] + (1u << 23)) >> 24);
+        k.enc(g->out.out_fmt, g->out.linear, s, (uint8_t *)dst, w);
         return true;
     }
-    const uint64_t *v = vtent(g, in[1], odd, sw);
-    const uint64_t f[3] = {n->k[1], n->k[2], n->k[3]};
-    bloom_decode_row(g->out.in_fmt, g->out.linear, src, s, w);
-    for (int x = 0; x < w; x++) {
-        const uint64_t *p = v + 3 * (x >> 1);
-        for (int ch = 0; ch < 3; ch++) {
-            const uint64_t t = (x & 1) ? TENT_ODD(p, ch) : TENT_EVEN(p, ch);
-            const uint64_t q = (a * s[3 * x + ch] + f[ch] * t + (1u << 23)) >> 24;
-            o[3 * x + ch] = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
-        }
-    }
-    bloom_encode_row(g->out.out_fmt, g->out.linear, o, (uint8_t *)dst, w);
+    const uint32_t f[3] = {n->k[1], n->k[2], n->k[3]};
+    const uint32_t *const u[4] = {(const uint32_t *)in[1][odd], (const uint32_t *)in[1][odd + 1],
+                                  (const uint32_t *)in[1][odd + 2], (const uint32_t *)in[1][odd + 3]};
+    k.dec(g->out.in_fmt, g->out.linear, src, s, w);
+    k.mix(u, odd, s, o, w, sw, a, f, bg_scratch(g, 0));
+    k.enc(g->out.out_fmt, g->out.linear, o, (uint8_t *)dst, w);
     return true;
 }
 
