@@ -41,7 +41,7 @@ ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgi
 BENCH_CV_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags opencv4))
 BENCH_CV_LIBS = $(filter-out -lopencv_%,$(shell pkg-config --libs opencv4)) -lopencv_imgproc -lopencv_core
 
-.PHONY: bench icount profile bench-deps icount-deps profile-deps bench-force bench-peers
+.PHONY: bench icount profile bench-deps icount-deps profile-deps bench-force bench-peers bench-threads
 
 bench-deps:
 	@sh sim/bench/deps.sh bench
@@ -76,6 +76,7 @@ bench: bench-deps $(BENCH_DIR)/bloom_bench
 	cat $(BENCH_DIR)/results.md sim/bench/method.md > sim/docs/bench.md
 	@echo "bench: wrote sim/docs/bench.md and sim/docs/bench.csv"
 	$(MAKE) --no-print-directory bench-peers
+	$(MAKE) --no-print-directory bench-threads
 
 # The peers (issue 15): peers.sh installs them, builds the element (make gst)
 # and the GEGL driver itself, so that a peer that cannot be had is named on
@@ -85,6 +86,16 @@ $(BENCH_DIR)/peers_drv: sim/bench/peers_drv.c $(BENCH_DIR)/obj/scene.o $(BENCH_S
 bench-peers: $(BENCH_DIR)/peers_drv
 	MAKE='$(MAKE)' CC='$(CC)' PEERS_CFLAGS='$(BENCH_CFLAGS)' \
 	  bash sim/bench/peers.sh $(BENCH_DIR)/peers_drv $(BENCH_DIR)/peers sim/docs/bench-peers.md
+
+# Threads (issue 14): 1 vs 2 threads in paired rounds and the halo's
+# instructions for 4 strips (callgrind), port/threads/bench_threads.sh;
+# the helper and its flags are port/threads/threads.mk's.
+$(BENCH_DIR)/bench_threads: port/threads/bench_threads.c $(MT_SRC) $(MT_HDR) $(BENCH_DIR)/obj/scene.o $(BENCH_DIR)/sim/imgio.o \
+                            $(BENCH_CORE_OBJ)
+	$(CC) $(WARN) $(BENCH_CFLAGS) $(HOST_CPPFLAGS) -Isim/bench $(MT_CPPFLAGS) port/threads/bench_threads.c $(MT_SRC) \
+	  $(BENCH_DIR)/obj/scene.o $(BENCH_DIR)/sim/imgio.o $(BENCH_CORE_OBJ) -lm $(MT_LIBS) -o $@
+bench-threads: icount-deps $(BENCH_DIR)/bench_threads
+	sh port/threads/bench_threads.sh $(BENCH_DIR)/bench_threads sim/docs/threads.md
 
 # Instruction counts: the core without -march=native, plain -O2.
 $(ICOUNT_DIR)/core/%.o: src/%.c $(BENCH_CORE_HDR)

@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, isatty */
 #endif
 
+#include "bloom_mt.h"
 #include "sim.h"
 
 #include <stdlib.h>
@@ -27,7 +28,8 @@ typedef struct {
     bloom_config_t cfg;
     bloom_info_t info;
     void *ws;
-    bloom_t *b;
+    bloom_t *b;     /* the engine of one thread, or tile 0 of mt */
+    bloom_mt_t *mt; /* --threads N > 1: the strips (port/threads), in ws */
     int in_max[3], out_max[3];
     uint8_t *src, *dst;
     uint32_t *in_codes, *out_codes, *fl_codes, *bt_codes;
@@ -38,6 +40,7 @@ typedef struct {
 
 static void engine_free(engine_t *e)
 {
+    bloom_mt_free(e->mt);
     free(e->ws);
     free(e->src);
     free(e->dst);
@@ -124,7 +127,10 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux, 
     e->w = f->w;
     e->h = f->h;
     e->cfg = c;
-    e->ws = malloc(e->info.workspace_bytes);
+    /* more than one thread: the strip engines of bloom_mt in one buffer (the
+     * output is the same bytes; the frames are never in place here) */
+    const size_t ws_bytes = o->threads > 1 ? bloom_mt_size(&c, o->threads) : e->info.workspace_bytes;
+    e->ws = malloc(ws_bytes);
     e->src = malloc(n * (size_t)bloom_format_bpp(c.in_fmt));
     e->dst = malloc(n * (size_t)bloom_format_bpp(c.out_fmt));
     e->in_codes = malloc(n * 3 * sizeof(uint32_t));
@@ -137,25 +143,33 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux, 
     if (!e->ws || !e->src || !e->dst || !e->in_codes || !e->out_codes || !e->fl_codes || !e->bt_codes ||
         !e->rgb || !e->sbs || !e->lin)
         return sim_errf(err, errlen, "out of memory for %dx%d frames", f->w, f->h);
-    if ((st = bloom_init(&e->b, e->ws, e->info.workspace_bytes, &c)) != BLOOM_OK)
+    if (o->threads > 1) {
+        if ((st = bloom_mt_init(&e->mt, e->ws, ws_bytes, &c, o->threads)) != BLOOM_OK)
+            return sim_errf(err, errlen, "engine init (%d threads): %s", o->threads, bloom_mt_status_str(st));
+        e->b = bloom_mt_engine(e->mt, 0);
+    } else if ((st = bloom_init(&e->b, e->ws, e->info.workspace_bytes, &c)) != BLOOM_OK)
         return sim_errf(err, errlen, "engine init: %s", bloom_status_str(st));
     if (c.aux_fmt != BLOOM_AUX_NONE) {
         e->aux = aux;
-        if ((st = bloom_set_aux(e->b, aux->data, (ptrdiff_t)aux->w * (aux->fmt == BLOOM_AUX_U16 ? 2 : 1))) !=
+        const ptrdiff_t as = (ptrdiff_t)aux->w * (aux->fmt == BLOOM_AUX_U16 ? 2 : 1);
+        if ((st = e->mt ? bloom_mt_set_aux(e->mt, aux->data, as) : bloom_set_aux(e->b, aux->data, as)) !=
             BLOOM_OK)
             return sim_errf(err, errlen, "engine aux plane: %s", bloom_status_str(st));
     }
     sim_fmt_max(c.in_fmt, e->in_max);
     sim_fmt_max(c.out_fmt, e->out_max);
-    char pd[640];
+    char pd[640], tdesc[96] = "";
     preset_desc(&c, o, pd, sizeof pd);
+    if (e->mt)
+        snprintf(tdesc, sizeof tdesc, ", %d threads (%d strips in %zu bytes)", o->threads,
+                 bloom_mt_tiles(e->mt), ws_bytes);
     printf("engine: %dx%d %s -> %s, %s%s%s, %d levels (%d built), threshold %.5g, knee %.5g, "
-           "intensity %.5g, workspace %zu bytes, latency %d rows\n",
+           "intensity %.5g, workspace %zu bytes, latency %d rows%s\n",
            f->w, f->h, sim_fmt_name(c.in_fmt), sim_fmt_name(c.out_fmt), pd,
            (c.flags & BLOOM_FLAG_LINEAR) ? ", linear" : ", sRGB",
            (c.flags & BLOOM_FLAG_DEBUG_VIEW) ? ", bloom-only view" : "", c.levels, e->info.levels,
            c.threshold / 65536.0, c.soft_knee / 65536.0, c.intensity / 65536.0, e->info.workspace_bytes,
-           e->info.latency_rows);
+           e->info.latency_rows, tdesc);
     return 0;
 }
 
@@ -253,7 +267,8 @@ static int do_frame(run_t *r, const sim_frame_t *f, long gi, const char *name, c
     double best = 1e30;
     for (int k = 0; k < o->repeat; k++) {
         double t0 = now_s();
-        bloom_status_t bs = bloom_process(e->b, e->src, ss, e->dst, ds);
+        bloom_status_t bs = e->mt ? bloom_mt_process(e->mt, e->src, ss, e->dst, ds)
+                                  : bloom_process(e->b, e->src, ss, e->dst, ds);
         double t = now_s() - t0;
         if (bs != BLOOM_OK)
             return sim_errf(err, errlen, "frame %ld: engine: %s", gi, bloom_status_str(bs));

@@ -169,6 +169,7 @@ typedef struct {
     int compare, bittrue;
     long max_frames;       /* 0: all */
     int repeat;            /* engine runs per frame (best time) */
+    int threads;           /* --threads N: strips on a pool (port/threads); 1 = one engine */
     int quiet;             /* no per-frame lines */
     double progress_after; /* seconds before a progress line appears */
 } sim_opts_t;

@@ -7,8 +7,9 @@
 # pkg-config. Without the OpenEXR headers the tool builds without EXR input.
 
 SIMTOOL_SRC := sim/bloom_sim.c sim/sim_opts.c sim/sim_source.c sim/sim_convert.c \
-               sim/sim_out.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c sim/sim_aux.c
-SIMTOOL_HDR := sim/sim.h
+               sim/sim_out.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c sim/sim_aux.c \
+               port/threads/bloom_mt.c
+SIMTOOL_HDR := sim/sim.h port/threads/bloom_mt.h
 SIMTEST_SRC := tests/sim/simtest.c tests/sim/simtest_formats.c tests/sim/simtest_errors.c \
                tests/sim/simtest_gen.c tests/sim/simtest_util.c tests/sim/simtest_presets.c
 SIMTEST_HDR := tests/sim/simtest.h tests/sim/simtest_cases.h
@@ -24,8 +25,9 @@ else
 SIMTOOL_EXR_CFLAGS := -DSIM_NO_EXR
 SIMTOOL_EXR_LIBS :=
 endif
-SIMTOOL_CFLAGS := $(HOST_CPPFLAGS) $(SIMTOOL_PNG_CFLAGS) $(SIMTOOL_EXR_CFLAGS)
-SIMTOOL_LIBS := $(SIMTOOL_PNG_LIBS) -ljpeg $(SIMTOOL_EXR_LIBS) -lm
+# --threads: the strip helper of port/threads (POSIX threads).
+SIMTOOL_CFLAGS := $(HOST_CPPFLAGS) -Iport/threads $(SIMTOOL_PNG_CFLAGS) $(SIMTOOL_EXR_CFLAGS)
+SIMTOOL_LIBS := $(SIMTOOL_PNG_LIBS) -ljpeg $(SIMTOOL_EXR_LIBS) -lm -lpthread
 
 CHECKS += test-sim
 .PHONY: sim test-sim sim-deps sim-check

@@ -1,4 +1,5 @@
 /* bloom_sim command line: --help text and option parsing. */
+#include "bloom_mt.h"
 #include "sim.h"
 
 #include <stdlib.h>
@@ -91,6 +92,7 @@ static const char usage_rest[] =
     "Run:\n"
     "  --frames N               at most N frames\n"
     "  --repeat N               run the engine N times per frame, report the fastest\n"
+    "  --threads N              N strips on N threads, the same bytes (0, default: the CPUs)\n"
     "  -q, --quiet              no per-frame lines (the summary is still printed)\n"
     "  --progress-after S       on a terminal, show a progress line on stderr once the run\n"
     "                           has taken S seconds (default 1); quiet when not a terminal\n"
@@ -176,6 +178,7 @@ static const char *const with_value[] = {"-o",
                                          "--out-format",
                                          "--frames",
                                          "--repeat",
+                                         "--threads",
                                          "--progress-after",
                                          "--raw-size",
                                          "--raw-format",
@@ -389,10 +392,11 @@ static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
     } else if (!strcmp(a, "--frames")) {
         if (parse_long(v, 1, 1000000000L, &o->max_frames))
             return bad(a, v);
-    } else if (!strcmp(a, "--repeat")) {
-        if (parse_long(v, 1, 1000, &n))
+    } else if (!strcmp(a, "--repeat") || !strcmp(a, "--threads")) {
+        const int thr = a[2] == 't'; /* --threads 0: the online CPUs (port/threads) */
+        if (parse_long(v, thr ? 0 : 1, thr ? BLOOM_MT_MAX_THREADS : 1000, &n))
             return bad(a, v);
-        o->repeat = (int)n;
+        *(thr ? &o->threads : &o->repeat) = thr && n == 0 ? bloom_mt_cpus() : (int)n;
     } else if (!strcmp(a, "--progress-after")) {
         char *end;
         o->progress_after = strtod(v, &end);
@@ -514,6 +518,7 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
     o->fps_num = 25;
     o->fps_den = 1;
     o->repeat = 1;
+    o->threads = bloom_mt_cpus();
     o->progress_after = 1.0;
     o->inputs = calloc((size_t)argc, sizeof *o->inputs);
     if (!o->inputs) {
