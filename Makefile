@@ -4,7 +4,8 @@
 #   make demo       a real image through the engine: before/after + error summary
 #   make freestanding  Cortex-M4 build of the core; proves it needs only memcpy/memset
 #   make tables     regenerate src/pixel/bloom_tables.c
-#   make memtable   the workspace/latency table of README
+#   make memtable   the workspace/latency table of README (and workspace against strip width)
+#   make tile-table workspace and callgrind overhead against strip width: sim/docs/tiles.md
 #   make deps       install the Debian packages the targets use
 
 CC ?= cc
@@ -39,7 +40,7 @@ TESTS := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 # WHY" names a skip, and under CI=true fails).
 CHECKS := test-runner check-layout check-format freestanding clang-build check-tables test-small test-precision test-clang-san
 
-.PHONY: all test test-runner check-layout check-format format demo freestanding tables check-tables deps clean clang-build memtable test-small test-precision test-clang-san
+.PHONY: all test test-runner check-layout check-format format demo freestanding tables check-tables deps clean clang-build memtable tile-table test-small test-precision test-clang-san
 .DELETE_ON_ERROR:
 
 all: $(B)/libbloom.a $(B)/bloom_demo $(B)/bloom_info
@@ -52,10 +53,20 @@ $(B)/libbloom.a: $(patsubst src/%.c,$(B)/obj/%.o,$(CORE_SRC))
 	rm -f $@ && ar rcs $@ $^
 $(B)/bloom_demo: sim/bloom_demo.c $(SIM_SRC) $(SIM_HDR) $(B)/libbloom.a
 	$(CC) $(WARN) $(CFLAGS) $(HOST_CPPFLAGS) sim/bloom_demo.c $(SIM_SRC) $(B)/libbloom.a -lm -o $@
-$(B)/bloom_info: sim/bloom_info.c $(B)/libbloom.a
+$(B)/bloom_info: sim/bloom_info.c sim/bench/tile_strips.h $(B)/libbloom.a
 	$(CC) $(WARN) $(CFLAGS) $(CPPFLAGS_CORE) $< $(B)/libbloom.a -o $@
 memtable: $(B)/bloom_info
 	$(B)/bloom_info
+# make tile-table (issue 14, item 2): workspace and callgrind instructions of
+# a tiling in strips against the untiled frame, sim/docs/tiles.md
+# (sim/bench/tile_icount.sh; installs valgrind if missing). Not a test.
+$(B)/tiles/bloom_tile_icount: sim/bench/tile_icount.c sim/bench/tile_strips.h sim/bench/scene.c sim/imgio.c \
+    $(B)/libbloom.a
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) $(HOST_CPPFLAGS) -Isim/bench $(filter %.c,$^) $(B)/libbloom.a -lm -o $@
+tile-table: $(B)/tiles/bloom_tile_icount $(B)/bloom_info
+	@sh sim/bench/deps.sh icount
+	TILE_CFLAGS='$(CFLAGS)' sh sim/bench/tile_icount.sh $(B)/tiles/bloom_tile_icount $(B)/bloom_info sim/docs/tiles.md
 $(B)/gen_tables: sim/gen_tables.c | $(B)
 	$(CC) $(WARN) -O2 $< -lm -o $@
 

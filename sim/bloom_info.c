@@ -2,11 +2,61 @@
  * the Markdown table README shows (`make memtable`). Every figure comes from
  * bloom_query(), the sizing function itself. */
 #include <stdio.h>
+#include <string.h>
 
+#include "bench/tile_strips.h"
 #include "bloom.h"
 
-int main(void)
+/* Issue 14, item 2: a strip engine's workspace against the strip width and
+ * the level count, 1920x1080 RGB888, default preset, source rows by
+ * pointer. The workspace follows the strip's source rectangle (the strip
+ * and its halo), so the halo sets a floor that the width cannot go under;
+ * the columns read say how much of that is halo. The instruction overhead
+ * beside these is `make tile-table` (callgrind, sim/docs/tiles.md). */
+static int strip_table(void)
 {
+    enum { W = 1920, H = 1080 };
+    printf("| levels | strip (output columns) | strips | workspace of one strip engine (bytes) | "
+           "of the untiled | source columns per strip (widest) | source pixels read / frame |\n"
+           "|---|---|---|---|---|---|---|\n");
+    for (int li = 0; li < TILE_NLEVELS; li++) {
+        bloom_config_t c;
+        tile_plan_t whole;
+        bloom_config_default(&c, W, H);
+        c.levels = tile_levels[li];
+        if (tile_plan(&c, 0, &whole) != BLOOM_OK)
+            return 1;
+        for (int i = 0; i < TILE_NWIDTHS; i++) {
+            const int sw = tile_strip_widths[i];
+            tile_plan_t p;
+            if (tile_plan(&c, sw, &p) != BLOOM_OK)
+                return 1;
+            char what[32];
+            snprintf(what, sizeof what, sw ? "%d" : "untiled (%d)", sw ? sw : W);
+            printf("| %d | %s | %d | %zu | %.2f | %d | %.2f |\n", c.levels, what, p.strips, p.ws_max,
+                   (double)p.ws_max / (double)whole.ws_max, p.src_w_max, (double)p.src_px / (double)(W * H));
+        }
+    }
+    /* the issue's target, stated with what this build measures */
+    bloom_config_t c;
+    tile_plan_t p;
+    bloom_config_default(&c, W, H);
+    if (tile_plan(&c, 256, &p) != BLOOM_OK)
+        return 1;
+    printf("\nIssue 14 target: 1920x1080 RGB888, 5 levels, strips of 256 output columns, workspace <= "
+           "65536 bytes: measured %zu bytes, %s.\n",
+           p.ws_max, p.ws_max <= 65536 ? "met" : "not met");
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && !strcmp(argv[1], "--strips"))
+        return strip_table();
+    if (argc != 1) {
+        fprintf(stderr, "usage: bloom_info [--strips]\n");
+        return 2;
+    }
     static const struct {
         int w, h, levels;
         bloom_format_t fmt;
@@ -62,5 +112,6 @@ int main(void)
                big.levels, big.workspace_bytes, 3.0 * 1920 * 1080 / (double)big.workspace_bytes,
                big.latency_rows, small.workspace_bytes, small.latency_rows);
     }
-    return 0;
+    printf("\nWorkspace against strip width (tiles; instructions: make tile-table, sim/docs/tiles.md):\n\n");
+    return strip_table();
 }

@@ -1,6 +1,7 @@
 # make report (issue 3, sections 2-4): error against run time over the
 # precision knob (BLOOM_LIN_BITS F = 16..20) and the level count, the
-# stability matrix, the skip savings. Writes sim/docs/report.md,
+# stability matrix, the skip savings; memory and run time against tile
+# width (issue 14). Writes sim/docs/report.md,
 # sim/docs/report_*.png and sim/docs/report_*.csv (sim/report/run.sh).
 # Not a test: nothing here joins CHECKS, nothing asserts a time.
 # Installs gnuplot-nox (and valgrind, through sim/bench/deps.sh) if missing.
@@ -15,10 +16,11 @@ REPORT_CPP := $(HOST_CPPFLAGS) -Isim/bench -Isim/report
 # main per F (the mains print F).
 REPORT_SHARED := sim/report/common.c sim/report/inputs.c sim/bench/scene.c $(SIM_SRC)
 REPORT_SHARED_OBJ := $(addprefix $(REPORT_DIR)/obj/,$(notdir $(REPORT_SHARED:.c=.o)))
-REPORT_HDR := sim/report/report.h sim/report/stab.h sim/bench/scene.h sim/bench/variants.h \
+REPORT_HDR := sim/report/report.h sim/report/stab.h sim/bench/scene.h sim/bench/variants.h sim/bench/tile_strips.h \
               $(SIM_HDR) $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 REPORT_BINS := $(foreach f,$(REPORT_F),$(REPORT_DIR)/f$(f)/report_sweep $(REPORT_DIR)/f$(f)/report_icount) \
-               $(REPORT_DIR)/f16/report_stab $(REPORT_DIR)/f20/report_stab $(REPORT_DIR)/f20/report_skip
+               $(REPORT_DIR)/f16/report_stab $(REPORT_DIR)/f20/report_stab $(REPORT_DIR)/f20/report_skip \
+               $(REPORT_DIR)/f20/report_tiles
 
 $(REPORT_DIR)/obj/%.o: sim/report/%.c $(REPORT_HDR)
 	@mkdir -p $(@D)
@@ -27,6 +29,10 @@ $(REPORT_DIR)/obj/%.o: sim/bench/%.c $(REPORT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(REPORT_CFLAGS) $(REPORT_CPP) -c $< -o $@
 $(REPORT_DIR)/obj/%.o: sim/%.c $(REPORT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(REPORT_CFLAGS) $(REPORT_CPP) -c $< -o $@
+# the models moved to sim/model/: without this a fresh build dir has no rule
+$(REPORT_DIR)/obj/%.o: sim/model/%.c $(REPORT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(REPORT_CFLAGS) $(REPORT_CPP) -c $< -o $@
 
@@ -55,6 +61,7 @@ $(foreach f,$(REPORT_F),$(eval $(call REPORT_BIN,$(f),sweep,sim/report/sweep.c))
 $(foreach f,$(REPORT_F),$(eval $(call REPORT_BIN,$(f),icount,sim/report/icount.c)))
 $(foreach f,16 20,$(eval $(call REPORT_BIN,$(f),stab,sim/report/stab.c sim/report/stab_cases.c)))
 $(eval $(call REPORT_BIN,20,skip,sim/report/skip.c))
+$(eval $(call REPORT_BIN,20,tiles,sim/report/tiles.c))
 
 .PHONY: report report-deps report-build report-clang
 

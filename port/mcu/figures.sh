@@ -34,6 +34,15 @@ exact=$(sed -n 's/^workspace 320x240 RGB565 levels 5: \([0-9]*\) bytes exact.*/\
 $MAKE --no-print-directory mcu-exact MCU_WS_BYTES="$exact" >>"$MCU_OUT/build.log" 2>&1 ||
     fail "exact-workspace build failed (see $MCU_OUT/build.log)"
 for cpu in m4 m7; do run_ok "$cpu" minx 5; done
+# The tiles case: the firmware's strips against the host's untiled frame.
+ht=$MCU_OUT/host/fw_host_tiles
+"$ht" >"$ht.txt" || fail "host tiles build failed"
+grep '^frame' "$ht.txt" >"$ht.frame"
+for cpu in m4 m7; do
+    mcu_run_elf "$cpu" "$MCU_OUT/$cpu-rgb565/fw_tiles.elf" || fail "$cpu tiles case exited $?"
+    grep '^frame' "$MCU_OUT/$cpu-rgb565/fw_tiles.txt" | cmp -s - "$ht.frame" ||
+        fail "$cpu tiles case: checksum differs from the host's untiled frame"
+done
 
 # ---- helpers over one build ($1 = cpu-build, levels 5) --------------------
 split() { awk -f "$(dirname "$0")/mapsplit.awk" "$MCU_OUT/$1/fw_l5.map"; }
@@ -231,5 +240,49 @@ others). The one-channel luminance bloom plane is the \`arm\` preset
 (sim/docs/presets/arm.md): its rings are a third of the default's per row;
 its host workspace is in README's preset table.
 EOF
+tt() { sed -n "s/^tiles: $2 \([0-9]*\).*/\1/p" "$MCU_OUT/$1-rgb565/fw_tiles.txt" | head -n 1; }
+tl() { sed -n "s/^tiles: levels $2 $3: \([0-9]*\) bytes/\1/p" "$MCU_OUT/$1-rgb565/fw_tiles.txt"; }
+tlevels=$(sed -n 's/^frame 640x480 RGB565 levels \([0-9]*\):.*/\1/p' "$MCU_OUT/m4-rgb565/fw_tiles.txt" | head -n 1)
+cat <<EOF
+
+## Tiles: a frame whose untiled workspace does not fit the SRAM (issue 14)
+
+\`fw_tiles.c\` on the RGB565-only build (\`BLOOM_SMALL\` builds refuse tiles):
+a 640×480 RGB565 frame (the 320×240 scene repeated 2×2 and shifted so that
+lamps fall on strip boundaries and edges), source and destination 600 KB
+each in \`.framebuffer\` (the boards' large RAM), rendered in vertical
+strips at $tlevels levels, every strip engine carved in turn out of one static
+workspace of 32 KB (\`BLOOM_WORKSPACE_DEFINE(tile_ws, 32768)\`). The case
+stands for a part with 64 KB of on-chip SRAM: the link passes
+\`--defsym=FW_SRAM_LIMIT=65536\` and \`mps2.ld\` asserts that the stack,
+\`.data\` and \`.bss\` fit it. The firmware takes the widest strip (of 320,
+256, 160, 128, 64, 32, 16 columns) whose every strip fits the workspace. The
+host renders the same frame untiled (and its own strips, which must give the
+same bytes); \`make test-firmware\` counts one case per board.
+
+| CPU | untiled workspace | strip | strips | largest strip workspace | declared | stack + .data + .bss (SRAM 65536) | \`bloom_process\` stack | output = host untiled |
+|---|---|---|---|---|---|---|---|---|
+EOF
+for cpu in m4 m7; do
+    v=$cpu-rgb565
+    onchip=$("$ARM_SIZE" -A "$MCU_OUT/$v/fw_tiles.elf" | awk '$1 == ".stack" || $1 == ".data" || $1 == ".bss" { n += $2 } END { print n + 0 }')
+    echo "| $(cpuname $cpu) | $(tt $cpu "untiled workspace") | $(tt $cpu "strip width") | $(tt $cpu strips) | $(tt $cpu "strip workspace") | $(tt $cpu "workspace declared") | $onchip | $(sed -n 's/^stack bloom_process tiles: \([0-9]*\).*/\1/p' "$MCU_OUT/$v/fw_tiles.txt") | \`$(sed -n 's/^frame.*output fnv1a \(0x[0-9a-f]*\).*/\1/p' "$MCU_OUT/$v/fw_tiles.txt")\` |"
+done
+cat <<EOF
+
+Why $tlevels levels and not the default 5: a strip engine's workspace follows
+its source rectangle, the strip and its halo, and the halo grows as 2^L
+(\`halo_of\`, sim/docs/tiles.md). At 5 levels no strip width gets under
+64 KB, so 32 KB takes 4 levels (strips of 32 columns or fewer) or 3 (160 or
+fewer). Largest strip workspace on the Cortex-M4, bytes:
+
+| levels | untiled | 320 | 256 | 160 | 128 | 64 | 32 | 16 |
+|---|---|---|---|---|---|---|---|---|
+EOF
+for lv in 3 4 5; do
+    printf '| %s | %s |' "$lv" "$(tl m4 "$lv" untiled)"
+    for w in 320 256 160 128 64 32 16; do printf ' %s |' "$(tl m4 "$lv" "strip $w")"; done
+    echo
+done
 } >"$dest.tmp" && mv "$dest.tmp" "$dest" || fail "could not write $dest"
 echo "figures: wrote $dest"

@@ -25,6 +25,8 @@ typedef struct {
     bloom_status_t (*init)(bloom_t **b, void *ws, size_t ws_bytes, const bloom_config_t *cfg,
                            uint32_t *stack);
     bloom_status_t (*process)(bloom_t *b, uint8_t *fb, uint32_t *stack);
+    /* src to dst, both stride bytes a row (a tile is never in place) */
+    bloom_status_t (*run)(bloom_t *b, const uint8_t *src, uint8_t *dst, ptrdiff_t stride, uint32_t *stack);
 } fw_platform_t;
 
 /* Pixel (x, y) of the test frame, RGB565: a dim gradient with low noise and
@@ -37,6 +39,12 @@ uint32_t fw_fnv1a(const uint8_t *p, size_t n);
 /* Generate, run the default preset at FW_LEVELS in place, report. Returns 0
  * when every engine call succeeded. */
 int fw_app(const fw_platform_t *pf);
+
+/* The tiles case (fw_tiles.c, issue 14): a 640x480 RGB565 frame whose
+ * untiled workspace exceeds a 64 KB on-chip SRAM, rendered in strips with a
+ * static workspace of 32 KB on the target, untiled on the host. Both print
+ * the same "frame ..." lines. Returns 0 on success. */
+int fw_tiles_app(const fw_platform_t *pf);
 
 /* A line under construction, for targets without printf. */
 typedef struct {

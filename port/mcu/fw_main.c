@@ -44,9 +44,25 @@ __attribute__((noinline)) static bloom_status_t fw_process(bloom_t *b, uint8_t *
     return st;
 }
 
+__attribute__((noinline)) static bloom_status_t fw_run(bloom_t *b, const uint8_t *src, uint8_t *dst,
+                                                       ptrdiff_t stride, uint32_t *stack)
+{
+    const uintptr_t sp = fw_sp();
+    fw_stack_paint(sp);
+    const bloom_status_t st = bloom_process(b, src, stride, dst, stride);
+    *stack = used_since(sp);
+    return st;
+}
+
+/* FW_MAIN_APP: which application this image runs (mcu.mk builds the tiles
+ * case with fw_tiles_app). */
+#ifndef FW_MAIN_APP
+#define FW_MAIN_APP fw_app
+#endif
+
 int main(void)
 {
-    static const fw_platform_t pf = {fw_puts, fw_init, fw_process};
+    static const fw_platform_t pf = {fw_puts, fw_init, fw_process, fw_run};
     fw_line_t l = {.n = 0};
     const uint32_t cpuid = *(const volatile uint32_t *)0xE000ED00u; /* SCB->CPUID */
     const uint32_t part = (cpuid >> 4) & 0xfffu;
@@ -57,7 +73,7 @@ int main(void)
     fw_str(&l, ")");
     fw_puts(l.s);
 
-    int rc = fw_app(&pf);
+    int rc = FW_MAIN_APP(&pf);
 
     const uintptr_t low = fw_stack_low(fw_sp());
     if (low < fw_lowest)

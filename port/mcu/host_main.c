@@ -23,8 +23,19 @@ static bloom_status_t host_process(bloom_t *b, uint8_t *fb, uint32_t *stack)
     return bloom_process(b, fb, FW_STRIDE, fb, FW_STRIDE);
 }
 
+static bloom_status_t host_run(bloom_t *b, const uint8_t *src, uint8_t *dst, ptrdiff_t stride,
+                               uint32_t *stack)
+{
+    *stack = 0;
+    return bloom_process(b, src, stride, dst, stride);
+}
+
+#ifndef FW_MAIN_APP
+#define FW_MAIN_APP fw_app
+#endif
+
 int main(void)
 {
-    static const fw_platform_t pf = {host_puts, host_init, host_process};
-    return fw_app(&pf);
+    static const fw_platform_t pf = {host_puts, host_init, host_process, host_run};
+    return FW_MAIN_APP(&pf);
 }

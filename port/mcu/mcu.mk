@@ -9,7 +9,8 @@
 # Firmware builds: $(B)/mcu/<cpu>-<build>/fw_l<levels>.elf with cpu m4|m7,
 # build full (every pixel format) | rgb565 (RGB565 only) | min (RGB565 only,
 # BLOOM_SMALL) | minnc (min without ring checks), levels 5 (the default
-# preset) | 7 (the deepest pyramid 320x240 allows).
+# preset) | 7 (the deepest pyramid 320x240 allows); and the tiles case
+# $(B)/mcu/<cpu>-rgb565/fw_tiles.elf (640x480 in strips, fw_tiles.c).
 
 MCU := port/mcu
 MCU_B := $(B)/mcu
@@ -85,6 +86,27 @@ mcu-exact:
 endif
 .PHONY: mcu-exact
 
+# The tiles case (fw_tiles.c, issue 14): 640x480 RGB565 in strips with a
+# 32 KB workspace, on the RGB565-only build (BLOOM_SMALL builds refuse
+# tiles). FW_SRAM_LIMIT makes mps2.ld check that stack, .data and .bss
+# (the workspace) fit a 64 KB on-chip SRAM; the frames are in .framebuffer.
+MCU_TILES_SRAM := 65536
+define MCU_TILES_RULES
+$(MCU_B)/$(1)-rgb565/fw/fw_main_tiles.o: $(MCU)/fw_main.c $(MCU_HDR) $(MCU_CORE_HDR)
+	@mkdir -p $$(@D)
+	$(ARM_CC) $(WARN) $(MCU_CFLAGS) $(MCU_CPU_$(1)) $(MCU_DEF_rgb565) -DFW_TARGET -DFW_MAIN_APP=fw_tiles_app \
+	  $(CPPFLAGS_CORE) -I$(MCU) -c $$< -o $$@
+$(MCU_B)/$(1)-rgb565/fw_tiles.elf: $(patsubst src/%.c,$(MCU_B)/$(1)-rgb565/core/%.o,$(CORE_SRC)) \
+    $(patsubst %,$(MCU_B)/$(1)-rgb565/fw/%.o,fw_main_tiles startup semihost fw_app_l5 fw_tiles) $(MCU)/mps2.ld
+	$(ARM_CC) $(MCU_CFLAGS) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -Wl,--defsym=FW_SRAM_LIMIT=$(MCU_TILES_SRAM) \
+	  -Wl,-Map=$$(@:.elf=.map) $$(filter %.o,$$^) -lc -lgcc -o $$@
+endef
+$(foreach c,$(MCU_CPUS),$(eval $(call MCU_TILES_RULES,$(c))))
+$(MCU_B)/host/fw_host_tiles: $(MCU)/fw_tiles.c $(MCU)/fw_app.c $(MCU)/host_main.c $(MCU)/fw_app.h $(CORE_SRC) $(MCU_CORE_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) $(CPPFLAGS_CORE) -I$(MCU) -DFW_MAIN_APP=fw_tiles_app $(MCU)/fw_tiles.c $(MCU)/fw_app.c \
+	  $(MCU)/host_main.c $(CORE_SRC) -o $@
+
 # The same fw_app.c and core, host compiler: the reference checksums.
 $(MCU_B)/host/fw_host_l%: $(MCU)/fw_app.c $(MCU)/host_main.c $(MCU)/fw_app.h $(CORE_SRC) $(MCU_CORE_HDR)
 	@mkdir -p $(@D)
@@ -93,7 +115,8 @@ $(MCU_B)/host/fw_host_l%: $(MCU)/fw_app.c $(MCU)/host_main.c $(MCU)/fw_app.h $(C
 
 MCU_ELFS := $(foreach c,$(MCU_CPUS),$(foreach b,$(MCU_BUILDS),$(foreach l,$(MCU_LEVELS),\
   $(MCU_B)/$(c)-$(b)/fw_l$(l).elf)))
-mcu-build: $(MCU_ELFS) $(patsubst %,$(MCU_B)/host/fw_host_l%,$(MCU_LEVELS))
+MCU_TILES := $(patsubst %,$(MCU_B)/%-rgb565/fw_tiles.elf,$(MCU_CPUS)) $(MCU_B)/host/fw_host_tiles
+mcu-build: $(MCU_ELFS) $(patsubst %,$(MCU_B)/host/fw_host_l%,$(MCU_LEVELS)) $(MCU_TILES)
 
 MCU_ENV = B='$(B)' MAKE='$(MAKE)' ARM_CC='$(ARM_CC)' ARM_SIZE='$(ARM_SIZE)' \
           QEMU_ARM='$(QEMU_ARM)' MCU_BUILDS='$(MCU_BUILDS)' MCU_LEVELS='$(MCU_LEVELS)'

@@ -63,7 +63,12 @@ mcu_build() {
 # returns qemu's exit status (the firmware's). Semihosting output goes to
 # stderr; the serial port and the monitor are off, stdin is closed.
 mcu_run() {
-    elf=$MCU_OUT/$1-$2/fw_l$3.elf
+    mcu_run_elf "$1" "$MCU_OUT/$1-$2/fw_l$3.elf"
+}
+
+# The same for any image: cpu elf -> ${elf%.elf}.txt, qemu's exit status.
+mcu_run_elf() {
+    elf=$2
     timeout 120 "$QEMU_ARM" -machine "$(mcu_board "$1")" -display none -monitor none \
         -serial null -semihosting-config enable=on,target=native -kernel "$elf" \
         </dev/null >"${elf%.elf}.txt" 2>&1

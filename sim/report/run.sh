@@ -3,10 +3,12 @@
 # DOCS/report.md, DOCS/report_*.png and DOCS/report_*.csv.
 #   sh sim/report/run.sh BUILD DOCS
 # BUILD holds f16..f20/{report_sweep,report_icount}, f16/report_stab,
-# f20/report_stab and f20/report_skip (sim/report.mk builds them).
+# f20/report_stab, f20/report_skip and f20/report_tiles (sim/report.mk
+# builds them).
 # Phase 1, nothing timed, both cores: float-model references and the sweep's
 # instruction counts | the stability matrix and the skip instruction counts.
-# Phase 2, timed, one process at a time: the sweep per F, the skip timings.
+# Phase 2, timed, one process at a time: the sweep per F, the skip timings,
+# the tilings (section 4).
 # Environment knobs: REPORT_SIZES, REPORT_RUNS, REPORT_RUNS_BIG, REPORT_DATA,
 # REPORT_CC, REPORT_FLAGS (for the text only).
 set -e
@@ -62,6 +64,12 @@ job_b() {
         done
     done > "$out/skip_icount.tsv"
     cg b "$bld/f20/report_icount" "$data" scene 640 480 5 1.0 > "$out/repeat.txt"
+    # section 4: every tiling of sim/bench/tile_strips.h, one frame each
+    for l in 3 5 7; do
+        for s in 0 64 128 256 480 512 960; do
+            echo "$l $s $(cg b "$bld/f20/report_tiles" --once $l $s --data "$data")"
+        done
+    done > "$out/tiles_icount.tsv"
 }
 
 echo "report: phase 1 (untimed, 2 jobs): float-model references, stability matrix, callgrind counts"
@@ -80,7 +88,7 @@ fi
 t1=$(date +%s)
 load1=$(cut -d' ' -f1-3 /proc/loadavg)
 
-echo "report: phase 2 (timed, one process at a time): sweep F = 16..20 ($sizes), skip paths"
+echo "report: phase 2 (timed, one process at a time): sweep F = 16..20 ($sizes), skip paths, tiles"
 # F rotates innermost, so that the five builds see the same stretch of
 # machine load for each size and input (they are separate processes).
 i=0
@@ -95,6 +103,8 @@ for s in $(echo "$sizes" | tr , ' '); do
     echo "report:   $s done ($(($(date +%s) - t1)) s)"
 done
 "$bld/f20/report_skip" --out "$out" --data "$data" --icount "$out/skip_icount.tsv" > "$out/skip.log"
+"$bld/f20/report_tiles" --out "$out" --data "$data" --icount "$out/tiles_icount.tsv" --runs "$runs_big" \
+    > "$out/tiles.log"
 t2=$(date +%s)
 load2=$(cut -d' ' -f1-3 /proc/loadavg)
 
@@ -111,6 +121,7 @@ for c in levels intensity; do
 done
 cp "$out/stability.csv" "$docs/report_stability.csv"
 cp "$out/skip.csv" "$docs/report_skip.csv"
+cp "$out/tiles.csv" "$docs/report_tiles.csv"
 {
     echo "kind,frame,scene,F,levels,mode,threshold,instructions,output_fnv1a"
     awk '{ printf "sweep,640x480,scene,%s,%s,skip,0.6,%s,%s\n", $1, $2, $3, $4 }' "$out/sweep_icount.tsv"
