@@ -222,8 +222,11 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
  * (column 0: the engine reads columns src_x .. src_x + src_w - 1, so every
  * strip engine of a frame is pushed the same rows); pull writes the tile's
  * columns of the frame row dst_row for output rows tile_y ..
- * tile_y + tile_h - 1; bloom_rows_in/out count those rows. A tile is never
- * written in place: its halo reads its neighbours' source (BLOOM_E_ALIAS). */
+ * tile_y + tile_h - 1 (output row tile_y + bloom_rows_out()); bloom_rows_in
+ * and bloom_rows_out count those rows, and latency_rows counts source
+ * rectangle rows. A tiling is not written in place: a tile's halo reads its
+ * neighbours' source; the frame and band calls, and the row calls without
+ * BLOOM_FLAG_COPY_SOURCE, refuse a destination over the source (BLOOM_E_ALIAS). */
 bloom_status_t bloom_begin(bloom_t *b);
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row);
 /* The same with the aux plane's row (presets that read one). */
@@ -257,7 +260,9 @@ const char *bloom_status_str(bloom_status_t st);
 
 /* Static workspace: an upper bound of bloom_workspace_size() usable in a
  * constant expression (tests check it against the exact size over a grid of
- * sizes and depths). src_bpp is the input bytes per pixel, copy 1 with
+ * sizes and depths) for the default preset without a tile (a tile adds an
+ * output row; the other presets need their own bytes: ask
+ * bloom_workspace_size). src_bpp is the input bytes per pixel, copy 1 with
  * BLOOM_FLAG_COPY_SOURCE. Rows held per level (sim/docs/streaming.md): 12 at
  * level 1, 8 at level 2, at most 2^(L-k+2) at level k >= 3, of w/2^k + 1 pixels of
  * 12 bytes, plus one zero row of w/2 pixels; that sums to below

@@ -104,6 +104,17 @@ static void test_alias(void)
             CHECK(bloom_process(b, buf, W * 3, buf, W * 3 + 3) == BLOOM_E_ALIAS);
             CHECK(bloom_process(b, buf + W * 3, W * 3, buf, W * 3) == BLOOM_E_ALIAS);
             CHECK(memcmp(buf, src, W * H * 3) == 0); /* refused before anything was written */
+            /* band calls of one row each with the destination a row below the
+             * source: the rows written trail the source rows (the latency) and
+             * the ring holds earlier bands' rows: refused, not written wrong */
+            if (!copy) {
+                CHECK(bloom_begin(b) == BLOOM_OK);
+                int st = BLOOM_OK;
+                for (int y = 0; y < H && st == BLOOM_OK; y++)
+                    st = bloom_run_rows(b, buf, W * 3, 1, buf + W * 3, W * 3);
+                CHECK(st == BLOOM_E_ALIAS);
+                CHECK(memcmp(buf, src, W * H * 3) == 0);
+            }
             /* row mode: a destination over a source row still held */
             if (!copy) {
                 CHECK(bloom_begin(b) == BLOOM_OK);

@@ -152,9 +152,9 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
 #if !BLOOM_SMALL
     if (st == BLOOM_OK && cfg->tile_w > 0) {
         /* the graph over the whole frame says how far its pixels reach; the
-         * window is the tile with that halo (and one deepest-level pixel
-         * more), aligned to the deepest level so its levels halve as the
-         * frame's, and the graph is built again over it */
+         * window is the tile with that halo, out to multiples of the
+         * deepest level's pixel so its levels halve as the frame's, and
+         * the graph is built again over it */
         const int align = 1 << g->L, m = halo_of(g);
         int x0, x1, y0, y1;
         window_side(cfg->tile_x, cfg->tile_w, cfg->width, m, align, &x0, &x1);

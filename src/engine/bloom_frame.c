@@ -137,13 +137,17 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 #else
     uintptr_t slo, shi, dlo, dhi;
     const size_t w = (size_t)b->cfg.width;
-    /* rows r0 .. r1 - 1 of the frames (with a tile, conservatively: the
-     * source rectangle's rows and every row of the tile) */
-    span(s, ss, bg_win_y(b) + r0, bg_win_y(b) + r1, &slo, &shi);
+    /* The source rows this call pushes and the ones earlier calls pushed
+     * that the ring may still hold (pointer mode), against the destination
+     * rows it may write: from the next output row on (they trail the
+     * source by the latency), up to the last row pushed. With a tile,
+     * conservatively, every row of the tile. */
+    const int held = b->src_copy ? r0 : imax(r0 - b->src_cap, 0);
+    span(s, ss, bg_win_y(b) + held, bg_win_y(b) + r1, &slo, &shi);
     if (bg_tiled(b))
         span(d, ds, b->cfg.tile_y, b->cfg.tile_y + b->cfg.tile_h, &dlo, &dhi);
     else
-        span(d, ds, r0, r1, &dlo, &dhi);
+        span(d, ds, imin(bloom_rows_out(b), r1 - 1), r1, &dlo, &dhi);
     return ranges_meet(slo, shi - slo + w * (size_t)bloom_format_bpp(b->cfg.in_fmt), dlo,
                        dhi - dlo + w * (size_t)bloom_format_bpp(b->cfg.out_fmt));
 #endif

@@ -125,6 +125,8 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
     }
     if (all_zero)
         return ROW_SKIPPED;
+    if (BLOOM_CHECK_RINGS && g->failed)
+        return ROW_MADE; /* an input row was overwritten: nothing is made of it */
     return !n->fn(g, n, r, in, dst) && BLOOM_USE_SKIP && g->skip ? ROW_ZEROS : ROW_MADE;
 }
 
@@ -255,6 +257,8 @@ bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
     } else { /* the tile's columns of the window's row */
         const size_t bpp = (size_t)bloom_bpp(g->cfg.out_fmt);
         run_row(g, o, y, g->out_row);
+        if (g->failed)
+            return BLOOM_E_INTERNAL;
         memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp, g->out_row + (size_t)g->tile_x0 * bpp,
                (size_t)(g->tile_x1 - g->tile_x0) * bpp);
     }
