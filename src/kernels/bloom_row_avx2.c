@@ -121,12 +121,9 @@ uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, in
 static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
 {
     const __m256i e0 = LD8(e), e4 = LD8(e + 4), o0 = LD8(o), o4 = LD8(o + 4);
-#define PERM(x, a, b, c, d, e_, f, g, h)                                                                     \
-    _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
     v[0] = _mm256_blend_epi32(PERM(e0, 0, 1, 2, 0, 0, 0, 3, 4), PERM(o0, 0, 0, 0, 0, 1, 2, 0, 0), 0x38);
     v[1] = _mm256_blend_epi32(PERM(e4, 1, 0, 0, 0, 2, 3, 4, 0), PERM(o0, 0, 3, 4, 5, 0, 0, 0, 6), 0x8E);
     v[2] = _mm256_blend_epi32(PERM(e4, 0, 0, 5, 6, 7, 0, 0, 0), PERM(o4, 3, 4, 0, 0, 0, 5, 6, 7), 0xE3);
-#undef PERM
 }
 
 /* bloom_row_il_add_c in groups of 8 pixels. */
@@ -244,13 +241,10 @@ static inline void il32x(const uint32_t *e, const uint32_t *o, __m256i v[4])
 {
     const __m256i e0 = LD8(e), e3 = LD8(e + 3), e4 = LD8(e + 4), o0 = LD8(o), o3 = LD8(o + 3),
                   o4 = LD8(o + 4);
-#define PERM(x, a, b, c, d, e_, f, g, h)                                                                     \
-    _mm256_permutevar8x32_epi32((x), _mm256_setr_epi32(a, b, c, d, e_, f, g, h))
     v[0] = _mm256_blend_epi32(PERM(e0, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o0, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
     v[1] = _mm256_blend_epi32(PERM(e3, 2, 1, 0, 0, 0, 0, 0, 0), PERM(o3, 0, 0, 0, 0, 2, 1, 0, 0), 0xF0);
     v[2] = _mm256_blend_epi32(PERM(e4, 4, 3, 2, 2, 0, 0, 0, 0), PERM(o4, 0, 0, 0, 0, 4, 3, 2, 2), 0xF0);
     v[3] = _mm256_blend_epi32(PERM(e4, 7, 6, 5, 5, 0, 0, 0, 0), PERM(o4, 0, 0, 0, 0, 7, 6, 5, 5), 0xF0);
-#undef PERM
 }
 
 /* The fused composite and encode in groups of 8 pixels: the bloom

@@ -8,20 +8,8 @@
 #include "bloom_pixel.h"
 
 #if BLOOM_USE_COD && defined(BLOOM_SIMD_AVX2)
-#include <immintrin.h>
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-
-#define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
-#define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
-#define SET8(a, b, c, d, e, f, g, h) _mm256_setr_epi32(a, b, c, d, e, f, g, h)
-#define GATHER(base, idx) _mm256_i32gather_epi32((const int *)(const void *)(base), (idx), 4)
-#define PERM(x, a, b, c, d, e, f, g, h) _mm256_permutevar8x32_epi32((x), SET8(a, b, c, d, e, f, g, h))
+#include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
 static inline uint32_t or_lanes8(__m256i v)
 {
@@ -238,11 +226,7 @@ void cod_enc_avx2(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_t *d
     bloom_encode_row(fmt, linear, v, dst, n);
 }
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "bloom_avx2_end.h"
 
 #else
 typedef int bloom_preset_cod_avx2_up_unused_t;
