@@ -8,15 +8,25 @@
  * BT.601 limited range), pushed to the engine (bloom_push_row, which copies
  * the rows it reads back: BLOOM_FLAG_COPY_SOURCE), and each output row
  * pulled (bloom_pull_row) is converted back to YUY2 by the same file's
- * encoder: two RGB888 rows of the element's own (run_yuy2). In place (transform_frame_ip) when the in-place property
- * allows it and the formats and strides match, which GstBaseTransform then
- * does on the input buffer when it is writable (a copy of it otherwise);
- * out of place (transform_frame) into a new buffer otherwise.
+ * encoder: two RGB888 rows of the element's own (run_yuy2). In place
+ * (transform_frame_ip) when the in-place property allows it and the
+ * formats and strides match, which GstBaseTransform then does on the input
+ * buffer when it is writable (a copy of it otherwise); out of place
+ * (transform_frame) into a new buffer otherwise.
+ *
+ * n-threads above one (RGB, BGRx, RGB16): the frame is cut into tiles, each
+ * rendered by its own engine on a pool of POSIX threads (port/threads,
+ * bloom_mt_process, bit for bit the one engine's frame), all carved from
+ * ws. A tile's halo reads its neighbours' source, so the pool never works
+ * in place: while it runs the element is out of place whatever in-place
+ * says, switched before the buffer that first runs on it (and back when
+ * n-threads returns to one). YUY2 stays on the one engine's rows.
  *
  * Properties only touch the settings, under the object lock; the streaming
- * thread re-configures the engine from them before the next frame (still
- * under the lock) and allocates only when the workspace must grow: no
- * allocation per frame. A configuration the engine refuses is reported on
+ * thread re-configures the engine (or the pool) from them before the next
+ * frame (still under the lock) and allocates only when the workspace must
+ * grow: no allocation per frame, the pool's threads started at
+ * configuration only. A configuration the engine refuses is reported on
  * the bus (a warning while playing, an error at negotiation) with
  * bloom_status_str's text, and the previous one is kept. */
 #include "gstbloom.h"
@@ -95,6 +105,81 @@ static bloom_status_t stream_config(const GstBloom *self, bloom_config_t *cfg, b
     return st;
 }
 
+/* Appends text (taken) to *msg ("; " between). */
+static void add_text(char **msg, char *text)
+{
+    if (!*msg) {
+        *msg = text;
+        return;
+    }
+    char *both = g_strdup_printf("%s; %s", *msg, text);
+    g_free(*msg);
+    g_free(text);
+    *msg = both;
+}
+
+/* The engines gone (object lock held): the pool stopped and joined first,
+ * its state and its tiles' workspaces being in ws. ws itself is kept. */
+static void drop_engine_locked(GstBloom *self)
+{
+    bloom_mt_free(self->mt);
+    self->mt = NULL;
+    self->engine = NULL;
+    self->tiles = 1;
+}
+
+/* ws of at least need bytes: kept when it is large enough and not four
+ * times too large, else allocated anew (FALSE, ws unchanged, when that
+ * fails). Only with the engines dropped. */
+static gboolean ws_reserve(GstBloom *self, size_t need)
+{
+    if (self->ws && need <= self->ws_bytes && need >= self->ws_bytes / 4)
+        return TRUE;
+    void *ws = g_try_malloc(need);
+    if (!ws)
+        return FALSE;
+    g_free(self->ws);
+    self->ws = ws;
+    self->ws_bytes = need;
+    return TRUE;
+}
+
+/* n-threads resolved (object lock held): 0 is the online CPUs; YUY2 stays
+ * on the one engine's row interface (run_yuy2). */
+static int threads_wanted(const GstBloom *self)
+{
+    if (self->yuy2)
+        return 1;
+    return self->n_threads ? (int)self->n_threads : bloom_mt_cpus();
+}
+
+/* The tile engines on their pool for cfg, in ws (object lock held, engines
+ * dropped); FALSE with *warn saying why when it cannot be (one engine
+ * then). */
+static gboolean start_pool_locked(GstBloom *self, const bloom_config_t *cfg, int n, char **warn)
+{
+    const size_t bytes = bloom_mt_size(cfg, n);
+    bloom_status_t st;
+    if (!bytes)
+        add_text(warn, g_strdup_printf("n-threads %d: the engine refuses the tiles: one thread", n));
+    else if (!ws_reserve(self, bytes))
+        add_text(warn, g_strdup_printf("n-threads %d: cannot allocate %zu bytes: one thread", n, bytes));
+    else if ((st = bloom_mt_init(&self->mt, self->ws, self->ws_bytes, cfg, n)) != BLOOM_OK)
+        add_text(warn, g_strdup_printf("n-threads %d: %s: one thread", n, bloom_mt_status_str(st)));
+    else
+        self->tiles = bloom_mt_tiles(self->mt);
+    return self->mt != NULL; /* bloom_mt_init leaves it NULL on a failure */
+}
+
+/* Configure the engine from self->settings and n-threads for the
+ * negotiated size (object lock held). A refused configuration: *warn says
+ * why and the previous settings are restored and used; when there are
+ * none, or they fail too, *err says why and the engine is gone. With more
+ * than one tile (n-threads, RGB formats) the tile engines and their pool
+ * are built instead of the one engine; a pool that cannot be built falls
+ * back to one engine with a warning. Allocates only when the buffer must
+ * grow (or shrink below a quarter); the pool's threads are started here,
+ * never per frame. */
 static void configure_locked(GstBloom *self, char **warn, char **err)
 {
     bloom_config_t cfg;
@@ -109,38 +194,26 @@ static void configure_locked(GstBloom *self, char **warn, char **err)
         gst_bloom_settings_copy(&self->settings, &self->applied);
         st = stream_config(self, &cfg, &info, &why);
     }
+    drop_engine_locked(self); /* before ws is reused or freed */
     if (st != BLOOM_OK) {
-        self->engine = NULL;
         *err = why;
         return;
     }
-    void *ws = self->ws;
-    size_t cap = self->ws_bytes;
-    if (!ws || info.workspace_bytes > cap || info.workspace_bytes < cap / 4) {
-        cap = info.workspace_bytes;
-        ws = g_try_malloc(cap);
-        if (!ws) {
-            self->engine = NULL;
-            *err = g_strdup_printf("cannot allocate the engine's workspace (%zu bytes)", cap);
+    const int n = threads_wanted(self);
+    if (n <= 1 || bloom_mt_tiles_for(&cfg, n) <= 1 || !start_pool_locked(self, &cfg, n, warn)) {
+        if (!ws_reserve(self, info.workspace_bytes)) {
+            *err =
+                g_strdup_printf("cannot allocate the engine's workspace (%zu bytes)", info.workspace_bytes);
             return;
         }
+        bloom_t *b = NULL;
+        st = bloom_init(&b, self->ws, self->ws_bytes, &cfg);
+        if (st != BLOOM_OK) {
+            *err = g_strdup_printf("bloom_init: %s", bloom_status_str(st));
+            return;
+        }
+        self->engine = b;
     }
-    bloom_t *b = NULL;
-    st = bloom_init(&b, ws, cap, &cfg);
-    if (st != BLOOM_OK) {
-        if (ws != self->ws)
-            g_free(ws);
-        else
-            self->engine = NULL; /* the shared workspace is spoilt */
-        *err = g_strdup_printf("bloom_init: %s", bloom_status_str(st));
-        return;
-    }
-    if (ws != self->ws) {
-        g_free(self->ws);
-        self->ws = ws;
-        self->ws_bytes = cap;
-    }
-    self->engine = b;
     self->cfg = cfg;
     self->info = info;
     gst_bloom_settings_copy(&self->applied, &self->settings);
@@ -148,9 +221,16 @@ static void configure_locked(GstBloom *self, char **warn, char **err)
     self->engine_aux = cfg.aux_fmt != BLOOM_AUX_NONE ? self->applied.aux : NULL;
     GST_INFO_OBJECT(self,
                     "engine: %dx%d preset %s, %d levels, workspace %zu bytes (source copy %zu), latency %d "
-                    "rows, YUY2 rows %zu bytes",
+                    "rows, YUY2 rows %zu bytes; %d tile(s), buffer %zu bytes",
                     cfg.width, cfg.height, bloom_preset_name(cfg.preset), info.levels, info.workspace_bytes,
-                    info.ring_bytes[0], info.latency_rows, self->rows_bytes);
+                    info.ring_bytes[0], info.latency_rows, self->rows_bytes, self->tiles, self->ws_bytes);
+}
+
+/* In place when the in-place property asks for it, the strides allow it
+ * and no pool runs (object lock held). */
+static gboolean want_in_place_locked(const GstBloom *self)
+{
+    return self->in_place && self->strides_match && !self->mt;
 }
 
 static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstVideoInfo *in_info,
@@ -208,8 +288,11 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
     self->rgb_in = rows;
     self->rgb_out = rows ? rows + row : NULL;
     self->rows_bytes = 2 * row;
+    /* the same format both sides by the caps; in place also wants the strides */
+    self->strides_match = GST_VIDEO_INFO_PLANE_STRIDE(in_info, 0) == GST_VIDEO_INFO_PLANE_STRIDE(out_info, 0);
     configure_locked(self, &warn, &err);
-    const gboolean in_place = self->in_place;
+    self->have_caps = err == NULL;
+    const gboolean in_place = want_in_place_locked(self);
     GST_OBJECT_UNLOCK(self);
     if (warn)
         GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("bloom: %s", warn), (NULL));
@@ -220,10 +303,9 @@ static gboolean gst_bloom_set_info(GstVideoFilter *filter, GstCaps *incaps, GstV
         g_free(err);
         return FALSE;
     }
-    /* the same format both sides by the caps; in place also wants the strides */
-    gst_base_transform_set_in_place(GST_BASE_TRANSFORM(self),
-                                    in_place && GST_VIDEO_INFO_PLANE_STRIDE(in_info, 0) ==
-                                                    GST_VIDEO_INFO_PLANE_STRIDE(out_info, 0));
+    /* before GstBaseTransform decides the allocation (after set_caps) */
+    self->in_place_now = in_place;
+    gst_base_transform_set_in_place(GST_BASE_TRANSFORM(self), in_place);
     return TRUE;
 }
 
@@ -256,30 +338,39 @@ static bloom_status_t run_yuy2(GstBloom *self, const guint8 *src, ptrdiff_t src_
     return st;
 }
 
+/* One frame through what configure_locked built: the pool (out of place
+ * only), the one engine's whole frame, or YUY2's rows. The configuration
+ * is made before the frame (gst_bloom_before_transform), not here: the
+ * frame's in-place or out-of-place call was chosen for it. */
 static GstFlowReturn run_frame(GstBloom *self, const guint8 *src, ptrdiff_t src_stride, guint8 *dst,
                                ptrdiff_t dst_stride)
 {
-    char *warn = NULL, *err = NULL;
-    GST_OBJECT_LOCK(self);
-    if (self->dirty)
-        configure_locked(self, &warn, &err);
-    GST_OBJECT_UNLOCK(self);
-    if (warn)
-        GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("bloom: %s", warn), (NULL));
-    g_free(warn);
-    if (err || !self->engine) {
-        GST_ELEMENT_ERROR(self, LIBRARY, SETTINGS, ("bloom: %s", err ? err : "engine not configured"),
+    if (!self->engine && !self->mt) {
+        GST_ELEMENT_ERROR(self, LIBRARY, SETTINGS,
+                          ("bloom: %s", self->pending_err ? self->pending_err : "engine not configured"),
                           (NULL));
-        g_free(err);
+        g_free(self->pending_err);
+        self->pending_err = NULL;
         return GST_FLOW_ERROR;
     }
-    if (self->engine_aux)
-        bloom_set_aux(self->engine, self->engine_aux->data, (ptrdiff_t)self->engine_aux->stride);
-    const bloom_status_t st = self->yuy2 ? run_yuy2(self, src, src_stride, dst, dst_stride)
-                                         : bloom_process(self->engine, src, src_stride, dst, dst_stride);
+    const GstBloomAux *aux = self->engine_aux;
+    bloom_status_t st;
+    if (self->mt) {
+        st = aux ? bloom_mt_set_aux(self->mt, aux->data, (ptrdiff_t)aux->stride) : BLOOM_OK;
+        if (st == BLOOM_OK)
+            st = bloom_mt_process(self->mt, src, src_stride, dst, dst_stride);
+    } else {
+        if (aux)
+            bloom_set_aux(self->engine, aux->data, (ptrdiff_t)aux->stride);
+        st = self->yuy2 ? run_yuy2(self, src, src_stride, dst, dst_stride)
+                        : bloom_process(self->engine, src, src_stride, dst, dst_stride);
+    }
     if (st != BLOOM_OK) {
-        GST_ELEMENT_ERROR(self, STREAM, FAILED, ("bloom_process: %s", bloom_status_str(st)),
-                          ("%dx%d, strides %td / %td", self->width, self->height, src_stride, dst_stride));
+        GST_ELEMENT_ERROR(
+            self, STREAM, FAILED,
+            ("%s: %s", self->mt ? "bloom_mt_process" : "bloom_process", bloom_mt_status_str(st)),
+            ("%dx%d, strides %td / %td, %d tile(s)", self->width, self->height, src_stride, dst_stride,
+             self->tiles));
         return GST_FLOW_ERROR;
     }
     return GST_FLOW_OK;
@@ -299,21 +390,53 @@ static GstFlowReturn gst_bloom_transform_frame_ip(GstVideoFilter *filter, GstVid
     return run_frame(GST_BLOOM(filter), p, stride, p, stride);
 }
 
-/* Controlled properties (GstController) take their values per buffer. */
+/* Before each buffer, in the streaming thread, ahead of GstBaseTransform's
+ * choice of an output buffer: controlled properties (GstController) take
+ * their values, then the engine is re-configured when a property changed.
+ * When that starts or stops the pool, the element turns out of place (or
+ * back to the in-place property's choice) from this very buffer, and the
+ * source pad is marked for reconfiguration so that GstBaseTransform redoes
+ * its allocation (a buffer pool out of place, none in place) before it
+ * prepares this buffer's output (default_submit_input_buffer). */
 static void gst_bloom_before_transform(GstBaseTransform *trans, GstBuffer *buf)
 {
+    GstBloom *self = GST_BLOOM(trans);
     const GstClockTime t =
         gst_segment_to_stream_time(&trans->segment, GST_FORMAT_TIME, GST_BUFFER_TIMESTAMP(buf));
     if (GST_CLOCK_TIME_IS_VALID(t))
         gst_object_sync_values(GST_OBJECT(trans), t);
+    char *warn = NULL, *err = NULL;
+    GST_OBJECT_LOCK(self);
+    const gboolean configure = self->dirty && self->have_caps;
+    if (configure)
+        configure_locked(self, &warn, &err);
+    const gboolean in_place = want_in_place_locked(self);
+    GST_OBJECT_UNLOCK(self);
+    if (warn)
+        GST_ELEMENT_WARNING(self, LIBRARY, SETTINGS, ("bloom: %s", warn), (NULL));
+    g_free(warn);
+    if (configure) { /* an error is posted by the frame, which fails */
+        g_free(self->pending_err);
+        self->pending_err = err;
+    }
+    if (in_place != self->in_place_now) {
+        GST_DEBUG_OBJECT(self, "%s place from this buffer (%d tile(s))", in_place ? "in" : "out of",
+                         self->tiles);
+        self->in_place_now = in_place;
+        gst_base_transform_set_in_place(trans, in_place);
+        gst_base_transform_reconfigure_src(trans);
+    }
 }
 
 static gboolean gst_bloom_stop(GstBaseTransform *trans)
 {
     GstBloom *self = GST_BLOOM(trans);
     GST_OBJECT_LOCK(self);
-    self->engine = NULL;
+    drop_engine_locked(self); /* the pool's threads joined */
     self->engine_aux = NULL;
+    self->have_caps = FALSE;
+    g_free(self->pending_err);
+    self->pending_err = NULL;
     g_free(self->ws);
     self->ws = NULL;
     self->ws_bytes = 0;
@@ -330,8 +453,10 @@ static gboolean gst_bloom_stop(GstBaseTransform *trans)
 static void gst_bloom_finalize(GObject *object)
 {
     GstBloom *self = GST_BLOOM(object);
+    drop_engine_locked(self); /* stop() has already, when it ran */
     g_free(self->ws);
     g_free(self->rgb_in);
+    g_free(self->pending_err);
     gst_bloom_settings_clear(&self->settings);
     gst_bloom_settings_clear(&self->applied);
     G_OBJECT_CLASS(gst_bloom_parent_class)->finalize(object);
@@ -372,6 +497,9 @@ static void gst_bloom_init(GstBloom *self)
     gst_bloom_settings_init(&self->settings);
     gst_bloom_settings_init(&self->applied);
     self->in_place = TRUE;
+    self->in_place_now = TRUE;
+    self->n_threads = 1;
+    self->tiles = 1;
     self->dirty = TRUE;
 }
 

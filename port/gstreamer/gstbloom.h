@@ -1,8 +1,9 @@
 /* GStreamer element "bloom": the fixed-point bloom engine (include/bloom.h)
  * as a GstVideoFilter. gstbloom.c is the element (caps, frames, the
- * engine's re-configuration); gstbloom_props.c its properties;
- * gstbloom_conf.c turns the properties' settings into an engine
- * configuration (and reads the aux plane), with no GObject in it. */
+ * engine's re-configuration, n-threads through port/threads/bloom_mt.h);
+ * gstbloom_props.c its properties; gstbloom_conf.c turns the properties'
+ * settings into an engine configuration (and reads the aux plane), with no
+ * GObject in it. */
 #ifndef GST_BLOOM_H
 #define GST_BLOOM_H
 
@@ -11,6 +12,7 @@
 #include <gst/video/video.h>
 
 #include "bloom.h"
+#include "bloom_mt.h" /* port/threads: tile engines on a pool of threads */
 
 G_BEGIN_DECLS
 
@@ -92,15 +94,26 @@ struct _GstBloom {
     gboolean have_applied;
     gboolean dirty;    /* settings changed since the engine was configured */
     gboolean in_place; /* property in-place */
+    guint n_threads;   /* property n-threads: 0 the online CPUs, else the count */
 
     /* streaming thread (configured under the object lock, between frames) */
     int width, height;
     bloom_format_t fmt;
     bloom_config_t cfg;
     bloom_info_t info;
-    bloom_t *engine; /* NULL until configured */
-    void *ws;        /* the workspace, ws_bytes, from bloom_workspace_size */
+    bloom_t *engine; /* one engine: NULL until configured, and while mt runs */
+    /* threads (n-threads resolving to more than one tile, RGB formats
+     * only): the tile engines and their pool, carved from ws; never in
+     * place (bloom_mt_process refuses src == dst), so the element is
+     * out of place while mt is set (gst_bloom_before_transform) */
+    bloom_mt_t *mt;
+    int tiles; /* mt's tiles (= threads, the streaming one included); 1 without */
+    void *ws;  /* the workspace, ws_bytes: bloom_workspace_size, or bloom_mt_size with mt */
     size_t ws_bytes;
+    gboolean have_caps;            /* set_info succeeded (the size and format are known) */
+    gboolean strides_match;        /* in and out plane strides equal (set_info): in place possible */
+    gboolean in_place_now;         /* what GstBaseTransform was last told (gst_base_transform_set_in_place) */
+    char *pending_err;             /* a configuration error of before_transform, posted by the frame */
     const GstBloomAux *engine_aux; /* the plane the engine reads (in applied) */
 
     /* YUY2: the engine runs RGB888 with BLOOM_FLAG_COPY_SOURCE (it keeps the

@@ -26,7 +26,8 @@ enum {
     PROP_BAKED,
     PROP_RADIUS,
     PROP_AUX_LOCATION,
-    PROP_IN_PLACE
+    PROP_IN_PLACE,
+    PROP_N_THREADS
 };
 
 #define GST_TYPE_BLOOM_PRESET (gst_bloom_preset_get_type())
@@ -165,6 +166,12 @@ void gst_bloom_set_property(GObject *object, guint id, const GValue *value, GPar
     case PROP_IN_PLACE:
         self->in_place = g_value_get_boolean(value);
         break;
+    case PROP_N_THREADS:
+        if (self->n_threads != g_value_get_uint(value)) {
+            self->n_threads = g_value_get_uint(value);
+            self->dirty = TRUE; /* the pool is rebuilt (or dropped) before the next frame */
+        }
+        break;
     default:
         GST_OBJECT_UNLOCK(self);
         G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -275,6 +282,9 @@ void gst_bloom_get_property(GObject *object, guint id, GValue *value, GParamSpec
     case PROP_IN_PLACE:
         g_value_set_boolean(value, self->in_place);
         break;
+    case PROP_N_THREADS:
+        g_value_set_uint(value, self->n_threads);
+        break;
     default:
         GST_OBJECT_UNLOCK(self);
         G_OBJECT_WARN_INVALID_PROPERTY_ID(object, id, pspec);
@@ -374,6 +384,13 @@ void gst_bloom_install_properties(GObjectClass *oc)
                                  "Work in the input buffer (GstBaseTransform copies it first when it "
                                  "is not writable); false: write a new buffer (better after a tee)",
                                  TRUE, G_PARAM_READWRITE | G_PARAM_STATIC_STRINGS | GST_PARAM_MUTABLE_READY));
+    install(oc, PROP_N_THREADS,
+            g_param_spec_uint("n-threads", "Threads",
+                              "Threads per frame: the frame cut into tiles, one engine each, the "
+                              "same bytes whatever the count (0: the online CPUs; 1: no thread). "
+                              "Above one the element works out of place (a new buffer) whatever "
+                              "in-place says; YUY2 always runs on one",
+                              0, BLOOM_MT_MAX_THREADS, 1, GB_FLAGS));
     gst_type_mark_as_plugin_api(GST_TYPE_BLOOM_PRESET, 0);
     gst_type_mark_as_plugin_api(GST_TYPE_BLOOM_VIEW, 0);
 }

@@ -27,19 +27,28 @@ GST_PIC_CORE = $(patsubst src/%.c,$(B)/pic/obj/%.o,$(CORE_SRC))
 # the element and the tests too: bookworm's GStreamer 1.22 / GLib 2.74
 # headers need no -Wno-... (gcc 12; clang 14 too, checked by hand).
 GST_WARN = $(WARN)
-GST_CPPFLAGS = $(CPPFLAGS_CORE) -I$(GST_DIR) -Iport/linux
+GST_CPPFLAGS = $(CPPFLAGS_CORE) -I$(GST_DIR) -Iport/linux -Iport/threads
 # YUY2 goes through the camera tool's row converters, built here from their
 # own source (port/linux/cam_conv.c, the flags of linux.mk's CAM_CPPFLAGS):
 # one object in the plugin and in the test, which decodes and encodes its
 # expected frames with the same functions.
 GST_CONV_OBJ = $(GST_B)/obj/cam_conv.o
+# n-threads runs the frame's tiles on port/threads' pool (bloom_mt.c, built
+# here from its own source with threads.mk's MT_CPPFLAGS; linked with
+# MT_LIBS, -lpthread). Its bloom_mt_* symbols stay local to the plugin
+# (gstbloom.map), as the engine's do. The paths are spelt here: threads.mk
+# is included after this file, and a rule's prerequisites are expanded as
+# it is read.
+GST_MT_SRC := port/threads/bloom_mt.c
+GST_MT_HDR := port/threads/bloom_mt.h
+GST_MT_OBJ = $(GST_B)/obj/bloom_mt.o
 
 CHECKS += test-gst
 .PHONY: gst test-gst
 
 gst: $(GST_B)/libgstbloom.so
 
-$(GST_B)/obj/%.o: $(GST_DIR)/%.c $(GST_HDR) port/linux/cam_conv.h $(CORE_HDR) $(GST_DIR)/gstreamer.mk
+$(GST_B)/obj/%.o: $(GST_DIR)/%.c $(GST_HDR) port/linux/cam_conv.h $(GST_MT_HDR) $(CORE_HDR) $(GST_DIR)/gstreamer.mk
 	@mkdir -p $(@D)
 	$(CC) $(GST_WARN) $(CFLAGS) -fPIC $(GST_CPPFLAGS) -DGST_BLOOM_VERSION='"$(BLOOM_VERSION)"' \
 	  $(GST_CFLAGS) -c $< -o $@
@@ -48,15 +57,19 @@ $(GST_CONV_OBJ): port/linux/cam_conv.c port/linux/cam.h port/linux/cam_conv.h $(
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) -fPIC $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L -c $< -o $@
 
-$(GST_B)/libgstbloom.so: $(patsubst $(GST_DIR)/%.c,$(GST_B)/obj/%.o,$(GST_SRC)) $(GST_CONV_OBJ) $(GST_PIC_CORE) \
-                         $(GST_DIR)/gstbloom.map
+$(GST_MT_OBJ): $(GST_MT_SRC) $(GST_MT_HDR) $(CORE_HDR) $(GST_DIR)/gstreamer.mk
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -fPIC $(CPPFLAGS_CORE) $(MT_CPPFLAGS) -c $< -o $@
+
+$(GST_B)/libgstbloom.so: $(patsubst $(GST_DIR)/%.c,$(GST_B)/obj/%.o,$(GST_SRC)) $(GST_CONV_OBJ) $(GST_MT_OBJ) \
+                         $(GST_PIC_CORE) $(GST_DIR)/gstbloom.map
 	$(CC) -shared -Wl,-z,defs -Wl,--version-script=$(GST_DIR)/gstbloom.map -o $@ \
-	  $(filter %.o,$^) $(GST_LIBS)
+	  $(filter %.o,$^) $(GST_LIBS) $(MT_LIBS)
 
 # The test links the engine itself (build/libbloom.a) to hold the element
 # to bloom_process; the element runs from the plugin, loaded by GStreamer.
 GST_TEST_SRC := $(GST_DIR)/test_gst.c $(GST_DIR)/test_gst_frames.c $(GST_DIR)/test_gst_stream.c \
-                $(GST_DIR)/test_gst_util.c $(GST_DIR)/test_gst_yuy2.c
+                $(GST_DIR)/test_gst_util.c $(GST_DIR)/test_gst_yuy2.c $(GST_DIR)/test_gst_threads.c
 $(GST_B)/test_gst: $(GST_TEST_SRC) $(GST_DIR)/test_gst.h port/linux/cam_conv.h $(GST_CONV_OBJ) $(CORE_HDR) \
                    $(B)/libbloom.a $(GST_DIR)/gstreamer.mk
 	@mkdir -p $(@D)

@@ -2,7 +2,8 @@
  * (gstcheck-1.0), held byte for byte to the engine run directly
  * (bloom_process on the same frames) and to build/bloom_sim. Here: the
  * plugin, the caps, the properties, main; the frames in test_gst_frames.c,
- * streaming in test_gst_stream.c, YUY2 in test_gst_yuy2.c.
+ * streaming in test_gst_stream.c, YUY2 in test_gst_yuy2.c, n-threads in
+ * test_gst_threads.c.
  *
  * Run by the make target with GST_PLUGIN_PATH_1_0 = build/gst and
  * GST_REGISTRY_1_0 = build/gst/registry.bin (the user's registry is never
@@ -62,6 +63,7 @@ GST_START_TEST(test_inspect_page)
                                        "radius",
                                        "aux-location",
                                        "in-place",
+                                       "n-threads",
                                        "bloom-only",
                                        "cod",
                                        "RGB16",
@@ -262,6 +264,7 @@ static Suite *bloom_suite(void)
     tg_add_frame_tests(s);  /* test_gst_frames.c */
     tg_add_stream_tests(s); /* test_gst_stream.c */
     tg_add_yuy2_tests(s);   /* test_gst_yuy2.c */
+    tg_add_thread_tests(s); /* test_gst_threads.c */
     return s;
 }
 

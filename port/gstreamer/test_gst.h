@@ -65,7 +65,8 @@ TCase *tg_tcase(Suite *s, const char *name);
  * (test_gst_stream.c). */
 void tg_add_frame_tests(Suite *s);
 void tg_add_stream_tests(Suite *s);
-void tg_add_yuy2_tests(Suite *s); /* test_gst_yuy2.c */
+void tg_add_yuy2_tests(Suite *s);   /* test_gst_yuy2.c */
+void tg_add_thread_tests(Suite *s); /* test_gst_threads.c: n-threads */
 
 /* The scratch directory (BLOOM_GST_TMP, made if missing). */
 const char *tg_tmp(void);
