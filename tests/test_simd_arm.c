@@ -216,7 +216,7 @@ int main(void)
     run(&bloom_arm_kern_neon, BLOOM_ISA_NEON);
 #endif
 #if !defined(BLOOM_SIMD_SSE2) && !defined(BLOOM_SIMD_NEON)
-    SKIP("arm SIMD twins: none on this target (C kernels only)");
+    SKIP("cpu without SIMD twins for arm (this target has none: C kernels only)");
 #endif
 #else
     SKIP("arm preset: compiled out (BLOOM_USE_ARM=0)");
