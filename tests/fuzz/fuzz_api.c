@@ -332,7 +332,10 @@ static void make_reference(run_t *r, uint32_t flip)
     c.flags ^= flip;
     bloom_info_t info;
     FZ_CHECKF(bloom_query(&c, &info) == BLOOM_OK, "flags %#x taken, %#x refused", r->c.flags, c.flags);
-    FZ_CHECK(info.latency_rows == r->info.latency_rows && info.levels == r->info.levels);
+    /* the same schedule, but for COPY_SOURCE: xna leaves its dark window of
+     * source rows out there (6 copied rows of workspace), 6 rows sooner */
+    FZ_CHECK(info.levels == r->info.levels &&
+             (info.latency_rows == r->info.latency_rows || flip == BLOOM_FLAG_COPY_SOURCE));
     uint8_t *ws = malloc(info.workspace_bytes);
     memset(ws, 0x5A, info.workspace_bytes); /* another garbage than the engine under test's */
     bloom_t *b;
