@@ -71,4 +71,17 @@ void tg_add_thread_tests(Suite *s); /* test_gst_threads.c: n-threads */
 /* The scratch directory (BLOOM_GST_TMP, made if missing). */
 const char *tg_tmp(void);
 
+/* A thread (g_thread_new("racer", tg_race, &r)) that sets the integer
+ * property `prop` of the element to vals[0], vals[1], ... in turn, every
+ * pause_us, until stop is set; flips counts the changes. */
+typedef struct {
+    GstElement *bloom;
+    const char *prop;
+    const int *vals;
+    int nvals, pause_us;
+    gint stop;
+    int flips;
+} tg_racer_t;
+gpointer tg_race(gpointer data);
+
 #endif

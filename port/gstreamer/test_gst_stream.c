@@ -120,23 +120,6 @@ GST_END_TEST;
 /* Another thread flips the preset between unity and cod as fast as it can
  * while frames flow: every frame comes out as the engine gives it with one
  * of the two configurations, never a mix, and nothing deadlocks. */
-typedef struct {
-    GstElement *bloom;
-    gint stop;
-    int flips;
-} racer_t;
-
-static gpointer race(gpointer data)
-{
-    racer_t *r = data;
-    while (!g_atomic_int_get(&r->stop)) {
-        g_object_set(r->bloom, "preset", (r->flips & 1) ? BLOOM_PRESET_UNITY : BLOOM_PRESET_COD, NULL);
-        r->flips++;
-        g_usleep(50);
-    }
-    return NULL;
-}
-
 GST_START_TEST(test_changes_racing)
 {
     const tg_fmt_t *f = &tg_fmts[0];
@@ -149,8 +132,9 @@ GST_START_TEST(test_changes_racing)
     tg_pipe_new(&p, f, W, H);
     g_object_set(p.bloom, "threshold", 0.4, NULL);
     fail_unless(tg_pipe_play(&p));
-    racer_t r = {p.bloom, 0, 0};
-    GThread *t = g_thread_new("racer", race, &r);
+    static const int presets[2] = {BLOOM_PRESET_COD, BLOOM_PRESET_UNITY};
+    tg_racer_t r = {p.bloom, "preset", presets, 2, 50, 0, 0};
+    GThread *t = g_thread_new("racer", tg_race, &r);
     int seen[2] = {0, 0};
     for (int k = 0; k < 40; k++) {
         guint8 *px = tg_frame(f, W, H, stride, 700u + (guint32)k);

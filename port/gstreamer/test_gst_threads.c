@@ -186,23 +186,6 @@ GST_END_TEST;
 /* Another thread flips n-threads between 1, 2 and 3 as fast as it can
  * while frames flow through appsrc ! bloom ! appsink: every frame is the
  * engine's, whatever the pool and the in-place choice at that moment. */
-typedef struct {
-    GstElement *bloom;
-    gint stop;
-    int flips;
-} racer_t;
-
-static gpointer race(gpointer data)
-{
-    racer_t *r = data;
-    while (!g_atomic_int_get(&r->stop)) {
-        g_object_set(r->bloom, "n-threads", (guint)(1 + r->flips % 3), NULL);
-        r->flips++;
-        g_usleep(200);
-    }
-    return NULL;
-}
-
 GST_START_TEST(test_threads_racing)
 {
     const tg_fmt_t *f = &tg_fmts[0];
@@ -214,8 +197,9 @@ GST_START_TEST(test_threads_racing)
     tg_pipe_new(&p, f, W, H);
     g_object_set(p.bloom, "threshold", 0.4, NULL);
     fail_unless(tg_pipe_play(&p));
-    racer_t r = {p.bloom, 0, 0};
-    GThread *t = g_thread_new("racer", race, &r);
+    static const int counts[3] = {1, 2, 3};
+    tg_racer_t r = {p.bloom, "n-threads", counts, 3, 200, 0, 0};
+    GThread *t = g_thread_new("racer", tg_race, &r);
     for (int k = 0; k < 40; k++) {
         guint8 *px = tg_frame(f, W, H, stride, 1600u + (guint32)k);
         guint8 *exp = tg_engine(&c, px, stride, NULL, 0);

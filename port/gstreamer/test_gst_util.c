@@ -249,3 +249,14 @@ const char *tg_tmp(void)
     g_mkdir_with_parents(d, 0755);
     return d;
 }
+
+gpointer tg_race(gpointer data)
+{
+    tg_racer_t *r = data;
+    while (!g_atomic_int_get(&r->stop)) {
+        g_object_set(r->bloom, r->prop, r->vals[r->flips % r->nvals], NULL);
+        r->flips++;
+        g_usleep((gulong)r->pause_us);
+    }
+    return NULL;
+}
