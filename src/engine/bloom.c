@@ -113,26 +113,45 @@ static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, b
 }
 
 #if !BLOOM_SMALL
-/* How far (in frame pixels, either way and in either direction) the output
- * node's pixels reach into the source: down the graph, each input adds its
- * row reach at its resolution, plus one of its pixels for the rounding of
- * the positions. A kernel reaches as far across as its rows reach down
- * (the box, the tents, the Gaussian, Kawase, the 13-tap: square
- * footprints), so this is the halo of a tile. */
+/* How far (in frame pixels, either way) the output node's pixels reach into
+ * the source: the halo of a tile. Walked down the graph: a pixel p at
+ * resolution 2^-k covers frame pixels [p 2^k, (p + 1) 2^k - 1]; an input at
+ * resolution 2^-e read at rows base(p) + lo .. base(p) + hi adds, exactly
+ * (not a pixel more for the rounding: a margin above the reach costs every
+ * strip its work and memory), on the low side -lo 2^e (BG_DOWN, BG_SAME) or
+ * 2^(e-1) - lo 2^e (BG_UP, p odd), on the high side (hi - 1) 2^e, hi 2^e or
+ * (2 hi + 1) 2^(e-1), plus the input's own reach. Resolutions come from the
+ * maps, not the nodes' memory levels. A kernel reaches as far across as its
+ * rows reach down (box, tents, Gaussian, Kawase, 13-tap: square
+ * footprints); the halo is the larger side, for both axes, so a kernel whose
+ * columns mirror its rows is covered too. (Default 5 levels: 124.) */
 static int halo_of(const bloom_graph_t *g)
 {
-    int reach[BG_MAX_NODES];
+    int lo_r[BG_MAX_NODES], hi_r[BG_MAX_NODES], res[BG_MAX_NODES];
     for (int i = 0; i < g->nnodes; i++) {
         const bg_node_t *n = &g->node[i];
-        reach[i] = 0;
+        lo_r[i] = hi_r[i] = 0;
+        res[i] = 0;
         for (int j = 0; j < n->nin; j++) {
             const bg_input_t *in = &n->in[j];
-            const int from = in->node, scale = from < 0 ? 1 : 1 << g->node[from].level;
-            const int r = imax(in->lo < 0 ? -in->lo : in->lo, in->hi < 0 ? -in->hi : in->hi) + 1;
-            reach[i] = imax(reach[i], (from < 0 ? 0 : reach[from]) + scale * r);
+            const int from = in->node, e = from < 0 ? 0 : res[from];
+            const int s = 1 << e, lo = in->lo, hi = in->hi;
+            const int flo = from < 0 ? 0 : lo_r[from], fhi = from < 0 ? 0 : hi_r[from];
+            int l, h;
+            if (in->map == BG_DOWN) {
+                l = -lo * s, h = (hi - 1) * s;
+            } else if (in->map == BG_SAME) {
+                l = -lo * s, h = hi * s;
+            } else { /* BG_UP: the input has twice the pixel size (e >= 1) */
+                l = s / 2 - lo * s, h = (2 * hi + 1) * (s / 2);
+            }
+            lo_r[i] = imax(lo_r[i], l + flo);
+            hi_r[i] = imax(hi_r[i], h + fhi);
+            if (j == 0)
+                res[i] = e + (in->map == BG_DOWN ? 1 : in->map == BG_UP ? -1 : 0);
         }
     }
-    return reach[g->out_node];
+    return imax(0, imax(lo_r[g->out_node], hi_r[g->out_node]));
 }
 
 /* [a, b) of a frame side n around [t, t + tn): the margin m either side,
