@@ -71,8 +71,10 @@ static void fill(uint32_t *p, size_t n, int mode, uint32_t max)
 static void test_box(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 {
     int bad = 0;
-    for (int wi = 0; wi < NWIDTHS; wi++) {
-        const int sw = widths[wi], dw = (sw + 1) / 2;
+    /* every width to 300 (the AVX2 box's blocks of 8 and chunks of 128
+     * pixels start and end everywhere), then the long rows */
+    for (int wi = 0; wi < 300 + NWIDTHS; wi++) {
+        const int sw = wi < 300 ? wi + 1 : widths[wi - 300], dw = (sw + 1) / 2;
         for (int mode = 0; mode < 4; mode++)
             for (int off = 0; off < 4; off++) {
                 row_t s[4];

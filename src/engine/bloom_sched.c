@@ -230,7 +230,7 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
     }
 #if BLOOM_USE_SKIP
     const bool dark =
-        g->dark_src && bloom_row_dark(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
+        g->dark_src && BLOOM_KERN_DARK(&g->kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
     g->src_tag[slot] = r | (dark ? ZBIT : 0);
 #else
     g->src_tag[slot] = r;

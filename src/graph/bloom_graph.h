@@ -124,6 +124,7 @@ struct bloom {
     uint8_t *src_copy, *aux_copy;
     int32_t *src_tag;
     int src_cap;
+    int node_cap; /* (beside src_cap: no hole in the struct) nodes that fit at node */
     size_t src_row_bytes, aux_row_bytes;
     int src_bpp, aux_bpp;
     const uint8_t *aux_frame; /* bloom_set_aux */
@@ -137,9 +138,8 @@ struct bloom {
     bool failed, dry;
     int need_src, latency;
     /* the nodes: in the workspace right after this struct (bloom_init), or
-     * on the stack (bloom_query); node_cap of them fit */
+     * on the stack (bloom_query); node_cap of them fit (above) */
     bg_node_t *node;
-    int node_cap;
 };
 #define BG_SCRATCH 4
 

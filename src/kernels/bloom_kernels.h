@@ -106,6 +106,9 @@ typedef enum { BLOOM_ISA_C, BLOOM_ISA_SSE2, BLOOM_ISA_AVX2, BLOOM_ISA_NEON } blo
 typedef void (*bloom_box_src_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
                                  int xa, int xb, int sw);
 
+/* bloom_row_dark and its twins. */
+typedef bool (*bloom_dark_fn)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;
@@ -119,8 +122,12 @@ typedef struct {
                                    presets' first stages); C in every set today (an AVX2
                                    one by table gathers took fewer instructions and more time:
                                    sim/docs/profile.md); NULL if BLOOM_SMALL */
-    const char *name;           /* "c", "sse2", "avx2", "neon" */
-    bloom_isa_t isa;            /* the same as a value: presets pick their own twins by it */
+#if !BLOOM_SMALL
+    bloom_dark_fn dark; /* the dark-row test of every pushed source row (bloom_row_dark; the
+                           twins take RGB888 and XRGB8888 rows of a vector or more) */
+#endif
+    const char *name; /* "c", "sse2", "avx2", "neon" */
+    bloom_isa_t isa;  /* the same as a value: presets pick their own twins by it */
 } bloom_kernels_t;
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
@@ -144,6 +151,7 @@ bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
 uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
+bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
 /* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
@@ -156,6 +164,8 @@ uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32
 uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
+void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
+bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
 #endif
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
 #define BLOOM_SIMD_NEON 1
@@ -172,6 +182,14 @@ void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_
                               int n, int sw);
 void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
+bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+#endif
+/* The dark-row test of a kernel set (bloom_row_dark itself where the sets
+ * carry no slot for it: BLOOM_SMALL). */
+#if BLOOM_SMALL
+#define BLOOM_KERN_DARK(k) bloom_row_dark
+#else
+#define BLOOM_KERN_DARK(k) ((k)->dark)
 #endif
 
 /* Whether k holds SIMD twins (the C set is the one with the C box); a

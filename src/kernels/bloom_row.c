@@ -523,6 +523,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->scale = bloom_row_scale_c;
     k->eo = bloom_encode_eo;
     k->box_src = bloom_row_box_src_range_c;
+    k->dark = bloom_row_dark;
 #else
     k->box_src = NULL;
     k->d1 = NULL; /* compute_d1 calls the box and the knee itself */
@@ -546,16 +547,19 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->vtent = bloom_row_vtent_sse2;
     k->htent_eo = bloom_row_htent_eo_sse2;
     k->scale = bloom_row_scale_sse2;
+    k->dark = bloom_row_dark_sse2;
 #endif
     k->name = "sse2";
     k->isa = BLOOM_ISA_SSE2;
 #if defined(BLOOM_SIMD_AVX2)
     if (!(flags & BLOOM_FLAG_NO_AVX2) && bloom_cpu_avx2()) {
+        k->box = bloom_row_box_avx2;
         k->tent = bloom_row_tent_avx2;
         k->d1 = bloom_row_d1_avx2;
         k->vtent = bloom_row_vtent_avx2;
         k->htent_eo = bloom_row_htent_eo_avx2;
         k->eo = bloom_encode_eo_avx2;
+        k->dark = bloom_row_dark_avx2;
         k->name = "avx2";
         k->isa = BLOOM_ISA_AVX2;
     }
@@ -573,6 +577,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->scale = bloom_row_scale_neon;
     k->tent = bloom_row_tent_neon_flat;
     k->eo = bloom_encode_eo_neon;
+    k->dark = bloom_row_dark_neon;
 #endif
     k->name = "neon";
     k->isa = BLOOM_ISA_NEON;

@@ -6,6 +6,8 @@
  * of the core stays baseline x86-64 and the file needs no special flags.
  *
  *   d1                level-1 box and knee with 8-pixel dark blocks
+ *   box               box down (levels 2 ..) in blocks of 8 pixels
+ *   dark              the dark-row test of pushed source rows
  *   vtent, htent_eo   the flat kernels of bloom_row_simd.h on 8 lanes
  *   tent              whole rows through vtent, htent_eo and an interleave
  *                     of the even and odd columns by lane permutes
@@ -298,6 +300,86 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
     }
     if (n > 8 * g)
         bloom_encode_eo(in_fmt, out_fmt, false, src, e, o, dst, n - 8 * g);
+}
+
+/* ---- box down (levels 2 ..): column sums, then four of them ------------- */
+
+/* Output pixel x, channel c is the rounded sum of the column sums V (four
+ * rows added) at samples 6x - 3 + c + {0, 3, 6, 9} (columns 2x - 1 ..
+ * 2x + 2). Per block of 8 pixels (24 samples, base b = 6x - 3) the sums
+ * Y(r) = V(b + r) + V(b + r + 3) + V(b + r + 6) + V(b + r + 9) are formed
+ * 8 at a time at r = 0, 8, 14, 24, 31, 42 and the wanted r = 6m + c picked
+ * by permutes: fewer instructions than the SSE2 twin's pairs. The sums
+ * are those of the C kernel (uint32, below 2^32: bloom_row_simd.h), so the
+ * bits are. V is made once per chunk of blocks into a stack row. */
+#define BOX_CHUNK 16 /* blocks of 8 pixels per V row */
+
+static inline __m256i ysum(const uint32_t *v)
+{
+    return _mm256_add_epi32(_mm256_add_epi32(LD8(v), LD8(v + 3)), _mm256_add_epi32(LD8(v + 6), LD8(v + 9)));
+}
+
+static inline __m256i pick(__m256i a, __m256i ia, __m256i b, __m256i ib, int from_b)
+{
+    return _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, ia), _mm256_permutevar8x32_epi32(b, ib), from_b);
+}
+
+void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
+{
+    /* blocks start at x = 1 (no clamp on the left); block x reads V up
+     * to b + 58 and, V made 8 at a time, sources up to 6x + 62 < 3 sw */
+    const int xa = 1;
+    int nb = 0;
+    if (dw >= xa + 8 && 3 * sw >= 6 * xa + 63)
+        nb = imin((dw - xa) / 8, (3 * sw - 63 - 6 * xa) / 48 + 1);
+    if (nb <= 0) {
+        bloom_row_box_sse2_any(s, dst, dw, sw);
+        return;
+    }
+    bloom_row_box_range_c(s, dst, 0, xa, sw);
+    const __m256i i0a = _mm256_setr_epi32(0, 1, 2, 6, 7, 0, 0, 0),
+                  i0b = _mm256_setr_epi32(0, 0, 0, 0, 0, 0, 4, 5);
+    const __m256i i1a = _mm256_setr_epi32(0, 4, 5, 6, 0, 0, 0, 0),
+                  i1b = _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 2, 6);
+    const __m256i i2a = _mm256_setr_epi32(0, 1, 5, 6, 7, 0, 0, 0),
+                  i2b = _mm256_setr_epi32(0, 0, 0, 0, 0, 0, 1, 2);
+    uint32_t v[BOX_CHUNK * 48 + 16];
+    for (int j = 0; j < nb; j += BOX_CHUNK) {
+        const int k = imin(BOX_CHUNK, nb - j), x = xa + 8 * j;
+        const size_t b = (size_t)(6 * x - 3);
+        const int nv = (48 * (k - 1) + 59 + 7) / 8;
+        for (int i = 0; i < nv; i++) {
+            const size_t o = b + 8u * (size_t)i;
+            ST8(v + 8 * i, _mm256_add_epi32(_mm256_add_epi32(LD8(s[0] + o), LD8(s[1] + o)),
+                                            _mm256_add_epi32(LD8(s[2] + o), LD8(s[3] + o))));
+        }
+        uint32_t *d = dst + 3u * (size_t)x;
+        for (int q = 0; q < k; q++, d += 24) {
+            const uint32_t *w = v + 48 * q;
+            ST8(d, bloom_box_rnd8(pick(ysum(w), i0a, ysum(w + 8), i0b, 0xE0)));
+            ST8(d + 8, bloom_box_rnd8(pick(ysum(w + 14), i1a, ysum(w + 24), i1b, 0xF0)));
+            ST8(d + 16, bloom_box_rnd8(pick(ysum(w + 31), i2a, ysum(w + 42), i2b, 0xE0)));
+        }
+    }
+    bloom_row_box_range_c(s, dst, xa + 8 * nb, dw, sw);
+}
+
+/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
+ * least 32 bytes, by 32-byte loads, the last ending at the row's end (a
+ * whole number of pixels from the start); other rows to the C test. */
+bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 32)
+        return bloom_row_dark(fmt, p, n, d);
+    __m256i m = LD8(p + nb - 32);
+    for (int i = 0; i + 32 < nb; i += 32)
+        m = _mm256_max_epu8(m, LD8(p + i));
+    if (x4)
+        m = _mm256_and_si256(m, _mm256_set1_epi32(0x00FFFFFF));
+    const __m256i over = _mm256_subs_epu8(m, _mm256_set1_epi8((char)(uint8_t)d->c8));
+    return _mm256_testz_si256(over, over) != 0;
 }
 
 #include "bloom_avx2_end.h"

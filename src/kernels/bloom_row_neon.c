@@ -288,6 +288,25 @@ void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity)
 }
 #endif
 
+#if !BLOOM_SMALL
+/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
+ * least 16 bytes, by 16-byte loads, the last ending at the row's end;
+ * other rows to the C test. */
+bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
+        return bloom_row_dark(fmt, p, n, d);
+    uint8x16_t m = vld1q_u8(p + nb - 16);
+    for (int i = 0; i + 16 < nb; i += 16)
+        m = vmaxq_u8(m, vld1q_u8(p + i));
+    if (x4)
+        m = vandq_u8(m, vreinterpretq_u8_u32(vdupq_n_u32(0x00FFFFFFu)));
+    return vmaxvq_u8(m) <= d->c8;
+}
+#endif
+
 #else
 typedef int bloom_row_neon_empty; /* ISO C wants a declaration in every file */
 #endif

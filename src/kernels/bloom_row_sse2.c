@@ -167,6 +167,26 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity)
 }
 #endif
 
+#if !BLOOM_SMALL
+/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
+ * least 16 bytes, by 16-byte loads, the last ending at the row's end;
+ * other rows to the C test. */
+bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
+        return bloom_row_dark(fmt, p, n, d);
+    __m128i m = LD4(p + nb - 16);
+    for (int i = 0; i + 16 < nb; i += 16)
+        m = _mm_max_epu8(m, LD4(p + i));
+    if (x4)
+        m = _mm_and_si128(m, _mm_set1_epi32(0x00FFFFFF));
+    const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
+    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) == 0xFFFF;
+}
+#endif
+
 #else
 typedef int bloom_row_sse2_empty; /* ISO C wants a declaration in every file */
 #endif

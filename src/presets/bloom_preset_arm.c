@@ -197,7 +197,7 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     if (!g->dark_src)
         return d1_range(g, in, d, 0, dw) != 0;
     const size_t bpp = (size_t)g->src_bpp;
-    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
+    const bloom_dark_fn dark_row = BLOOM_KERN_DARK(&g->kern);
     uint32_t any = 0;
     int run = 0; /* first pixel not written yet */
     for (int x = 0; x < dw; x += ARM_DB) {
@@ -206,7 +206,7 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
         for (int i = 0; i < 4 && dark; i++) /* a row tagged dark needs no test */
             dark =
                 bg_in_zero(g, 0, i, i) ||
-                K->dark(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1, &g->dark);
+                dark_row(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1, &g->dark);
         if (!dark)
             continue; /* computed with its run */
         if (run < x)

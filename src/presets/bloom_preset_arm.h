@@ -35,9 +35,6 @@ typedef struct {
      * of 4: i = 0: c4 = Y; 1: c4 += Y, c2 = Y; 2: c4 += Y, c2 += Y;
      * 3: c4 += Y (index x of p is index x of c4, c2). */
     void (*lum8)(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i);
-    /* bloom_row_dark (the C set's is that one; the twins take RGB888 and
-     * XRGB8888 rows of at least 32 bytes, and pass the others on). */
-    bool (*dark)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
     /* 8-bit sRGB in and out of one format (RGB888, or XRGB8888 with x4, X
      * written 0xFF), n pixels: per sample of code c, P = min((f_c B + 2^15)
      * >> 16, 2^24) (f_c < 2^32: channels R, G, B; B = b[x]) and the code

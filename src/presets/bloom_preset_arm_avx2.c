@@ -196,24 +196,6 @@ static void lum8_avx2(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool 
         bloom_arm_kern_c.lum8(p, c4 + x, c2 + x, n - x, x4, i);
 }
 
-/* Whether every colour byte is at most d->c8: RGB888 and XRGB8888 (X
- * bytes cleared) rows of at least 32 bytes by 32-byte loads, the last
- * ending at the row's end (a whole number of pixels from the start). */
-static bool dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
-{
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 32)
-        return bloom_row_dark(fmt, p, n, d);
-    __m256i m = LD(p + nb - 32);
-    for (int i = 0; i + 32 < nb; i += 32)
-        m = _mm256_max_epu8(m, LD(p + i));
-    if (x4)
-        m = _mm256_and_si256(m, _mm256_set1_epi32(0x00FFFFFF));
-    const __m256i over = _mm256_subs_epu8(m, _mm256_set1_epi8((char)(uint8_t)d->c8));
-    return _mm256_testz_si256(over, over) != 0;
-}
-
 #if !BLOOM_SMALL
 /* P = min((f B + 2^15) >> 16, 2^24) on 8 lanes: B first capped at the
  * least B' with P(B') >= 2^24 (then f B' < 2^40 + f, P(B') < 2^25 fits a
@@ -300,9 +282,8 @@ static void out8_avx2(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
 
 #include "bloom_avx2_end.h"
 
-const bloom_arm_kern_t bloom_arm_kern_avx2 = {down_v_avx2, down_h_avx2, up_v_avx2, up_h_avx2,
-                                              max3_avx2,   lum8_avx2,   dark_avx2, BLOOM_ARM_OUT8(out8_avx2),
-                                              "avx2"};
+const bloom_arm_kern_t bloom_arm_kern_avx2 = {
+    down_v_avx2, down_h_avx2, up_v_avx2, up_h_avx2, max3_avx2, lum8_avx2, BLOOM_ARM_OUT8(out8_avx2), "avx2"};
 
 #else
 typedef int bloom_preset_arm_avx2_unused_t;

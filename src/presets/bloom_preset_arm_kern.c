@@ -119,7 +119,7 @@ static void out8_c(const uint8_t *src, const uint32_t *b, const uint32_t f[3], u
 #endif
 
 const bloom_arm_kern_t bloom_arm_kern_c = {
-    down_v_c, down_h_c, up_v_c, up_h_c, max3_c, lum8_c, bloom_row_dark, BLOOM_ARM_OUT8(out8_c), "c"};
+    down_v_c, down_h_c, up_v_c, up_h_c, max3_c, lum8_c, BLOOM_ARM_OUT8(out8_c), "c"};
 
 const bloom_arm_kern_t *bloom_arm_kern(bloom_isa_t isa)
 {

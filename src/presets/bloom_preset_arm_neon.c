@@ -125,22 +125,6 @@ static void lum8_neon(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool 
     bloom_arm_kern_c.lum8(p, c4, c2, n, x4, i); /* the decode is table reads */
 }
 
-/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
- * least 16 bytes, by 16-byte loads, the last ending at the row's end. */
-static bool dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
-{
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
-        return bloom_row_dark(fmt, p, n, d);
-    uint8x16_t m = vld1q_u8(p + nb - 16);
-    for (int i = 0; i + 16 < nb; i += 16)
-        m = vmaxq_u8(m, vld1q_u8(p + i));
-    if (x4)
-        m = vandq_u8(m, vreinterpretq_u8_u32(vdupq_n_u32(0x00FFFFFFu)));
-    return vmaxvq_u8(m) <= d->c8;
-}
-
 #if !BLOOM_SMALL
 static void out8_neon(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
                       bool x4)
@@ -149,9 +133,8 @@ static void out8_neon(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
 }
 #endif
 
-const bloom_arm_kern_t bloom_arm_kern_neon = {down_v_neon, down_h_neon, up_v_neon, up_h_neon,
-                                              max3_neon,   lum8_neon,   dark_neon, BLOOM_ARM_OUT8(out8_neon),
-                                              "neon"};
+const bloom_arm_kern_t bloom_arm_kern_neon = {
+    down_v_neon, down_h_neon, up_v_neon, up_h_neon, max3_neon, lum8_neon, BLOOM_ARM_OUT8(out8_neon), "neon"};
 
 #else
 typedef int bloom_preset_arm_neon_unused_t;

@@ -154,23 +154,6 @@ static void lum8_sse2(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool 
     bloom_arm_kern_c.lum8(p, c4, c2, n, x4, i); /* the decode is table reads */
 }
 
-/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
- * least 16 bytes, by 16-byte loads, the last ending at the row's end. */
-static bool dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
-{
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
-        return bloom_row_dark(fmt, p, n, d);
-    __m128i m = LD(p + nb - 16);
-    for (int i = 0; i + 16 < nb; i += 16)
-        m = _mm_max_epu8(m, LD(p + i));
-    if (x4)
-        m = _mm_and_si128(m, _mm_set1_epi32(0x00FFFFFF));
-    const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
-    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) == 0xFFFF;
-}
-
 #if !BLOOM_SMALL
 static void out8_sse2(const uint8_t *src, const uint32_t *b, const uint32_t f[3], uint8_t *dst, int n,
                       bool x4)
@@ -179,9 +162,8 @@ static void out8_sse2(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
 }
 #endif
 
-const bloom_arm_kern_t bloom_arm_kern_sse2 = {down_v_sse2, down_h_sse2, up_v_sse2, up_h_sse2,
-                                              max3_sse2,   lum8_sse2,   dark_sse2, BLOOM_ARM_OUT8(out8_sse2),
-                                              "sse2"};
+const bloom_arm_kern_t bloom_arm_kern_sse2 = {
+    down_v_sse2, down_h_sse2, up_v_sse2, up_h_sse2, max3_sse2, lum8_sse2, BLOOM_ARM_OUT8(out8_sse2), "sse2"};
 
 #else
 typedef int bloom_preset_arm_sse2_unused_t;
