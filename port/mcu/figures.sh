@@ -270,11 +270,11 @@ for cpu in m4 m7; do
 done
 cat <<EOF
 
-Why $tlevels levels and not the default 5: a strip engine's workspace follows
-its source rectangle, the strip and its halo, and the halo grows as 2^L
-(\`halo_of\`, sim/docs/tiles.md). At 5 levels no strip width gets under
-64 KB, so 32 KB takes 4 levels (strips of 32 columns or fewer) or 3 (160 or
-fewer). Largest strip workspace on the Cortex-M4, bytes:
+Why $tlevels levels: a strip engine's workspace follows its source
+rectangle, the strip and its halo (\`halo_of\`, sim/docs/tiles.md), but
+each of its nodes makes only the columns its readers use (the output the
+strip, the down chain the halo's reach), so at the default 5 levels strips
+of 64 columns fit 32 KB. Largest strip workspace on the Cortex-M4, bytes:
 
 | levels | untiled | 320 | 256 | 160 | 128 | 64 | 32 | 16 |
 |---|---|---|---|---|---|---|---|---|

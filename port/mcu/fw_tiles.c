@@ -16,10 +16,10 @@
 #define TH 480
 #define TSTRIDE (TW * 2)
 #ifndef FW_TILE_LEVELS
-/* 4, not the default 5: at 5 levels the halo alone (every strip reads at
- * least 480 source columns) keeps a strip engine above 64 KB, so no strip
- * width gets under 32 KB (port/mcu/FIGURES.md, sim/docs/tiles.md). */
-#define FW_TILE_LEVELS 4
+/* the default 5 (the untiled engine needs more than the SRAM; strip
+ * engines make only the columns their readers use, so a strip of 64
+ * columns fits 32 KB: port/mcu/FIGURES.md, sim/docs/tiles.md) */
+#define FW_TILE_LEVELS 5
 #endif
 #ifndef FW_TILE_WS
 #define FW_TILE_WS 32768 /* the bound for the strip workspace */

@@ -4,6 +4,7 @@
  *
  * Every preset, the default included, is a graph of row stages built by its
  * hooks (bloom_preset_<name>.c); one scheduler runs them all. */
+#include <limits.h>
 #include <string.h>
 
 #include "bloom_engine.h"
@@ -163,6 +164,54 @@ static void window_side(int t, int tn, int n, int m, int align, int *a, int *b)
     *a = lo <= 0 ? 0 : (int)(lo / align * align);
     *b = hi >= n ? n : (int)imin(n, (int)((hi + align - 1) / align * align));
 }
+
+/* The columns each node of a tile's window makes: what its readers read,
+ * walked back from the output (the tile's columns; the output node is most
+ * of the work, and its halo columns would be thrown away). A node's first
+ * column xa is the first one needed less the pixels its kernels would
+ * spoil by clamping their reads at xa's input columns (an UP input read
+ * from column m + lo, m = x >> 1, spoils x < -2 lo; DOWN, 2x + lo:
+ * x < ceil(-lo / 2); SAME: x < -lo), even when it reads an UP input (the
+ * tents' weights go by the column's parity); none at the level's edge 0,
+ * where clamping is the edge rule. Its last is the last needed: its
+ * inputs are made as far as it reads, or to the edge, where the kernels'
+ * clamp at bg_in_w is the edge rule again. Without g->views only the
+ * output node is narrowed (every preset's output row function reads its
+ * widths by bg_in_w); the others make every column. */
+static void narrow_nodes(bloom_graph_t *g)
+{
+    int na[BG_MAX_NODES], nb[BG_MAX_NODES];
+    for (int i = 0; i < g->nnodes; i++)
+        na[i] = INT_MAX, nb[i] = INT_MIN;
+    na[g->out_node] = g->tile_x0;
+    nb[g->out_node] = g->tile_x1;
+    for (int i = g->out_node; i >= 0; i--) { /* readers come after their inputs */
+        bg_node_t *n = &g->node[i];
+        int a = 0, b = n->w, spoil = 0, up = 0;
+        if ((g->views || i == g->out_node) && na[i] < nb[i]) {
+            for (int j = 0; j < n->nin; j++) {
+                const int lo = n->in[j].lo, map = n->in[j].map;
+                spoil = imax(spoil, map == BG_UP ? -2 * lo : map == BG_DOWN ? (1 - lo) / 2 : -lo);
+                up |= map == BG_UP;
+            }
+            a = imax(0, na[i] - spoil);
+            a = up ? a & ~1 : a;
+            b = imin(n->w, nb[i]);
+        }
+        n->xa = a;
+        n->w = b - a;
+        for (int j = 0; j < n->nin; j++) {
+            const bg_input_t *in = &n->in[j];
+            if (in->node < 0)
+                continue;
+            const int m = in->map, f = in->node, wf = g->node[f].w;
+            const int first = m == BG_DOWN ? 2 * a : m == BG_SAME ? a : a >> 1;
+            const int last = (m == BG_DOWN ? 2 * (b - 1) : m == BG_SAME ? b - 1 : (b - 1) >> 1) + in->hi;
+            na[f] = imin(na[f], first);
+            nb[f] = imax(nb[f], imin(last + 1, wf));
+        }
+    }
+}
 #endif
 
 bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap)
@@ -184,6 +233,8 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
         g->tile_x1 = g->tile_x0 + cfg->tile_w;
         g->tile_y0 = cfg->tile_y - y0;
         g->tile_y1 = g->tile_y0 + cfg->tile_h;
+        if (st == BLOOM_OK)
+            narrow_nodes(g);
     }
 #endif
     if (st == BLOOM_OK)
@@ -223,7 +274,8 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
     }
     g->src_tag = (int32_t *)take(base, &off, ucap * sizeof(int32_t));
     if (bg_tiled(g))
-        g->out_row = (uint8_t *)take(base, &off, (uint64_t)g->w[0] * (uint64_t)bloom_bpp(g->cfg.out_fmt));
+        g->out_row = (uint8_t *)take(base, &off,
+                                     (uint64_t)g->node[g->out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
     g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
     if (base)
         g->src_cap = cap;
@@ -237,7 +289,7 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
         n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
         n->tag = (int32_t *)take(base, &off, (uint64_t)c * sizeof(int32_t));
         if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
-            n->cap = c;
+            n->cap = (int16_t)c;
             if (BLOOM_USE_SKIP)
                 memset(n->buf, 0, (size_t)words * sizeof *n->buf);
             /* every tag byte 0x40: the zero bit (bit 30) set in each tag,

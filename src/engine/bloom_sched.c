@@ -117,6 +117,15 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
             rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
                                : src_slot(g, from, slot);
         }
+#if !BLOOM_SMALL
+        if (g->tiled) { /* a tile's nodes: the input from the first column n reads on (bg_in_w) */
+            const int off = base_row(ip->map, n->xa) - (src ? src->xa : 0);
+            const size_t step = (size_t)off * (src ? src->ch * sizeof(uint32_t)
+                                                   : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g)));
+            for (int j = used - (ip->hi - ip->lo + 1); step && j < used; j++)
+                rows[j] = (const uint8_t *)rows[j] + step;
+        }
+#endif
         if (!BLOOM_USE_SKIP)
             continue;
         g->zin[i] = zm;
@@ -156,7 +165,7 @@ static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
     bg_node_t *n = &g->node[ni];
     const int r = n->next;
     if (g->dry)
-        n->need = imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
+        n->need = (int16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
     else
         make_row(g, n, r);
     n->next++;
@@ -259,8 +268,8 @@ bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
         run_row(g, o, y, g->out_row);
         if (g->failed)
             return BLOOM_E_INTERNAL;
-        memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp, g->out_row + (size_t)g->tile_x0 * bpp,
-               (size_t)(g->tile_x1 - g->tile_x0) * bpp);
+        memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp,
+               g->out_row + (size_t)(g->tile_x0 - o->xa) * bpp, (size_t)(g->tile_x1 - g->tile_x0) * bpp);
     }
     if (g->failed)
         return BLOOM_E_INTERNAL;

@@ -87,9 +87,15 @@ struct bg_node {
     /* ring (not for the output node) */
     uint32_t *buf;
     int32_t *tag;
-    int cap;
-    int next; /* next row to compute */
-    int need; /* dry run: largest occupancy */
+    int16_t cap;  /* ring rows (at most the node's height, <= BLOOM_MAX_DIM = 2^14) */
+    int16_t need; /* dry run: largest occupancy (the same bound); both 16 bits so
+                     that xa below costs no workspace, on 32-bit targets either */
+    int next;     /* next row to compute */
+    /* Columns xa .. xa + w - 1 of the level (at the node's resolution) are
+     * made: all of them (xa = 0) but in a tile's window, where a node makes
+     * only what its readers use (bloom_plan; g->views); its row function
+     * sees its inputs from the columns it reads first on (bg_in_w). */
+    int xa;
 };
 
 struct bloom {
@@ -110,6 +116,9 @@ struct bloom {
      * the output node writes out_row, the tile's part is copied out. */
     int frame_w, frame_h, win_x, win_y;
     bool tiled;
+    bool views; /* build hook: every row function reads its widths by bg_in_w (a
+                   tile's nodes then make only the columns read; else only the
+                   output node does) */
     int tile_x0, tile_x1, tile_y0, tile_y1;
     uint8_t *out_row;
     int out_rows; /* output rows given to the caller this frame */
@@ -189,6 +198,22 @@ static inline bool bg_tiled(const bloom_graph_t *g)
 {
     return !BLOOM_SMALL && g->tiled;
 }
+/* The width of input i of node n as n's row function sees it: from the
+ * first column n reads (its first column xa, halved for BG_UP, doubled for
+ * BG_DOWN) to the last the input made; the row function's input rows start
+ * at that column (tiles: bg_node_t.xa; else the input's width). */
+static inline int bg_in_w(const bloom_graph_t *g, const bg_node_t *n, int i)
+{
+    const int from = n->in[i].node;
+#if BLOOM_SMALL
+    return from < 0 ? g->w[0] : g->node[from].w;
+#else
+    const int end = from < 0 ? g->w[0] : g->node[from].xa + g->node[from].w;
+    const int map = n->in[i].map, xa = n->xa;
+    return end - (map == BG_DOWN ? 2 * xa : map == BG_SAME ? xa : xa >> 1);
+#endif
+}
+
 /* The window's first column and row in the frame (0 without tiles). */
 static inline int bg_win_x(const bloom_graph_t *g)
 {

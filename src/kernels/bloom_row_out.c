@@ -28,8 +28,9 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
     uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
-    for (int m0 = 0; m0 < sw; m0 += OUT_FAST_CH) {
-        const int n = imin(OUT_FAST_CH, sw - m0);
+    const int mw = (w + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
+    for (int m0 = 0; m0 < mw; m0 += OUT_FAST_CH) {
+        const int n = imin(OUT_FAST_CH, mw - m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
         const size_t c0 = (size_t)lo * 3u;
         uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
@@ -73,14 +74,15 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
                          void (*exact)(const uint32_t *const u[3], int odd, const uint32_t *add,
                                        uint32_t *dst, int x0, int n, int sw))
 {
-    if (x0 != 0 || sw < 2 || sw != (n + 1) / 2) {
+    if (x0 != 0 || sw < 2 || sw < (n + 1) / 2) {
         exact(u, odd, add, dst, x0, n, sw);
         return;
     }
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (TENT_CH + 2)], eo[6 * TENT_CH]; /* vb[3 j] is column m0 - 1 + j */
-    for (int m0 = 0; m0 < sw; m0 += TENT_CH) {
-        const int nn = imin(TENT_CH, sw - m0), np = imin(2 * nn, n - 2 * m0);
+    const int mw = (n + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
+    for (int m0 = 0; m0 < mw; m0 += TENT_CH) {
+        const int nn = imin(TENT_CH, mw - m0), np = imin(2 * nn, n - 2 * m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
         const size_t c0 = (size_t)lo * 3u;
         uint32_t in;
@@ -103,7 +105,7 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
                      uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
 #if !BLOOM_SMALL
-    if (k->vtent && sw >= 1 && sw == (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
         out_fast(k, u, odd, src, dst, w, sw, o);
         return;
     }

@@ -307,7 +307,7 @@ static inline uint32_t sat32(uint64_t v)
 static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
-    const int w = n->w, sw = g->node[n->in[1].node].w;
+    const int w = n->w, sw = bg_in_w(g, n, 1);
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
     const bool skip = g->skip;

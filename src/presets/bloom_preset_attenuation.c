@@ -44,8 +44,8 @@ static bool d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
         return false; /* zero times the factor */
     const uint32_t a = g->cfg.p.attenuation, fmin = g->cfg.p.max_reduction << 8;
     if (a == 0)
-        return true; /* the factor is exactly 1 */
-    const int w0 = g->w[0];
+        return true;                 /* the factor is exactly 1 */
+    const int w0 = bg_in_w(g, n, 1); /* the aux plane's columns from 2 xa on */
     for (int x = 0; x < n->w; x++) {
         uint32_t *p = row + 3 * x;
         if (x + 4 <= n->w && (x & 3) == 0) { /* four zero pixels stay zero: most of a dark scene */
@@ -90,6 +90,8 @@ static bloom_status_t validate(const bloom_config_t *cfg)
 static bloom_status_t build(bloom_graph_t *g)
 {
     bg_build_out_add(g, bg_build_updown(g, d1_atten, true));
+    if (!BLOOM_SMALL)
+        g->views = true; /* the stages and d1_atten read their widths by bg_in_w */
     /* the factor is at most 1: what the knee zeroes stays zero */
     g->dark_cut = bg_knee_cut(g);
     return BLOOM_OK;

@@ -231,7 +231,7 @@ static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
 static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = g->node[n->in[1].node].w, w = n->w, odd = r & 1;
+    const int sw = bg_in_w(g, n, 1), w = n->w, odd = r & 1;
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint32_t *s = bg_scratch(g, 2), *o = bg_scratch(g, 3);
     const bool add = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = g->out.debug;

@@ -384,7 +384,7 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     if (zero)
         memset(bl, 0, (size_t)w * 3u * sizeof *bl);
     else
-        g->kern.tent(u, r & 1, NULL, bl, 0, w, g->node[n->in[0].node].w); /* picked at bloom_init */
+        g->kern.tent(u, r & 1, NULL, bl, 0, w, bg_in_w(g, n, 0)); /* picked at bloom_init */
     const bool lin = g->out.linear;
     uint8_t *p = (uint8_t *)dst;
 #if !BLOOM_SMALL

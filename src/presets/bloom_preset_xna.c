@@ -246,8 +246,9 @@ static void out_fast(const bloom_graph_t *g, const uint32_t *const u[3], int odd
     xna_kawase_fn kawase;
     xna_screen_fn screen;
     xna_kernels(k->isa, &kawase, &screen);
-    for (int m0 = 0; m0 < sw; m0 += XNA_OUT_CH) {
-        const int nn = imin(XNA_OUT_CH, sw - m0);
+    const int mw = (w + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
+    for (int m0 = 0; m0 < mw; m0 += XNA_OUT_CH) {
+        const int nn = imin(XNA_OUT_CH, mw - m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns computed */
         const size_t c0 = (size_t)lo * 3u;
         const int x0 = 2 * m0, nx = imin(2 * nn, w - x0);
@@ -293,7 +294,7 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     uint8_t *out = (uint8_t *)dst;
     const bloom_out_t *o = &g->out;
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
-    const int w = n->w, sw = g->node[n->in[1].node].w;
+    const int w = n->w, sw = bg_in_w(g, n, 1);
     if (bg_in_zero(g, 1, 0, 2)) {
         bloom_row_copy_c(src, out, w, o);
         return true;

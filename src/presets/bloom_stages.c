@@ -20,7 +20,8 @@ bool bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *con
     return bloom_row_knee_c((uint32_t *)dst, n->w, &g->knee);
 #else
     /* the same (the SIMD kernels skip the box where the knee zeroes anyway) */
-    return g->kern.d1(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0], &g->knee, &g->dark);
+    return g->kern.d1(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0), &g->knee,
+                      &g->dark);
 #endif
 }
 
@@ -31,7 +32,7 @@ bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *co
     (void)r;
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    g->kern.box(s, (uint32_t *)dst, n->w, g->node[n->in[0].node].w);
+    g->kern.box(s, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
     return true;
 }
 
@@ -49,8 +50,7 @@ bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     }
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    g->kern.tent(u, r & 1, bg_in_zero(g, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w,
-                 g->node[n->in[0].node].w);
+    g->kern.tent(u, r & 1, bg_in_zero(g, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w, bg_in_w(g, n, 0));
     return true;
 }
 
@@ -62,7 +62,7 @@ bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void
                    void *dst)
 {
     const uint8_t *src = (const uint8_t *)in[1][0];
-    const int sw = g->node[n->in[0].node].w;
+    const int sw = bg_in_w(g, n, 0);
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     if (bg_in_zero(g, 0, 0, 2))
