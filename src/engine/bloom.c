@@ -173,9 +173,11 @@ static void window_side(int t, int tn, int n, int m, int align, int *a, int *b)
  * from column m + lo, m = x >> 1, spoils x < -2 lo; DOWN, 2x + lo:
  * x < ceil(-lo / 2); SAME: x < -lo), even when it reads an UP input (the
  * tents' weights go by the column's parity); none at the level's edge 0,
- * where clamping is the edge rule. Its last is the last needed: its
- * inputs are made as far as it reads, or to the edge, where the kernels'
- * clamp at bg_in_w is the edge rule again. Without g->views only the
+ * where clamping is the edge rule. Its last is the last needed plus, for a
+ * SAME input read to column x + hi, hi more (kernels that clamp at their
+ * own width, as a horizontal pass does); its inputs are made as far as it
+ * reads, or to the edge, where the kernels' clamp at bg_in_w (or at their
+ * own width) is the edge rule again. Without g->views only the
  * output node is narrowed (every preset's output row function reads its
  * widths by bg_in_w); the others make every column. */
 static void narrow_nodes(bloom_graph_t *g)
@@ -187,16 +189,17 @@ static void narrow_nodes(bloom_graph_t *g)
     nb[g->out_node] = g->tile_x1;
     for (int i = g->out_node; i >= 0; i--) { /* readers come after their inputs */
         bg_node_t *n = &g->node[i];
-        int a = 0, b = n->w, spoil = 0, up = 0;
+        int a = 0, b = n->w, spoil = 0, spoil_r = 0, up = 0;
         if ((g->views || i == g->out_node) && na[i] < nb[i]) {
             for (int j = 0; j < n->nin; j++) {
                 const int lo = n->in[j].lo, map = n->in[j].map;
                 spoil = imax(spoil, map == BG_UP ? -2 * lo : map == BG_DOWN ? (1 - lo) / 2 : -lo);
+                spoil_r = imax(spoil_r, map == BG_SAME ? n->in[j].hi : 0);
                 up |= map == BG_UP;
             }
             a = imax(0, na[i] - spoil);
             a = up ? a & ~1 : a;
-            b = imin(n->w, nb[i]);
+            b = imin(n->w, nb[i] + spoil_r);
         }
         n->xa = a;
         n->w = b - a;

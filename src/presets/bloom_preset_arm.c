@@ -135,10 +135,10 @@ static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y,
 /* D_1 pixels xa .. xb-1 (in[] as fn_d1): P = Y * mask of source columns
  * 2xa-1 .. 2xb-2+2 (clamped), their column sums, dual down, knee. Returns
  * the OR of the pixels made. */
-static uint32_t d1_range(const bloom_graph_t *g, const void *const *const in[BG_MAX_IN], uint32_t *dst,
-                         int xa, int xb)
+static uint32_t d1_range(const bloom_graph_t *g, const bg_node_t *n, const void *const *const in[BG_MAX_IN],
+                         uint32_t *dst, int xa, int xb)
 {
-    const int w0 = g->w[0], ca = imax(2 * xa - 1, 0), cb = imin(2 * xb, w0 - 1), nc = cb - ca + 1;
+    const int w0 = bg_in_w(g, n, 0), ca = imax(2 * xa - 1, 0), cb = imin(2 * xb, w0 - 1), nc = cb - ca + 1;
     uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *y = bg_scratch(g, 2);
     const bool u16 = g->aux_bpp == 2;
     const size_t bpp = (size_t)g->src_bpp;
@@ -192,10 +192,10 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
                   void *dst)
 {
     (void)r;
-    const int dw = n->w, w0 = g->w[0];
+    const int dw = n->w, w0 = bg_in_w(g, n, 0);
     uint32_t *d = (uint32_t *)dst;
     if (!g->dark_src)
-        return d1_range(g, in, d, 0, dw) != 0;
+        return d1_range(g, n, in, d, 0, dw) != 0;
     const size_t bpp = (size_t)g->src_bpp;
     const bloom_dark_fn dark_row = BLOOM_KERN_DARK(&g->kern);
     uint32_t any = 0;
@@ -210,12 +210,12 @@ static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
         if (!dark)
             continue; /* computed with its run */
         if (run < x)
-            any |= d1_range(g, in, d, run, x);
+            any |= d1_range(g, n, in, d, run, x);
         memset(d + x, 0, (size_t)(xe - x) * sizeof *d);
         run = xe;
     }
     if (run < dw)
-        any |= d1_range(g, in, d, run, dw);
+        any |= d1_range(g, n, in, d, run, dw);
     return any != 0;
 }
 
@@ -226,7 +226,7 @@ static bool fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
 {
     (void)r;
     const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
-    const int sw = g->node[n->in[0].node].w;
+    const int sw = bg_in_w(g, n, 0);
     uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1);
     K->down_v((const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2],
               (const uint32_t *)in[0][3], c4 + 1, c2 + 1, sw);
@@ -275,12 +275,12 @@ static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
                   void *dst)
 {
     const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
-    const int sw = g->node[n->in[0].node].w;
+    const int sw = bg_in_w(g, n, 0), np = imin(sw, (n->w + 1) / 2); /* (sw is more in a tile) */
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
-    up_av(K, u, r & 1, a, v, 0, sw - 1, sw);
-    return up_out(K, a, v, (uint32_t *)dst, 0, sw, n->w, 0) != 0;
+    up_av(K, u, r & 1, a, v, 0, imin(np, sw - 1), sw);
+    return up_out(K, a, v, (uint32_t *)dst, 0, np, n->w, 0) != 0;
 }
 
 /* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
@@ -483,6 +483,8 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, u, BG_UP, -1, 1);
     g->out_node = o;
     g->scratch_rows = 4;
+    if (!BLOOM_SMALL)
+        g->views = true; /* every row function reads its widths by bg_in_w */
     return BLOOM_OK;
 }
 

@@ -146,7 +146,7 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
                      const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
-    const int w0 = g->w[0], nw = 3 * w0;
+    const int w0 = bg_in_w(g, n, 0), nw = 3 * w0;
     cod_kernels_t k;
     cod_kernels(g->kern.isa, &k);
     uint32_t *dec = bg_scratch(g, 0), *vt = bg_scratch(g, 1), *vc = bg_scratch(g, 2), *vb = bg_scratch(g, 3);
@@ -178,7 +178,7 @@ static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
                  void *dst)
 {
     (void)r;
-    const int sw = g->node[n->in[0].node].w;
+    const int sw = bg_in_w(g, n, 0);
     cod_kernels_t k;
     cod_kernels(g->kern.isa, &k);
     const uint32_t *const rows[6] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
@@ -196,7 +196,7 @@ static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
 static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = g->node[n->in[1].node].w, w = n->w, odd = r & 1;
+    const int sw = bg_in_w(g, n, 1), w = n->w, odd = r & 1;
     const uint32_t *dk = (const uint32_t *)in[0][0];
     uint32_t *o = (uint32_t *)dst;
     const uint32_t c = n->k[0];
@@ -356,6 +356,8 @@ static bloom_status_t build(bloom_graph_t *g)
     }
     g->out_node = o;
     g->scratch_rows = 4; /* d1_karis's decoded row and column sums, out_cod's rows */
+    if (!BLOOM_SMALL)
+        g->views = true; /* every row function reads its widths by bg_in_w */
     return BLOOM_OK;
 }
 

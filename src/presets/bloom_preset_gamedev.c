@@ -97,9 +97,9 @@ static inline bool bright(const uint8_t *b, int x, int bpp)
  * sim/docs/presets/gamedev.md), the others boxed and thresholded in runs.
  * The test's bytes go to scratch row 0 (w0 * bpp + 20 bytes <= 12 w0 + 64). */
 static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t *const s[4], uint32_t *d,
-                      int w)
+                      int w, int w0)
 {
-    const int w0 = g->w[0], bpp = g->src_bpp;
+    const int bpp = g->src_bpp;
     uint8_t *b = (uint8_t *)bg_scratch(g, 0);
     memset(b, 0, 4);
     b += 4;
@@ -136,9 +136,9 @@ static bool gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
     const gd_kern_t *k = gd_kern_for(g->kern.isa);
     if (g->dark_src && k->bright &&
         (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888))
-        return d1_blocks(g, k, s, (uint32_t *)dst, n->w);
+        return d1_blocks(g, k, s, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
 #endif
-    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
+    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
     return threshold_row((uint32_t *)dst, n->w, g->knee.t);
 }
 
@@ -177,7 +177,7 @@ static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
         /* the engine's tent, C or its SIMD twin (same bits), picked once at
          * bloom_init: picking it per row ran CPUID per row (a VM exit each
          * under virtualisation: 12x the default's time at 1080p) */
-        g->kern.tent(u, r & 1, dz ? NULL : out, out, 0, n->w, g->node[n->in[0].node].w);
+        g->kern.tent(u, r & 1, dz ? NULL : out, out, 0, n->w, bg_in_w(g, n, 0));
     }
     return true;
 }
@@ -523,6 +523,8 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     g->out_node = o;
     g->scratch_rows = 2; /* the Gaussian's vertical pass, the output's bloom row */
+    if (!BLOOM_SMALL)
+        g->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
     return BLOOM_OK;
 }
 

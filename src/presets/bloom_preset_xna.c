@@ -55,9 +55,10 @@ static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
 #if BLOOM_SMALL
-    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
+    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
 #else
-    g->kern.box_src(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, 0, n->w, g->w[0]); /* C or AVX2 */
+    g->kern.box_src(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, 0, n->w,
+                    bg_in_w(g, n, 0)); /* C or AVX2 */
 #endif
     return true;
 }
@@ -78,7 +79,7 @@ static bool fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
     }
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    g->kern.box(s, row, n->w, g->node[n->in[0].node].w); /* C or SIMD, same bits */
+    g->kern.box(s, row, n->w, bg_in_w(g, n, 0)); /* C or SIMD, same bits */
     const uint32_t t = g->knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
     uint32_t any = 0;
     for (int i = 0; i < cnt; i++) {
@@ -195,7 +196,7 @@ static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    g->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, g->node[n->in[0].node].w);
+    g->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, bg_in_w(g, n, 0));
     return true;
 }
 
@@ -402,6 +403,8 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, up, BG_UP, -1, 1);
     g->out_node = o;
     g->scratch_rows = 1; /* fn_kawase's column sums */
+    if (!BLOOM_SMALL)
+        g->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
     return BLOOM_OK;
 }
 
