@@ -3,8 +3,9 @@
  *
  * Modules: cam_opts.c (command line), cam_conv.c (row conversion, pure
  * framebuffer logic), cam_aux.c (the --aux plane of the presets), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
- * main.c (frame loop, signals, statistics, recording). Everything is
- * allocated before the first frame; the frame loop allocates nothing. */
+ * main.c (frame loop, signals, statistics, recording), cam_mt.c (whole
+ * frames on threads, --threads N > 1). Everything is allocated before the
+ * first frame; the frame loop allocates nothing. */
 #ifndef BLOOM_CAM_H
 #define BLOOM_CAM_H
 
@@ -48,6 +49,7 @@ typedef struct {
     long frames;                /* --frames N, 0 = until a signal */
     int buffers;                /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
     int timeout_ms;             /* --timeout MS for poll (default 2000) */
+    int threads;                /* --threads N, 0 (default): the online CPUs; 1: the row path */
     enum cam_mode mode;         /* --mode bloom|off|bloom-only */
     int stats;                  /* --stats */
     int quiet;                  /* -q */
@@ -174,5 +176,33 @@ int cam_gpio_button_fd(cam_gpio_t *g); /* -1 without a button */
 /* Read the pending edge events; returns how many presses (falling edges). */
 int cam_gpio_button_presses(cam_gpio_t *g);
 void cam_gpio_close(cam_gpio_t *g);
+
+/* ---- whole frames on threads (cam_mt.c) ------------------------------------
+ * --threads N > 1: each captured frame converted once into an RGB888 frame
+ * (RGB24 captures read in place), rendered by a port/threads pool of N
+ * strip engines per mode, straight into the page when the screen shows the
+ * whole frame, else into an output frame whose shown part is copied. */
+struct bloom_mt;
+typedef struct {
+    int tiles;                           /* of each pool (bloom_mt_tiles) */
+    struct bloom_mt *mt[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show */
+    void *buf[CAM_MODE_COUNT];           /* each pool's one buffer (bloom_mt_size) */
+    uint8_t *rgb;                        /* the converted frame (YUYV, GREY); NULL for RGB24 */
+    uint8_t *out;                        /* the output frame when the screen shows part of it */
+    size_t rgb_stride, out_stride, frame_bytes;
+} cam_mt_t;
+
+/* The frame buffers for this capture and screen: 0, or -1 after a message. */
+int cam_mt_frames(cam_mt_t *t, const cam_v4l2_t *cap, const cam_fb_t *fb, const cam_place_t *p);
+/* Mode m's pool of n threads for cfg (RGB888 in, the screen's format out),
+ * reading aux (row 0, stride) when not NULL; *bytes its buffer. 0, or -1
+ * after a message naming the call and the status. */
+int cam_mt_mode(cam_mt_t *t, enum cam_mode m, const bloom_config_t *cfg, int n, const uint8_t *aux,
+                size_t aux_stride, size_t *bytes);
+/* One captured frame (data, as cap describes it) in mode m onto page, placed
+ * as p says. 0, or -1 after a message. */
+int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const uint8_t *data,
+                   const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
+void cam_mt_close(cam_mt_t *t); /* joins every pool, frees everything; t zeroed */
 
 #endif

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bloom_mt.h"
 #include "cam.h"
 
 void cam_usage(void *stream)
@@ -36,6 +37,10 @@ void cam_usage(void *stream)
           "  --frames N            stop after N frames (default: until SIGINT/SIGTERM)\n"
           "  --buffers N           capture buffers, 2..16 (default 4)\n"
           "  --timeout MS          longest wait for a frame (default 2000)\n"
+          "  --threads N           N strips of each frame on N threads, 0..64 (0, default: the\n"
+          "                        online CPUs); 1: row by row as the camera delivers them\n"
+          "                        (lowest latency and memory); more: whole frames, the same\n"
+          "                        bytes on the screen, an RGB888 frame more for YUYV and GREY\n"
           "  --gpio-frame CHIP:LINE   output held high while a frame is processed\n"
           "  --gpio-button CHIP:LINE  input (pull-up, active low): each press cycles the mode\n"
           "  --stats               fps, dropped frames, processing time per frame\n"
@@ -137,11 +142,13 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
     return 0;
 }
 
-static const char *const with_value[] = {
-    "--device",    "--fb",      "--size",    "--format",   "--levels",  "--threshold",   "--knee",
-    "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
-    "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
-    "--aux",       "--tint",    "--weights", "--radius",   NULL};
+static const char *const with_value[] = {"--device",        "--fb",          "--size",    "--format",
+                                         "--levels",        "--threshold",   "--knee",    "--intensity",
+                                         "--mode",          "--frames",      "--buffers", "--timeout",
+                                         "--gpio-frame",    "--gpio-button", "--record",  "--dump-fb",
+                                         "--preset",        "--strength",    "--passes",  "--attenuation",
+                                         "--max-reduction", "--aux",         "--tint",    "--weights",
+                                         "--radius",        "--threads",     NULL};
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -395,6 +402,11 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             if (parse_long(v, 1, 3600000L, &l))
                 return fail(err, errlen, "--timeout: '%s' is not 1..3600000 ms", v);
             o->timeout_ms = (int)l;
+        } else if (!strcmp(name, "--threads")) {
+            if (parse_long(v, 0, BLOOM_MT_MAX_THREADS, &l))
+                return fail(err, errlen, "--threads: '%s' is not 0..%d (0: the online CPUs)", v,
+                            BLOOM_MT_MAX_THREADS);
+            o->threads = (int)l;
         } else if (!strcmp(name, "--gpio-frame") || !strcmp(name, "--gpio-button")) {
             cam_gpio_spec_t *g = name[7] == 'f' ? &o->gpio_frame : &o->gpio_button;
             if (parse_gpio(v, g))

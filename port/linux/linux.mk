@@ -2,10 +2,12 @@
 # through libgpiod v1). Included by the top Makefile.
 #   make bloom_cam          build/bloom_cam (with GPIO when libgpiod 1.x is installed)
 #   make bloom_cam_static   build/linux/bloom_cam.static (for an initramfs or a board)
-#   make test-linux-host    pure parts, no device needed (a CHECKS target of make test)
+#   make test-linux-host    pure parts and the --threads frame path, no device needed
+#                           (a CHECKS target of make test)
 #   make test-linux         against the kernel's own vivid/bochs-drm/vfb drivers
 #                           under qemu-system-x86_64 (port/linux/kernel/run.sh),
 #                           also a CHECKS target of make test
+#   make bench-cam          row by row against --threads, this machine, no device
 #
 # Debian packages: libgpiod-dev (optional: without it --gpio-* are refused);
 # for test-linux also qemu-system-x86, busybox-static (installed by run.sh
@@ -14,11 +16,17 @@
 # linux-headers-KVER with its -common and linux-kbuild, linux-source.
 
 CAM_DIR := port/linux
+# --threads: port/threads' pool (bloom_mt.c, -pthread). The paths are spelt
+# here: threads.mk is included after this file, and a rule's prerequisites
+# are expanded as it is read.
+CAM_MT_SRC := port/threads/bloom_mt.c
+CAM_MT_HDR := port/threads/bloom_mt.h
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
            $(CAM_DIR)/cam_aux.c \
-           $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c
-CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h
-CAM_CPPFLAGS := $(CPPFLAGS_CORE) -D_POSIX_C_SOURCE=200809L
+           $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
+CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_MT_HDR)
+CAM_CPPFLAGS := $(CPPFLAGS_CORE) -Iport/threads -D_POSIX_C_SOURCE=200809L
+CAM_THREAD_LIBS := -pthread
 # libgpiod: the v1 API (1.x) only; v2 or none compiles the GPIO module out.
 CAM_GPIOD_VER := $(shell pkg-config --modversion libgpiod 2>/dev/null)
 ifneq ($(filter 1.%,$(CAM_GPIOD_VER)),)
@@ -38,44 +46,63 @@ CHECKS += test-linux-host
 # N skipped") for each case it cannot run where they, the kernel packages or
 # gpio-sim cannot be had; under CI=true those are failures instead.
 CHECKS += test-linux
-.PHONY: bloom_cam bloom_cam_static test-linux-host test-linux linux-clang
+.PHONY: bloom_cam bloom_cam_static test-linux-host test-linux linux-clang bench-cam
 
 bloom_cam: $(B)/bloom_cam
 bloom_cam_static: $(B)/linux/bloom_cam.static
 
 $(B)/bloom_cam: $(CAM_SRC) $(CAM_HDR) $(B)/libbloom.a
 	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC) $(B)/libbloom.a \
-	  $(CAM_GPIO_LIBS) -o $@
+	  $(CAM_GPIO_LIBS) $(CAM_THREAD_LIBS) -o $@
 
 # Static, for the test initramfs (and boards without the shared libraries).
 $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -static $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC) $(CORE_SRC) \
-	  $(CAM_GPIO_LIBS) -o $@
+	  $(CAM_GPIO_LIBS) $(CAM_THREAD_LIBS) -o $@
 
 # Host tests of the pure parts, sanitized, against the simulator's own
 # Y'CbCr rule (sim/sim_convert.c) and a double reference, and of
 # cam_v4l2_dequeue's faults through the ioctl/poll seam in cam_v4l2_t (a
 # scripted fake, no device). The GPIO module is
 # built out here so the refusal of --gpio-* is what is tested.
+# test_cam_mt: the --threads frame path (cam_mt.c on the real pool) against
+# the untiled engine, every format, placement and mode, under the sanitizers.
 CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c \
                 $(CAM_DIR)/cam_aux.c \
                 $(CAM_DIR)/v4l2.c
 $(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) sim/sim_convert.c sim/sim.h \
                           $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_TEST_SRC) \
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads -DCAM_NO_GPIOD $(CAM_TEST_SRC) \
 	  sim/sim_convert.c $(SIM_SRC) $(CORE_SRC) -lm -o $@
+
+CAM_MT_TEST_SRC := $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_MT_SRC)
+$(B)/linux/test_cam_mt: $(CAM_MT_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) tests/harness.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads $(CAM_MT_TEST_SRC) $(CORE_SRC) -lm \
+	  $(CAM_THREAD_LIBS) -o $@
+
+# make bench-cam: the two frame paths on this machine (port/linux/bench_cam.c),
+# 640x480 and 1920x1080 by default; BENCH_CAM_ARGS='1280x720 -t 3' for others.
+$(B)/linux/bench_cam: $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_MT_SRC) $(CAM_HDR) \
+                      $(B)/libbloom.a
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c \
+	  $(CAM_MT_SRC) $(B)/libbloom.a $(CAM_THREAD_LIBS) -o $@
+bench-cam: $(B)/linux/bench_cam
+	@$(B)/linux/bench_cam $(BENCH_CAM_ARGS)
 
 # clang, warnings as errors, both GPIO variants (a compile check).
 linux-clang:
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC)
-	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC)
-	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) $(CAM_DIR)/test_host.c
+	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC) $(CAM_DIR)/bench_cam.c
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_cam_mt.c
 
-test-linux-host: $(B)/linux/test_cam_host $(B)/bloom_cam
+test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/bloom_cam
 	@$(MAKE) --no-print-directory linux-clang >/dev/null
 	@$(B)/linux/test_cam_host
+	@$(B)/linux/test_cam_mt
 	@sh $(CAM_DIR)/test_cli.sh $(B)/bloom_cam
 
 test-linux: $(B)/linux/bloom_cam.static $(B)/bloom_sim

@@ -3,7 +3,9 @@
  * (YUYV and GREY converted one row at a time into a line buffer, the engine
  * copying what it keeps; RGB24 rows straight from the capture buffer), pull
  * output rows straight into the framebuffer page being drawn, drop the line,
- * pan, requeue. All memory is taken before the first frame. */
+ * pan, requeue. With --threads N > 1 the frame goes whole through a pool of
+ * strip engines instead (cam_mt.c). All memory is taken before the first
+ * frame. */
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -15,6 +17,7 @@
 
 #include <linux/videodev2.h>
 
+#include "bloom_mt.h"
 #include "cam.h"
 
 static volatile sig_atomic_t stop_signal;
@@ -39,6 +42,8 @@ typedef struct {
     cam_place_t place;
     int rec_fd;
     uint8_t *last_page;
+    int threads; /* tiles per frame: 1 the row path (eng), more the pools (mt) */
+    cam_mt_t mt;
 } cam_t;
 
 static double now_s(void)
@@ -73,6 +78,13 @@ static int make_engines(cam_t *c)
         }
         c->o.aux_fmt = f;
         c->aux_stride = (size_t)c->cap.width * (f == BLOOM_AUX_U16 ? 2u : 1u);
+    }
+    { /* --threads: 0 the online CPUs; a frame too small for them gets fewer */
+        bloom_config_t cfg;
+        cam_opts_config(&c->o, c->cap.width, c->cap.height, &cfg);
+        c->threads = bloom_mt_tiles_for(&cfg, c->o.threads ? c->o.threads : bloom_mt_cpus());
+        if (c->threads > 1 && cam_mt_frames(&c->mt, &c->cap, &c->fb, &c->place))
+            return -1;
     }
     for (int m = 0; m < CAM_MODE_COUNT; m++) {
         bloom_config_t cfg;
@@ -109,6 +121,23 @@ static int make_engines(cam_t *c)
             return -1;
         }
         c->eng_aux[m] = cfg.aux_fmt != BLOOM_AUX_NONE;
+        if (c->threads > 1) { /* whole frames: nothing to copy */
+            size_t bytes;
+            cfg.flags &= ~(uint32_t)BLOOM_FLAG_COPY_SOURCE;
+            if (cam_mt_mode(&c->mt, (enum cam_mode)m, &cfg, c->threads, c->eng_aux[m] ? c->aux : NULL,
+                            c->aux_stride, &bytes))
+                return -1;
+            if (m == CAM_MODE_BLOOM && !c->o.quiet)
+                fprintf(stderr,
+                        "%s: engine: preset %s%s%s, %d levels, %d threads (%d %s), workspace %zu bytes, "
+                        "frame buffers %zu bytes (in: %s, out: %s)\n",
+                        CAM_PROG, bloom_preset_name(cfg.preset), c->o.aux ? ", aux plane " : "",
+                        c->o.aux ? c->o.aux : "", info.levels, c->threads, c->mt.tiles,
+                        c->cap.width / c->mt.tiles >= BLOOM_MT_MIN_STRIP ? "strips" : "tiles", bytes,
+                        c->mt.frame_bytes, c->mt.rgb ? "an RGB888 frame" : "the capture read in place",
+                        c->mt.out ? "a frame, the shown part copied" : "straight to the page");
+            continue;
+        }
         size_t n = (info.workspace_bytes + 63) / 64 * 64;
         c->ws[m] = aligned_alloc(64, n);
         if (!c->ws[m]) {
@@ -121,7 +150,9 @@ static int make_engines(cam_t *c)
             return -1;
         }
         if (m == CAM_MODE_BLOOM && !c->o.quiet)
-            fprintf(stderr, "%s: engine: preset %s%s%s, %d levels, workspace %zu bytes, latency %d rows%s\n",
+            fprintf(stderr,
+                    "%s: engine: preset %s%s%s, %d levels, 1 thread (row by row), workspace %zu bytes, "
+                    "latency %d rows%s\n",
                     CAM_PROG, bloom_preset_name(cfg.preset), c->o.aux ? ", aux plane " : "",
                     c->o.aux ? c->o.aux : "", info.levels, info.workspace_bytes, info.latency_rows,
                     (cfg.flags & BLOOM_FLAG_COPY_SOURCE) ? ", source rows copied" : "");
@@ -228,7 +259,7 @@ static int run(cam_t *c)
                 for (int k = 0; k < n; k++) /* skipping a mode the preset cannot show */
                     do
                         mode = (enum cam_mode)(((int)mode + 1) % CAM_MODE_COUNT);
-                    while (!c->eng[mode]);
+                    while (!c->eng[mode] && !c->mt.mt[mode]);
                 if (!c->o.quiet)
                     fprintf(stderr, "%s: mode %s\n", CAM_PROG, cam_mode_name(mode));
             }
@@ -257,7 +288,8 @@ static int run(cam_t *c)
         uint8_t *page = cam_fb_draw_page(&c->fb);
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
-        int pr = process(c, mode, f.data, page);
+        int pr = c->threads > 1 ? cam_mt_process(&c->mt, mode, &c->cap, f.data, &c->fb, &c->place, page)
+                                : process(c, mode, f.data, page);
         double dt = now_s() - p0;
         cam_gpio_frame(c->gpio, 0);
         c->last_page = page;
@@ -358,13 +390,13 @@ int main(int argc, char **argv)
     if (!c.o.quiet)
         fprintf(stderr,
                 "%s: %s (%s, %s): %dx%d %s, bytesperline %u, sizeimage %u, %d buffers\n"
-                "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown\n",
+                "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown from %d,%d\n",
                 CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height,
                 cam_format_name(c.o.format), (unsigned)c.cap.bytesperline, (unsigned)c.cap.sizeimage,
                 c.cap.nbufs, CAM_PROG, c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
                 c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
-                c.place.w, c.place.h);
+                c.place.w, c.place.h, c.place.src_x, c.place.src_y);
     status = run(&c) ? 1 : 0;
     if (c.o.dump_fb && dump_fb(&c))
         status = 1;
@@ -376,6 +408,7 @@ out:
         fprintf(stderr, "%s: close %s: %s\n", CAM_PROG, c.o.record, strerror(errno));
         status = 1;
     }
+    cam_mt_close(&c.mt);
     for (int m = 0; m < CAM_MODE_COUNT; m++)
         free(c.ws[m]);
     free(c.line);

@@ -16,6 +16,13 @@ expect() { # want_status want_text args...
     fi
 }
 expect 0 "usage: bloom_cam" --help
+expect 0 "  --threads N           N strips of each frame on N threads, 0..64 (0, default: the" --help
+expect 2 "bloom_cam: --threads: '65' is not 0..64 (0: the online CPUs)" --threads 65
+expect 2 "bloom_cam: --threads: 'x' is not 0..64 (0: the online CPUs)" --threads x
+# a valid count gets as far as the device, whatever it is
+for n in 0 1 3; do
+    expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --threads "$n" --device /nonexistent/video9
+done
 expect 2 "bloom_cam: unknown option '--nope'" --nope
 expect 2 "bloom_cam: --format: 'mjpeg' is not yuyv, rgb24 or grey" --format mjpeg
 expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9

@@ -37,7 +37,8 @@ static void test_opts(void)
     CHECKF(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
                o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
                o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) && o.intensity == BLOOM_Q16(1.0) &&
-               o.frames == 0 && o.buffers == 4 && o.mode == CAM_MODE_BLOOM && !o.stats && !o.record,
+               o.frames == 0 && o.buffers == 4 && o.mode == CAM_MODE_BLOOM && !o.stats && !o.record &&
+               o.threads == 0,
            "defaults");
 
     char *argv[] = {"bloom_cam",
@@ -76,6 +77,11 @@ static void test_opts(void)
            "full command line values");
     CHECKF(parse(&o, err, "--format", "grey", NULL, NULL) == 0 && o.format == CAM_FMT_GREY, "grey");
     CHECKF(parse(&o, err, "--help", NULL, NULL, NULL) == 1, "help");
+    static const char *const thr[] = {"0", "1", "3", "64"};
+    for (int k = 0; k < 4; k++) /* 0: the online CPUs, resolved when the capture size is known */
+        CHECKF(parse(&o, err, "--threads", thr[k], NULL, NULL) == 0 && o.threads == atoi(thr[k]),
+               "--threads %s: %s", thr[k], err);
+    CHECKF(parse(&o, err, "--threads=2", "--format", "grey", NULL) == 0 && o.threads == 2, "--threads=2");
 
     static const struct {
         const char *a0, *a1, *a2, *a3, *msg;
@@ -91,6 +97,12 @@ static void test_opts(void)
         {"--intensity", "-1", NULL, NULL, "--intensity"},
         {"--intensity", "nan", NULL, NULL, "--intensity"},
         {"--buffers", "1", NULL, NULL, "--buffers: '1' is not 2..16"},
+        {"--threads", "65", NULL, NULL, "--threads: '65' is not 0..64 (0: the online CPUs)"},
+        {"--threads", "-1", NULL, NULL, "--threads: '-1' is not 0..64"},
+        {"--threads", "two", NULL, NULL, "--threads: 'two' is not 0..64"},
+        {"--threads", "2.5", NULL, NULL, "--threads: '2.5' is not 0..64"},
+        {"--threads=", NULL, NULL, NULL, "--threads: '' is not 0..64"},
+        {"--threads", NULL, NULL, NULL, "--threads needs a value"},
         {"--frames", "x", NULL, NULL, "--frames"},
         {"--mode", "glow", NULL, NULL, "--mode"},
         {"--device", NULL, NULL, NULL, "--device needs a value"},

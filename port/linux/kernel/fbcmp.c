@@ -5,7 +5,9 @@
  * equal framebuffer bits). Prints "identical" or the first difference.
  * With STRIDE X Y the dump is a whole screen page (rows of STRIDE bytes, as
  * fbgrab writes it) and the frame is the W x H one at X,Y (the GStreamer
- * cases: fbdevsink centres the video). */
+ * cases: fbdevsink centres the video). With part X Y H the dump is the
+ * W x H the screen showed of a larger frame (bloom_cam cropping a capture
+ * larger than the screen), compared with the simulator's frame at X,Y. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,17 +19,29 @@ static unsigned expand(unsigned c, unsigned max)
 
 int main(int argc, char **argv)
 {
-    if (argc != 5 && argc != 8) {
-        fprintf(stderr, "usage: fbcmp FBDUMP rgb565|xrgb8888 W SIM.ppm [STRIDE X Y]\n");
+    const int part = argc == 9 && !strcmp(argv[5], "part");
+    if (argc != 5 && argc != 8 && !part) {
+        fprintf(stderr, "usage: fbcmp FBDUMP rgb565|xrgb8888 W SIM.ppm [STRIDE X Y | part X Y H]\n");
         return 2;
     }
     const int is565 = !strcmp(argv[2], "rgb565"), bpp = is565 ? 2 : 4;
     FILE *a = fopen(argv[1], "rb"), *b = fopen(argv[4], "rb");
     int w, h, maxv;
-    if (!a || !b || fscanf(b, "P6 %d %d %d", &w, &h, &maxv) != 3 || maxv != 255 || fgetc(b) == EOF ||
-        w != atoi(argv[3])) {
-        fprintf(stderr, "fbcmp: cannot read %s or %s (or widths differ)\n", argv[1], argv[4]);
+    const long px = part ? atol(argv[6]) : 0, py = part ? atol(argv[7]) : 0;
+    const int fw = atoi(argv[3]), fh = part ? atoi(argv[8]) : 0;
+    int good = a && b && fscanf(b, "P6 %d %d %d", &w, &h, &maxv) == 3 && maxv == 255 && fgetc(b) != EOF;
+    if (good && part) /* the shown part lies within the simulator's frame */
+        good = px >= 0 && py >= 0 && fw >= 1 && fh >= 1 && px + fw <= w && py + fh <= h;
+    else if (good)
+        good = w == fw;
+    if (!good) {
+        fprintf(stderr, "fbcmp: cannot read %s or %s (or the sizes do not fit)\n", argv[1], argv[4]);
         return 2;
+    }
+    const long ppm0 = ftell(b), ppm_w = w; /* the simulator's frame: its first pixel, its width */
+    if (part) {
+        w = fw;
+        h = fh;
     }
     const int crop = argc == 8;
     const long stride = crop ? atol(argv[5]) : 0, x0 = crop ? atol(argv[6]) : 0,
@@ -37,6 +51,10 @@ int main(int argc, char **argv)
         for (int x = 0; x < w; x++) {
             if (crop && x == 0 && fseek(a, (y0 + y) * stride + x0 * bpp, SEEK_SET)) {
                 fprintf(stderr, "fbcmp: %s: cannot seek to row %ld\n", argv[1], y0 + y);
+                return 1;
+            }
+            if (part && x == 0 && fseek(b, ppm0 + ((py + y) * ppm_w + px) * 3, SEEK_SET)) {
+                fprintf(stderr, "fbcmp: %s: cannot seek to row %ld\n", argv[4], py + y);
                 return 1;
             }
             unsigned char p[4], q[3];
@@ -72,6 +90,8 @@ int main(int argc, char **argv)
     }
     if (crop)
         printf("identical (%dx%d at %ld,%ld)\n", w, h, x0, y0);
+    else if (part)
+        printf("identical (%dx%d of the frame at %ld,%ld)\n", w, h, px, py);
     else
         printf("identical (%dx%d)\n", w, h);
     return 0;

@@ -30,17 +30,20 @@ for v in /sys/class/video4linux/video*; do
 done
 fb16=$(fb_by_id "$FB16_ID"); fb32=$(fb_by_id "$FB32_ID"); fbx=$(fb_by_id "$FBX_ID")
 log "capture $vid, 16 bpp $fb16 ($FB16_ID), 32 bpp $fb32 ($FB32_ID), XBGR $fbx ($FBX_ID)"
+cpus=$(grep -c '^processor' /proc/cpuinfo)
+log "cpus: $cpus"
 for f in /sys/class/graphics/fb[0-9]*; do log "${f##*/}: $(cat $f/name) $(cat $f/virtual_size) $(cat $f/bits_per_pixel) bpp"; done
 [ -n "$vid" ] && [ -n "$fb16" ] && [ -n "$fb32" ] && [ -n "$fbx" ] || { log "devices missing"; finish 1; }
 /vctl "$vid" "OSD Text Mode" 2 2>>/out/guest.log
 
-# name format fb extra-options...: capture -> bloom -> framebuffer
+# name format fb extra-options...: capture -> bloom -> framebuffer, row by
+# row (--threads 1) unless the options say otherwise
 run() {
     name=$1; fmt=$2; fb=$3; shift 3
     pan=/sys/class/graphics/${fb#/dev/}/pan
     /bloom_cam --device "$vid" --fb "$fb" --format "$fmt" --size "$SIZE" --frames "$FRAMES" \
         --threshold 0.6 --intensity 1.5 --record "/out/$name.raw" --dump-fb "/out/$name.fb" \
-        --stats "$@" > "/out/$name.txt" 2>&1 &
+        --stats --threads 1 "$@" > "/out/$name.txt" 2>&1 &
     pid=$!; seen=""
     # the pan offsets seen while it runs (shell builtins only: no fork per look)
     while [ -e /proc/$pid/stat ] && read -r _ _ st _ < /proc/$pid/stat && [ "$st" != Z ]; do
@@ -67,6 +70,19 @@ if [ "$ATT" = 1 ]; then
     run att-size yuyv "$fb16" --preset attenuation --aux /depth240.pgm
 fi
 for p in $PRESETS; do run "preset-$p" yuyv "$fb16" --preset "$p"; done
+# --threads: the cases above on the pool of strip engines (cam_mt.c), both
+# screens, every capture format and mode, the aux plane, every preset
+run yuyv-16-t2 yuyv "$fb16" --threads 2
+run rgb24-32-t3 rgb24 "$fb32" --threads 3
+run grey-32-t2 grey "$fb32" --threads 2
+run bloomonly-16-t3 yuyv "$fb16" --mode bloom-only --threads 3
+run off-32-t2 rgb24 "$fb32" --mode off --threads 2
+[ "$ATT" = 1 ] && run att-16-t3 yuyv "$fb16" --preset attenuation --aux /depth.pgm --threads 3
+for p in $PRESETS; do run "preset-$p-t2" yuyv "$fb16" --preset "$p" --threads 2; done
+# a capture larger than the screen (1280x720 on 720x576): cropped around the
+# centre, through the scratch row (row by row) or the output frame (threads)
+run crop-16 yuyv "$fb16" --size 1280x720
+run crop-16-t2 yuyv "$fb16" --size 1280x720 --threads 2
 # the GStreamer element (gst_cases.sh): vivid in the screen's own format ->
 # tee -> the frames recorded, and bloom -> fbdevsink on the zeroed screen,
 # read back after (fbgrab: "fb: xres yres xoffset yoffset line_length bpp");
@@ -96,9 +112,13 @@ if [ "$GST" = 1 ]; then
     gst gst-32 BGRx "$fb32"
     /vctl "$vid" "Horizontal Movement" 3 2>>/out/guest.log
 fi
-# speed under emulation, 640x480 YUYV to the 32 bpp screen
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q > /out/speed.txt 2>&1
+# speed under emulation, 640x480 YUYV to the 32 bpp screen: without
+# --threads (the guest's CPUs), then row by row
+echo "cpus: $cpus" > /out/speed.txt
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats >> /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q --threads 1 > /out/speed-t1.txt 2>&1
+echo "exit $?" >> /out/speed-t1.txt
 
 # GPIO through gpio-sim (configfs), when run.sh could build it: a bank of two
 # lines, "frame" (bloom_cam's output) and "button" (an input whose pull is
@@ -144,23 +164,28 @@ if [ "$GPIO" = 1 ]; then
     # recorded a frame, so the request returned) and its pull-up reads 1, a
     # pull-down from sysfs is a press: bloom -> off; stopped after a frame
     # recorded after the switch was announced, so the last frame shown is "off"
-    /bloom_cam --device "$vid" --fb "$fb16" --format yuyv --size "$SIZE" \
-        --threshold 0.6 --intensity 1.5 --gpio-button "$chip:button" \
-        --record /out/button.raw --dump-fb /out/button.fb > /out/button.txt 2>&1 &
-    pid=$!
-    if wait_for '[ -s /out/button.raw ] && [ "$(cat $sim/sim_gpio1/value)" = 1 ]'; then
-        echo pull-down > $sim/sim_gpio1/pull
-        if wait_for 'grep -q "mode off" /out/button.txt'; then
-            s0=$(wc -c < /out/button.raw)
-            wait_for '[ "$(wc -c < /out/button.raw)" -gt "$s0" ]' || log "button: no frame after the switch"
+    button() { # name options...
+        b=$1; shift
+        /bloom_cam --device "$vid" --fb "$fb16" --format yuyv --size "$SIZE" \
+            --threshold 0.6 --intensity 1.5 --gpio-button "$chip:button" \
+            --record /out/$b.raw --dump-fb /out/$b.fb "$@" > /out/$b.txt 2>&1 &
+        pid=$!
+        if wait_for '[ -s /out/$b.raw ] && [ "$(cat $sim/sim_gpio1/value)" = 1 ]'; then
+            echo pull-down > $sim/sim_gpio1/pull
+            if wait_for 'grep -q "mode off" /out/$b.txt'; then
+                s0=$(wc -c < /out/$b.raw)
+                wait_for '[ "$(wc -c < /out/$b.raw)" -gt "$s0" ]' || log "$b: no frame after the switch"
+            else
+                log "$b: no mode change within 60 s"
+            fi
         else
-            log "button: no mode change within 60 s"
+            log "$b: no frame, or the line never read 1 (pull-up), within 60 s"
         fi
-    else
-        log "button: no frame, or the line never read 1 (pull-up), within 60 s"
-    fi
-    kill -TERM $pid; wait $pid; echo "exit $?" >> /out/button.txt
-    log "button: $(tail -n 1 /out/button.txt)"
+        kill -TERM $pid; wait $pid; echo "exit $?" >> /out/$b.txt
+        log "$b: $(tail -n 1 /out/$b.txt)"
+    }
+    button button --threads 1
+    button button-t2 --threads 2
 fi
 
 # faults: each must end with its message and a clean stop

@@ -8,7 +8,10 @@
 # qemu-system-x86_64 (TCG) with a Debian kernel. The kernel package is
 # downloaded (apt-get download) and unpacked into $B/linux/kernel once.
 # The framebuffer contents are compared with bloom_sim run on the frames the
-# guest recorded; the fault cases must end with their messages. GPIO goes
+# guest recorded, row by row (--threads 1) and, cases NAME-tN, on N strips
+# (the guest has $SMP CPUs, 2 by default; the engine line must name N), with a
+# negative control (one flipped bit must be found); the fault cases, without
+# --threads, run on the guest's CPUs and must end with their messages. GPIO goes
 # through gpio-sim (built here, see below): the frame line's values are
 # traced in the guest, the button is pressed by changing its pull in sysfs.
 #
@@ -35,12 +38,15 @@
 # port/linux/README.md states ("N cases with all six presets"), else one more failure.
 # Env: LINUX_TEST_KVER, LINUX_TEST_TIMEOUT, LINUX_TEST_QEMU,
 # LINUX_TEST_BUSYBOX, LINUX_TEST_NO_INSTALL (no apt-get install or update),
+# LINUX_TEST_SMP (the guest's CPUs, default 2: bloom_cam's default --threads
+# runs two strips in parallel, under MTTCG where qemu has it),
 # LINUX_TEST_GPIO=0 (GPIO cases skipped), LINUX_TEST_GST=0 (GStreamer cases
 # skipped), CI.
 B=${B:-build}
 PIN=6.1.0-56-amd64
 KVER=${LINUX_TEST_KVER:-$PIN}
 TIMEOUT=${LINUX_TEST_TIMEOUT:-170}
+SMP=${LINUX_TEST_SMP:-2}
 SIZE=320x240
 FRAMES=3
 GFRAMES=12  # frames of the GPIO frame-line case
@@ -329,7 +335,7 @@ chmod +x "$work/root/init" "$work/root/bin/busybox"
 dd if=/dev/zero of="$work/disk.img" bs=1M count=64 2>/dev/null
 
 # ---- boot ------------------------------------------------------------------
-timeout "$TIMEOUT" "$QEMU" -accel tcg -cpu max -m 512M -smp 1 -nographic -vga std -nic none \
+timeout "$TIMEOUT" "$QEMU" -accel tcg -cpu max -m 512M -smp "$SMP" -nographic -vga std -nic none \
     -no-reboot -kernel "$kroot/boot/vmlinuz-$KVER" -initrd "$work/initrd.cpio" \
     -append "console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init" \
     -device isa-debug-exit,iobase=0xf4,iosize=0x04 \
@@ -351,8 +357,18 @@ frame_check() { # case fbformat sim-options...
     c=$1; ff=$2; shift 2
     t=$r/$c.txt
     grep -q '^exit 0$' "$t" 2>/dev/null || { bad "$c: bloom_cam failed"; sed 's/^/       /' "$t"; return; }
+    # a case NAME-tN ran on N threads, any other row by row: said by the engine line
+    case "$c" in
+    *-t[0-9]*) nt=${c##*-t}; eng=$(grep -o "engine: .*, $nt threads ($nt strips), .*" "$t");;
+    *) nt=1; eng=$(grep -o "engine: .*, 1 thread (row by row), .*" "$t");;
+    esac
+    [ -n "$eng" ] || { bad "$c: not on $nt thread(s)"; sed 's/^/       /' "$t"; return; }
+    how=row-by-row; [ "$nt" = 1 ] || how="$nt threads, $(echo "$eng" | sed 's/.*bytes (\(.*\))$/\1/')"
     geo=$(sed -n 's/.*): \([0-9]*x[0-9]*\) \([a-z0-9]*\), bytesperline \([0-9]*\),.*/\1 \2 \3/p' "$t" | head -n 1)
-    set -- $geo "$@"; wh=$1; fmt=$2; bpl=$3; shift 3
+    # the part of the frame the screen shows: its size and first pixel
+    shown=$(sed -n 's/.*, \([0-9]*\)x\([0-9]*\) shown from \([0-9]*\),\([0-9]*\)$/\1 \2 \3 \4/p' "$t" | head -n 1)
+    [ -n "$geo" ] && [ -n "$shown" ] || { bad "$c: no capture or screen line"; sed 's/^/       /' "$t"; return; }
+    set -- $geo $shown "$@"; wh=$1; fmt=$2; bpl=$3; sw=$4; sh=$5; sx=$6; sy=$7; shift 7
     w=${wh%x*}
     rm -rf "$work/sim" && mkdir -p "$work/sim"
     if ! "$B/bloom_sim" "$r/$c.raw" --raw-size "$wh" --raw-format "$fmt" --raw-stride "$bpl" \
@@ -361,8 +377,10 @@ frame_check() { # case fbformat sim-options...
     fi
     last=$(ls "$work/sim"/f*.ppm | tail -n 1)
     n=$(ls "$work/sim"/f*.ppm | wc -l)
-    if res=$("$work/fbcmp" "$r/$c.fb" "$ff" "$w" "$last" 2>&1); then
-        ok "$c: $wh $fmt, framebuffer = bloom_sim on the recorded frame $n of $n: $res"
+    part=""; [ "${sw}x$sh" = "$wh" ] || { part="part $sx $sy $sh"; w=$sw; }
+    cp "$last" "$work/last-$c.ppm"  # for the negative control
+    if res=$("$work/fbcmp" "$r/$c.fb" "$ff" "$w" "$last" $part 2>&1); then
+        ok "$c: $wh $fmt ($how), framebuffer = bloom_sim on the recorded frame $n of $n: $res"
     else
         bad "$c: $res"
     fi
@@ -387,12 +405,47 @@ done
 for p in $all_presets; do
     case " unity attenuation $presets " in *" $p "*) ;; *) skip "preset-$p" "$(compiled_out "$p")";; esac
 done
+# --threads N: the same screens as the row-by-row cases above, bit for bit
+frame_check yuyv-16-t2 rgb565 $P
+frame_check rgb24-32-t3 xrgb8888 $P
+frame_check grey-32-t2 xrgb8888 $P
+frame_check bloomonly-16-t3 rgb565 $P --view bloom
+frame_check off-32-t2 xrgb8888 --threshold 256 --knee 0 --intensity 0
+if [ "$att" = 1 ]; then
+    frame_check att-16-t3 rgb565 $P --preset attenuation --aux "$work/root/depth.pgm"
+else
+    skip att-16-t3 "$(compiled_out attenuation)"
+fi
+for p in $presets; do
+    frame_check "preset-$p-t2" rgb565 $P --preset "$p"
+done
+for p in $all_presets; do
+    case " unity attenuation $presets " in *" $p "*) ;; *) skip "preset-$p-t2" "$(compiled_out "$p")";; esac
+done
+# a 1280x720 capture on the 720x576 screen: the shown part of the frame
+frame_check crop-16 rgb565 $P
+frame_check crop-16-t2 rgb565 $P
+# negative control: the comparison must see the lowest bit of one pixel of
+# yuyv-16-t2's screen flipped (pixel 160,90 of 320x180 RGB565: its blue LSB)
+at=$((2 * (320 * 90 + 160)))
+v=$(od -An -tu1 -j "$at" -N 1 "$r/yuyv-16-t2.fb" 2>/dev/null | tr -d ' ')
+: > "$work/flip.log"
+if [ -n "$v" ] && cp "$r/yuyv-16-t2.fb" "$work/flip.fb" &&
+    printf "\\$(printf %03o $((v ^ 1)))" | dd of="$work/flip.fb" bs=1 seek="$at" conv=notrunc 2>/dev/null &&
+    ! cmp -s "$work/flip.fb" "$r/yuyv-16-t2.fb" &&
+    ! "$work/fbcmp" "$work/flip.fb" rgb565 320 "$work/last-yuyv-16-t2.ppm" > "$work/flip.log" 2>&1 &&
+    grep -q '^fbcmp: 1 pixels differ$' "$work/flip.log"; then
+    ok "negative control: one pixel of yuyv-16-t2's screen changed, fbcmp finds it ($(head -n 1 "$work/flip.log"))"
+else
+    bad "negative control: a changed pixel of yuyv-16-t2's screen was not found by fbcmp"
+    sed 's/^/       /' "$work/flip.log" 2>/dev/null
+fi
 gst_checks
 # bochs' fbdev has two pages (drm_fbdev_overalloc=200): the 32 bpp cases must
 # have flipped with FBIOPAN_DISPLAY (the second page's offset seen in /sys
 # while running) and put the pan back to 0,0; their pictures are checked above
 pan_bad=""
-for c in yuyv-32 rgb24-32 grey-32 off-32; do
+for c in yuyv-32 rgb24-32 grey-32 off-32 rgb24-32-t3 grey-32-t2 off-32-t2; do
     t=$r/$c.txt
     grep -q ", double-buffered;" "$t" 2>/dev/null && grep -q '^/sys pan during:.* 0,[1-9]' "$t" &&
         grep -q '^/sys pan after: 0,0$' "$t" || pan_bad="$pan_bad $c"
@@ -423,7 +476,8 @@ else
     skip att-size "$(compiled_out attenuation)"
 fi
 if [ -n "$gpio_off" ]; then
-    for c in "gpio-frame (line toggles)" "gpio-frame (sysfs value)" "button (mode switch)" "button (framebuffer)"; do
+    for c in "gpio-frame (line toggles)" "gpio-frame (sysfs value)" "button (mode switch)" "button (framebuffer)" \
+        "button-t2 (mode switch)" "button-t2 (framebuffer)"; do
         if [ "$gpio_need" = 1 ]; then need "$c" "$gpio_off"; else skip "$c" "$gpio_off"; fi
     done
 else
@@ -445,16 +499,27 @@ else
     fi
     fault_check button 0 "bloom_cam: mode off"
     frame_check button rgb565 --threshold 256 --knee 0 --intensity 0
+    fault_check button-t2 0 "bloom_cam: mode off"
+    frame_check button-t2 rgb565 --threshold 256 --knee 0 --intensity 0
+fi
+# without --threads, as many threads as the guest has CPUs (the speed case)
+cpus=$(sed -n 's/^cpus: //p' "$r/speed.txt" 2>/dev/null)
+if [ -n "$cpus" ] && grep -q "^bloom_cam: engine: .*, $cpus threads\{0,1\} (" "$r/speed.txt"; then
+    ok "threads: without --threads, $(grep -o "$cpus threads\{0,1\} ([^)]*)" "$r/speed.txt" | head -n 1) on the guest's $cpus CPUs"
+else
+    bad "threads: without --threads, not one thread per CPU (${cpus:-?} CPUs)"; sed 's/^/       /' "$r/speed.txt" 2>/dev/null
 fi
 # the figure is printed, never asserted (emulation speed varies)
-if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null; then
-    ok "speed: 640x480 yuyv, 16 frames to the 32 bpp screen"
+if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null && grep -q '^exit 0$' "$r/speed-t1.txt" 2>/dev/null; then
+    ok "speed: 640x480 yuyv, 16 frames to the 32 bpp screen, on ${cpus:-?} threads and row by row"
     grep -h "total:" "$r/speed.txt" |
-        sed 's/^bloom_cam: total:/  emulated (qemu TCG, not a board) 640x480 YUYV -> 32 bpp:/'
+        sed "s/^bloom_cam: total:/  emulated (qemu TCG, not a board) 640x480 YUYV -> 32 bpp, ${cpus:-?} threads:/"
+    grep -h "total:" "$r/speed-t1.txt" |
+        sed 's/^bloom_cam: total:/  emulated (qemu TCG, not a board) 640x480 YUYV -> 32 bpp, row by row:/'
 else
-    bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" 2>/dev/null
+    bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" "$r/speed-t1.txt" 2>/dev/null
 fi
-# the count port/linux/README.md states ("29 cases with all six presets") is the count run
+# the count port/linux/README.md states ("45 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
 want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/port/linux/README.md" | head -n 1)
 if [ -z "$want" ]; then
