@@ -46,6 +46,14 @@ once=$(awk -F'\t' '$1 == 5 && $2 == 256 { print $3 }' "$summary")
 if [ "${again%% *}" = "${once%% *}" ]; then repeat="identical (${once%% *} instructions both times)"
 else repeat="DIFFERENT: ${once%% *} then ${again%% *} instructions"; fi
 t_all=$(($(date +%s) - t_all))
+# the scheduler's instructions (its file's functions) untiled and in 4 strips
+sched_of() {
+    callgrind_annotate --auto=no "$1" 2>/dev/null |
+        awk '/bloom_sched\.c:/ { gsub(",", "", $1); n += $1 } END { print n + 0 }'
+}
+sched_u=$(sched_of "$dir/l5.s0.out")
+sched_t=$(sched_of "$dir/l5.s480.out")
+sched_x=$((sched_t - sched_u))
 
 # Every tiling's output against the untiled frame's, and the ratios.
 table=$(awk -F'\t' -v px=$((w * h)) '
@@ -106,12 +114,17 @@ costs every strip work and memory, one below it changes bits, and
 then takes the tile, adds that margin on either side, rounds the window
 out to multiples of 2^L (L the levels built) so that the window's levels
 halve exactly as the frame's do, and clips it to the frame, where the edge
-rule applies as before. The graph is built again over that window, so a
-strip engine's row buffers are the window wide: its workspace follows the
-strip's *source* rectangle, the strip plus twice the halo. The halo grows as
-2^L, so it sets a floor under the workspace that narrower strips cannot go
-below: at 5 levels a strip of 64 columns reads $(sf 5 64 6) source columns; at 7
-levels the halo covers most of the 1920-column frame.
+rule applies as before. The graph is built again over that window, and
+then each node's columns are cut to what its readers use (\`narrow_nodes\`,
+walked back from the tile): the output node makes the tile's columns (and
+up to 2 more on the left, which its clamped reads would spoil), the up
+chain the tile and a few pixels, and only the down chain, which the deep
+levels read, spans the halo. The scheduler hands each row function its
+inputs from the first column it reads (\`bg_in_w\` gives the widths it
+sees). So a strip engine's rings follow the strip more than the window,
+and the halo's work is mostly the down chain's. At 5 levels a strip of 64
+columns reads $(sf 5 64 6) source columns; at 7 levels the halo covers most
+of the 1920-column frame.
 
 ## Workspace
 
@@ -126,18 +139,11 @@ The issue's target, **at most 64 KB (65 536 bytes) at 5 levels in strips of
 columns). At 5 levels the narrowest strips of the table take $(sf 5 64 4) bytes
 (64 columns); at 3 levels strips of 256 take $(sf 3 256 4) bytes
 and strips of 480 $(sf 3 480 4).
-What stands in the way is the delay lines of the down chain: every node of
-a strip engine is the window wide, and the levels' rings hold the rows the
-deep levels wait for (\`bloom_query\`'s ring bytes per level: at 5 levels
-level 1 holds more than half of them). Of the nodes
-only the down chain needs the whole window; the up chain, the second level-1
-box that feeds it and the output need the strip and a few pixels (3 at
-level 1), so per-node column ranges would take the up side's rings to about
-about half (an estimate from the ring sizes, not measured: under the 64 KB
-line at 256 columns); that needs every row kernel to run on a column range with the edge
-rule only at the frame's edges, and was not done. The other choice item 1
-allows, deep levels shared between strips, saves little memory here: the
-deep levels are the smallest rings.
+Where the memory goes: the down chain's rings, which span the halo (the
+deep levels wait on them), and the level-1 rows of the up side, which span
+the strip. Sharing the deep levels between strips (the other choice item 1
+allows) would take the down chain's halo away but needs the strips to run
+in step; not done.
 
 ## Instructions
 
@@ -155,7 +161,11 @@ $table
 
 Four strips of 480 columns (the tiling of 4 cores) at 5 levels cost
 **${four} %** more instructions than the untiled frame (the issue's item 4
-target: at most 10 %).
+target: at most 10 %). Of the extra, the scheduler (\`src/engine/bloom_sched.c\`:
+every strip walks every row of every node) takes $sched_x instructions
+($sched_u untiled, $sched_t over the four strips: callgrind's per-file
+totals of these runs); the rest is the down chain over the halo and the
+kernels' per-row edges.
 
 Run time of this page: $t_all s under callgrind.
 EOF2
