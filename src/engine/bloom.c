@@ -292,7 +292,7 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
         n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
         n->tag = (int32_t *)take(base, &off, (uint64_t)c * sizeof(int32_t));
         if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
-            n->cap = (int16_t)c;
+            n->cap = (uint16_t)c;
             if (BLOOM_USE_SKIP)
                 memset(n->buf, 0, (size_t)words * sizeof *n->buf);
             /* every tag byte 0x40: the zero bit (bit 30) set in each tag,

@@ -165,7 +165,7 @@ static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
     bg_node_t *n = &g->node[ni];
     const int r = n->next;
     if (g->dry)
-        n->need = (int16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
+        n->need = (uint16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
     else
         make_row(g, n, r);
     n->next++;

@@ -87,10 +87,11 @@ struct bg_node {
     /* ring (not for the output node) */
     uint32_t *buf;
     int32_t *tag;
-    int16_t cap;  /* ring rows (at most the node's height, <= BLOOM_MAX_DIM = 2^14) */
-    int16_t need; /* dry run: largest occupancy (the same bound); both 16 bits so
-                     that xa below costs no workspace, on 32-bit targets either */
-    int next;     /* next row to compute */
+    uint16_t cap;  /* ring rows (at most the node's height, <= BLOOM_MAX_DIM = 2^14) */
+    uint16_t need; /* dry run: largest occupancy (the same bound); both 16 bits so
+                      that xa below costs no workspace, on 32-bit targets either
+                      (unsigned: Thumb-2 loads them in 16-bit instructions) */
+    int next;      /* next row to compute */
     /* Columns xa .. xa + w - 1 of the level (at the node's resolution) are
      * made: all of them (xa = 0) but in a tile's window, where a node makes
      * only what its readers use (bloom_plan; g->views); its row function
@@ -211,6 +212,17 @@ static inline int bg_in_w(const bloom_graph_t *g, const bg_node_t *n, int i)
     const int end = from < 0 ? g->w[0] : g->node[from].xa + g->node[from].w;
     const int map = n->in[i].map, xa = n->xa;
     return end - (map == BG_DOWN ? 2 * xa : map == BG_SAME ? xa : xa >> 1);
+#endif
+}
+
+/* bg_in_w for an input that is a node (not the source or the aux plane):
+ * the same width, without the test (the Cortex-M core's size). */
+static inline int bg_node_in_w(const bloom_graph_t *g, const bg_node_t *n, int i)
+{
+#if BLOOM_SMALL
+    return g->node[n->in[i].node].w;
+#else
+    return bg_in_w(g, n, i);
 #endif
 }
 

@@ -32,7 +32,7 @@ bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *co
     (void)r;
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    g->kern.box(s, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
+    g->kern.box(s, (uint32_t *)dst, n->w, bg_node_in_w(g, n, 0));
     return true;
 }
 
@@ -50,7 +50,8 @@ bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
     }
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    g->kern.tent(u, r & 1, bg_in_zero(g, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w, bg_in_w(g, n, 0));
+    g->kern.tent(u, r & 1, bg_in_zero(g, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w,
+                 bg_node_in_w(g, n, 0));
     return true;
 }
 
@@ -62,7 +63,7 @@ bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void
                    void *dst)
 {
     const uint8_t *src = (const uint8_t *)in[1][0];
-    const int sw = bg_in_w(g, n, 0);
+    const int sw = bg_node_in_w(g, n, 0);
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     if (bg_in_zero(g, 0, 0, 2))
