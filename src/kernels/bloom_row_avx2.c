@@ -319,10 +319,11 @@ static inline __m256i ysum(const uint32_t *v)
     return _mm256_add_epi32(_mm256_add_epi32(LD8(v), LD8(v + 3)), _mm256_add_epi32(LD8(v + 6), LD8(v + 9)));
 }
 
-static inline __m256i pick(__m256i a, __m256i ia, __m256i b, __m256i ib, int from_b)
-{
-    return _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, ia), _mm256_permutevar8x32_epi32(b, ib), from_b);
-}
+/* Lanes of a by ia, and where the constant mask m_ has its bits, of b by
+ * ib (a macro: the blend's mask must be a constant expression). */
+#define PICK(a_, ia_, b_, ib_, m_)                                                                           \
+    _mm256_blend_epi32(_mm256_permutevar8x32_epi32((a_), (ia_)), _mm256_permutevar8x32_epi32((b_), (ib_)),   \
+                       (m_))
 
 void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
 {
@@ -356,9 +357,9 @@ void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int s
         uint32_t *d = dst + 3u * (size_t)x;
         for (int q = 0; q < k; q++, d += 24) {
             const uint32_t *w = v + 48 * q;
-            ST8(d, bloom_box_rnd8(pick(ysum(w), i0a, ysum(w + 8), i0b, 0xE0)));
-            ST8(d + 8, bloom_box_rnd8(pick(ysum(w + 14), i1a, ysum(w + 24), i1b, 0xF0)));
-            ST8(d + 16, bloom_box_rnd8(pick(ysum(w + 31), i2a, ysum(w + 42), i2b, 0xE0)));
+            ST8(d, bloom_box_rnd8(PICK(ysum(w), i0a, ysum(w + 8), i0b, 0xE0)));
+            ST8(d + 8, bloom_box_rnd8(PICK(ysum(w + 14), i1a, ysum(w + 24), i1b, 0xF0)));
+            ST8(d + 16, bloom_box_rnd8(PICK(ysum(w + 31), i2a, ysum(w + 42), i2b, 0xE0)));
         }
     }
     bloom_row_box_range_c(s, dst, xa + 8 * nb, dw, sw);

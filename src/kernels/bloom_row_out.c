@@ -80,7 +80,7 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
     }
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (TENT_CH + 2)], eo[6 * TENT_CH]; /* vb[3 j] is column m0 - 1 + j */
-    const int mw = (n + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
+    const int mw = (n + 1) / 2;                      /* the columns read, sw or fewer (a tile's output) */
     for (int m0 = 0; m0 < mw; m0 += TENT_CH) {
         const int nn = imin(TENT_CH, mw - m0), np = imin(2 * nn, n - 2 * m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
