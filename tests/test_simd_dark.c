@@ -91,7 +91,7 @@ int main(void)
     if (bloom_kernels_simd(&ks))
         run(&ks);
     else
-        SKIP("dark-row twins: no SIMD kernels on this target (C tested)");
+        SKIP("cpu without SIMD twins for the dark-row test (this target has none: C tested)");
     if (strcmp(ks.name, k2.name) != 0)
         run(&k2);
 #endif
