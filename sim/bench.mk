@@ -28,7 +28,7 @@ ICOUNT_CFLAGS := -O2 -g
 ICOUNT_SIZES ?= 640x480 1920x1080
 BENCH_CXXWARN := -std=c++17 -Wall -Wextra -Werror -Wshadow -Wpointer-arith -Wcast-align -Wvla
 
-BENCH_HDR := sim/bench/bench.h sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h
+BENCH_HDR := sim/bench/bench.h sim/bench/bench_cv.h sim/bench/scene.h sim/bench/variants.h sim/bench/timing.h
 # Every core header, also ones added to src/ after CORE_HDR was written.
 BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 BENCH_CORE_OBJ := $(patsubst src/%.c,$(BENCH_DIR)/core/%.o,$(CORE_SRC))
@@ -90,7 +90,7 @@ bench-peers: $(BENCH_DIR)/peers_drv
 # Threads (issue 14): 1 vs 2 threads in paired rounds and the halo's
 # instructions for 4 strips (callgrind), port/threads/bench_threads.sh;
 # the helper and its flags are port/threads/threads.mk's.
-$(BENCH_DIR)/bench_threads: port/threads/bench_threads.c $(MT_SRC) $(MT_HDR) $(BENCH_DIR)/obj/scene.o $(BENCH_DIR)/sim/imgio.o \
+$(BENCH_DIR)/bench_threads: port/threads/bench_threads.c sim/bench/timing.h $(MT_SRC) $(MT_HDR) $(BENCH_DIR)/obj/scene.o $(BENCH_DIR)/sim/imgio.o \
                             $(BENCH_CORE_OBJ)
 	$(CC) $(WARN) $(BENCH_CFLAGS) $(HOST_CPPFLAGS) -Isim/bench $(MT_CPPFLAGS) port/threads/bench_threads.c $(MT_SRC) \
 	  $(BENCH_DIR)/obj/scene.o $(BENCH_DIR)/sim/imgio.o $(BENCH_CORE_OBJ) -lm $(MT_LIBS) -o $@

@@ -16,7 +16,7 @@ REPORT_CPP := $(HOST_CPPFLAGS) -Isim/bench -Isim/report
 # main per F (the mains print F).
 REPORT_SHARED := sim/report/common.c sim/report/inputs.c sim/bench/scene.c $(SIM_SRC)
 REPORT_SHARED_OBJ := $(addprefix $(REPORT_DIR)/obj/,$(notdir $(REPORT_SHARED:.c=.o)))
-REPORT_HDR := sim/report/report.h sim/report/stab.h sim/bench/scene.h sim/bench/variants.h sim/bench/tile_strips.h \
+REPORT_HDR := sim/report/report.h sim/report/stab.h sim/bench/timing.h sim/bench/scene.h sim/bench/variants.h sim/bench/tile_strips.h \
               $(SIM_HDR) $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 REPORT_BINS := $(foreach f,$(REPORT_F),$(REPORT_DIR)/f$(f)/report_sweep $(REPORT_DIR)/f$(f)/report_icount) \
                $(REPORT_DIR)/f16/report_stab $(REPORT_DIR)/f20/report_stab $(REPORT_DIR)/f20/report_skip \

@@ -15,21 +15,9 @@
 
 #include "bloom_mt.h"
 #include "cam.h"
+#include "timing.h"
 
 enum { ROUNDS = 41 };
-
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
 
 static uint8_t *row_at(const cam_fb_t *fb, const cam_place_t *p, uint8_t *page, int r)
 {
@@ -96,19 +84,19 @@ static int bench(int w, int h, int n)
     for (int r = 0; !bad && r < ROUNDS; r++) {
         for (int k = 0; k < 2; k++) {
             const int threaded = (k + r) & 1;
-            const double t0 = now_s();
+            const double t0 = bench_now_s();
             if (threaded)
                 bad |= cam_mt_process(&t, CAM_MODE_BLOOM, &cap, yuyv, &fb, &p, page);
             else
                 row_path(b, &cap, yuyv, line, &fb, &p, page);
-            *(threaded ? &mt[r] : &row[r]) = now_s() - t0;
+            *(threaded ? &mt[r] : &row[r]) = bench_now_s() - t0;
         }
         ratio[r] = row[r] / mt[r];
     }
     if (!bad) {
-        qsort(row, ROUNDS, sizeof row[0], cmp_double);
-        qsort(mt, ROUNDS, sizeof mt[0], cmp_double);
-        qsort(ratio, ROUNDS, sizeof ratio[0], cmp_double);
+        qsort(row, ROUNDS, sizeof row[0], bench_cmp_double);
+        qsort(mt, ROUNDS, sizeof mt[0], bench_cmp_double);
+        qsort(ratio, ROUNDS, sizeof ratio[0], bench_cmp_double);
         printf("| %dx%d | %.2f | %.2f (%d threads) | %.2fx | %zu | %zu + %zu |\n", w, h,
                row[ROUNDS / 2] * 1e3, mt[ROUNDS / 2] * 1e3, t.tiles, ratio[ROUNDS / 2], rbytes, mbytes,
                t.frame_bytes);

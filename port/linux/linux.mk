@@ -86,9 +86,9 @@ $(B)/linux/test_cam_mt: $(CAM_MT_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) te
 # make bench-cam: the two frame paths on this machine (port/linux/bench_cam.c),
 # 640x480 and 1920x1080 by default; BENCH_CAM_ARGS='1280x720 -t 3' for others.
 $(B)/linux/bench_cam: $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_MT_SRC) $(CAM_HDR) \
-                      $(B)/libbloom.a
+                      sim/bench/timing.h $(B)/libbloom.a
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c \
+	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) -Isim/bench $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c \
 	  $(CAM_MT_SRC) $(B)/libbloom.a $(CAM_THREAD_LIBS) -o $@
 bench-cam: $(B)/linux/bench_cam
 	@$(B)/linux/bench_cam $(BENCH_CAM_ARGS)
@@ -96,7 +96,8 @@ bench-cam: $(B)/linux/bench_cam
 # clang, warnings as errors, both GPIO variants (a compile check).
 linux-clang:
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC)
-	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC) $(CAM_DIR)/bench_cam.c
+	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC)
+	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -Isim/bench -DCAM_NO_GPIOD $(CAM_DIR)/bench_cam.c
 	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_cam_mt.c
 
 test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/bloom_cam

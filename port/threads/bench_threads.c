@@ -19,23 +19,11 @@
 #include "bloom.h"
 #include "bloom_mt.h"
 #include "scene.h"
-
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
+#include "timing.h"
 
 static double median(double *v, int n)
 {
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    qsort(v, (size_t)n, sizeof *v, bench_cmp_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
@@ -54,9 +42,9 @@ static bloom_mt_t *mt_make(const bloom_config_t *c, int n, void **buf)
 
 static double frame_time(bloom_mt_t *mt, const uint8_t *src, uint8_t *dst, ptrdiff_t stride)
 {
-    const double t0 = now_s();
+    const double t0 = bench_now_s();
     const bloom_status_t st = bloom_mt_process(mt, src, stride, dst, stride);
-    const double t = now_s() - t0;
+    const double t = bench_now_s() - t0;
     if (st != BLOOM_OK) {
         fprintf(stderr, "bench_threads: %s\n", bloom_mt_status_str(st));
         exit(1);

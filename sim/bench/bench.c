@@ -21,6 +21,7 @@
 #include "bloom_model.h"
 #include "scene.h"
 #include "variants.h"
+#include "timing.h"
 
 row_t rows[MAX_ROWS];
 int nrows;
@@ -43,25 +44,12 @@ static void *xmalloc(size_t n)
     return p;
 }
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
 /* CPU time of the whole process, every thread (OpenCV's workers included). */
 static double cpu_s(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
 }
 
 static row_t *new_row(int w, int h, const char *group, const char *name)
@@ -154,7 +142,7 @@ typedef int (*run_fn)(void *ctx, const uint8_t *src, uint8_t *dst);
 
 static double median(double *v, int n)
 {
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    qsort(v, (size_t)n, sizeof *v, bench_cmp_double);
     return n & 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
@@ -166,9 +154,9 @@ static int measure(ring_t *r, run_fn fn, void *ctx, int warm, int runs, row_t *r
     double last = 0.0;
     for (int i = 0; i < warm; i++) {
         const int s = r->next++ % r->nslots;
-        const double t0 = now_s();
+        const double t0 = bench_now_s();
         const int e = fn(ctx, r->src + (size_t)s * r->slot, r->dst + (size_t)s * r->slot);
-        last = now_s() - t0;
+        last = bench_now_s() - t0;
         if (e)
             return e;
     }
@@ -177,9 +165,9 @@ static int measure(ring_t *r, run_fn fn, void *ctx, int warm, int runs, row_t *r
     double *t = xmalloc(sizeof *t * (size_t)runs), *c = xmalloc(sizeof *c * (size_t)runs);
     for (int i = 0; i < runs; i++) {
         const int s = r->next++ % r->nslots;
-        const double c0 = cpu_s(), t0 = now_s();
+        const double c0 = cpu_s(), t0 = bench_now_s();
         const int e = fn(ctx, r->src + (size_t)s * r->slot, r->dst + (size_t)s * r->slot);
-        t[i] = now_s() - t0;
+        t[i] = bench_now_s() - t0;
         c[i] = cpu_s() - c0;
         if (e) {
             free(t);
@@ -219,11 +207,11 @@ static void paired(ring_t *r, const contender_t *c, int nc, int rounds, int w, i
         for (int k = 0; k < nc; k++) {
             const int i = (k + round + 1) % nc;
             const int sl = r->next++ % r->nslots;
-            const double t0 = now_s();
+            const double t0 = bench_now_s();
             if (c[i].fn(c[i].ctx, r->src + (size_t)sl * r->slot, r->dst + (size_t)sl * r->slot))
                 exit(1);
             if (round >= 0)
-                t[i * rounds + round] = now_s() - t0;
+                t[i * rounds + round] = bench_now_s() - t0;
         }
     for (int i = 0; i < nc; i++) {
         row_t *row = new_row(w, h, "paired", c[i].name);
@@ -541,10 +529,10 @@ static void bench_size(int si, int w, int h, const opts_t *o, ring_t *ring)
         mp.soft_knee = s;
         mp.intensity = cfg0.intensity / 65536.0;
         const int mx[3] = {255, 255, 255};
-        const double c0 = cpu_s(), t0 = now_s();
+        const double c0 = cpu_s(), t0 = bench_now_s();
         if (bloom_model_run(&mp, codes, mx, oc, mx, NULL) < 0)
             die("bloom_model_run failed (%s)", "bad arguments or out of memory");
-        r->median_ms = r->min_ms = 1e3 * (now_s() - t0);
+        r->median_ms = r->min_ms = 1e3 * (bench_now_s() - t0);
         r->cpu_ms = 1e3 * (cpu_s() - c0);
         r->runs = 1;
         for (size_t i = 0; i < rgb_bytes; i++)
