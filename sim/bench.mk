@@ -33,7 +33,7 @@ BENCH_HDR := sim/bench/bench.h sim/bench/bench_cv.h sim/bench/scene.h sim/bench/
 BENCH_CORE_HDR := $(sort $(CORE_HDR) $(wildcard src/*.h src/*/*.h include/*.h))
 BENCH_CORE_OBJ := $(patsubst src/%.c,$(BENCH_DIR)/core/%.o,$(CORE_SRC))
 BENCH_SIM_OBJ := $(patsubst sim/%.c,$(BENCH_DIR)/sim/%.o,$(SIM_SRC))
-BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o bench_out.o bench_machine.o scene.o variants.o bench_opencv.o)
+BENCH_OBJ := $(addprefix $(BENCH_DIR)/obj/,bench.o bench_time.o bench_out.o bench_machine.o scene.o variants.o bench_opencv.o)
 ICOUNT_CORE_OBJ := $(patsubst src/%.c,$(ICOUNT_DIR)/core/%.o,$(CORE_SRC))
 ICOUNT_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgio.c
 

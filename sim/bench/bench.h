@@ -4,6 +4,7 @@
 #define BENCH_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 /* The compiler and flags of the engine build, for the report (bench.mk). */
 #ifndef BENCH_CC
@@ -59,6 +60,35 @@ extern size_t llc_sysfs, llc_sysconf;
 extern int llc_level;
 extern char date_utc[64];
 extern double load_start, load_end;
+
+/* The measuring machinery (bench_time.c): the cold frame rings, timed runs
+ * (median and minimum, CPU time beside), paired rounds against the floor
+ * and the engine reference. */
+typedef struct {
+    uint8_t *src, *dst;
+    size_t bytes, slot;
+    int nslots, next;
+    int filled_fmt;     /* format the input slots hold, 0 = none */
+    size_t filled_size; /* w*h it was filled for */
+} ring_t;
+
+typedef int (*run_fn)(void *ctx, const uint8_t *src, uint8_t *dst);
+
+typedef struct {
+    const char *name;
+    run_fn fn;
+    void *ctx;
+} contender_t;
+#define MAX_CONTENDERS 8
+
+void ring_alloc(ring_t *r, size_t bytes);
+void ring_prepare(ring_t *r, const uint8_t *frame, size_t frame_bytes, size_t slot_bytes, int fmt, size_t wh);
+double median(double *v, int n); /* sorts v */
+double cpu_s(void);              /* CPU time of the whole process, every thread */
+int measure(ring_t *r, run_fn fn, void *ctx, int warm, int runs, row_t *row);
+void paired(ring_t *r, const contender_t *c, int nc, int rounds, int w, int h);
+void *xmalloc(size_t n); /* malloc or die (bench.c) */
+row_t *new_row(int w, int h, const char *group, const char *name);
 
 void die(const char *fmt, const char *arg);
 const char *bench_cv_row_name(int i); /* the OpenCV variants, in table order */

@@ -208,8 +208,7 @@ static void narrow_nodes(bloom_graph_t *g)
             if (in->node < 0)
                 continue;
             const int m = in->map, f = in->node, wf = g->node[f].w;
-            const int first = m == BG_DOWN ? 2 * a : m == BG_SAME ? a : a >> 1;
-            const int last = (m == BG_DOWN ? 2 * (b - 1) : m == BG_SAME ? b - 1 : (b - 1) >> 1) + in->hi;
+            const int first = bg_base(m, a), last = bg_base(m, b - 1) + in->hi;
             na[f] = imin(na[f], first);
             nb[f] = imax(nb[f], imin(last + 1, wf));
         }

@@ -20,11 +20,6 @@
 
 /* ---- rows -------------------------------------------------------------- */
 
-static int base_row(int map, int r)
-{
-    return map == BG_DOWN ? 2 * r : map == BG_SAME ? r : r >> 1;
-}
-
 static int in_height(const bloom_graph_t *g, int from)
 {
     return from < 0 ? g->h[0] : g->node[from].h;
@@ -46,7 +41,7 @@ static int oldest_of(const bloom_graph_t *g, int from)
             continue;
         for (int i = 0; i < n->nin; i++)
             if (n->in[i].node == from || (BLOOM_USE_GRAPH && from == BG_SRC && n->in[i].node == BG_AUX))
-                o = imin(o, clampi(base_row(n->in[i].map, n->next) + n->in[i].lo, 0, hin - 1));
+                o = imin(o, clampi(bg_base(n->in[i].map, n->next) + n->in[i].lo, 0, hin - 1));
     }
     return o;
 }
@@ -63,7 +58,7 @@ static const void *src_slot(const bloom_graph_t *g, int from, int slot)
 static int input_top(const bloom_graph_t *g, const bg_node_t *n, int i, int r)
 {
     const bg_input_t *in = &n->in[i];
-    return clampi(base_row(in->map, r) + in->hi, 0, in_height(g, in->node) - 1);
+    return clampi(bg_base(in->map, r) + in->hi, 0, in_height(g, in->node) - 1);
 }
 
 static bool ensure(bloom_graph_t *g, int ni, int j);
@@ -92,7 +87,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
     bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
-        const int from = ip->node, hin = in_height(g, from), b = base_row(ip->map, r);
+        const int from = ip->node, hin = in_height(g, from), b = bg_base(ip->map, r);
         /* the rows are consecutive (repeated at the edges): one division for
          * the first slot, then a step with wrap-around */
         const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
@@ -119,7 +114,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
         }
 #if !BLOOM_SMALL
         if (g->tiled) { /* a tile's nodes: the input from the first column n reads on (bg_in_w) */
-            const int off = base_row(ip->map, n->xa) - (src ? src->xa : 0);
+            const int off = bg_base(ip->map, n->xa) - (src ? src->xa : 0);
             const size_t step = (size_t)off * (src ? src->ch * sizeof(uint32_t)
                                                    : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g)));
             for (int j = used - (ip->hi - ip->lo + 1); step && j < used; j++)

@@ -199,6 +199,13 @@ static inline bool bg_tiled(const bloom_graph_t *g)
 {
     return !BLOOM_SMALL && g->tiled;
 }
+/* The first row (or column) of an input that row (column) r of its reader
+ * is based at: 2r for BG_DOWN, r for BG_SAME, r >> 1 for BG_UP. */
+static inline int bg_base(int map, int r)
+{
+    return map == BG_DOWN ? 2 * r : map == BG_SAME ? r : r >> 1;
+}
+
 /* The width of input i of node n as n's row function sees it: from the
  * first column n reads (its first column xa, halved for BG_UP, doubled for
  * BG_DOWN) to the last the input made; the row function's input rows start
@@ -210,8 +217,7 @@ static inline int bg_in_w(const bloom_graph_t *g, const bg_node_t *n, int i)
     return from < 0 ? g->w[0] : g->node[from].w;
 #else
     const int end = from < 0 ? g->w[0] : g->node[from].xa + g->node[from].w;
-    const int map = n->in[i].map, xa = n->xa;
-    return end - (map == BG_DOWN ? 2 * xa : map == BG_SAME ? xa : xa >> 1);
+    return end - bg_base(n->in[i].map, n->xa);
 #endif
 }
 

@@ -129,47 +129,13 @@ static inline void tents8(const uint32_t *e, const uint32_t *o, uint32x4_t t[2][
     }
 }
 
-void cod_blend_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,
-                    uint32_t a, uint32_t c, uint32_t *scr)
+/* o = (a d + f_ch T + 2^23) >> 24 over w pixels, T the tents of ev/ov:
+ * the low 32 bits (the blend, whose sums the C twin keeps as they are) or
+ * saturated at 2^32 - 1 (sat: the output mix); the blend and the mix of
+ * cod_kern.c. Inlined with sat a constant. */
+static inline void weigh(const uint32_t *ev, const uint32_t *ov, const uint32_t *d, uint32_t *o, int w,
+                         uint32_t a, const uint32_t f[3], bool sat)
 {
-    uint32_t *ev, *ov;
-    if (w < 8 || !tent32(u, odd, w, sw, scr, &ev, &ov)) {
-        cod_blend_c(u, odd, d, o, w, sw, a, c, scr);
-        return;
-    }
-    int x = 0;
-    for (; x + 8 <= w; x += 8) {
-        uint32x4_t t[2][3];
-        tents8(ev + 3 * (x >> 1), ov + 3 * (x >> 1), t);
-        for (int h = 0; h < 2; h++) {
-            const uint32x4x3_t dv = vld3q_u32(d + 3 * (x + 4 * h));
-            uint32x4x3_t r;
-            for (int ch = 0; ch < 3; ch++) {
-                const uint32x4_t dd = dv.val[ch], tt = t[h][ch];
-                const uint64x2_t lo = vmlal_n_u32(vmull_n_u32(vget_low_u32(dd), a), vget_low_u32(tt), c);
-                const uint64x2_t hi = vmlal_high_n_u32(vmull_high_n_u32(dd, a), tt, c);
-                r.val[ch] =
-                    vrshrn_high_n_u64(vrshrn_n_u64(lo, 24), hi, 24); /* (q + 2^23) >> 24, low 32 bits */
-            }
-            vst3q_u32(o + 3 * (x + 4 * h), r);
-        }
-    }
-    for (; x < w; x++) {
-        const uint32_t *t = ((x & 1) ? ov : ev) + 3 * (x >> 1);
-        for (int ch = 0; ch < 3; ch++)
-            o[3 * x + ch] =
-                (uint32_t)(((uint64_t)a * d[3 * x + ch] + (uint64_t)c * t[ch] + (1u << 23)) >> 24);
-    }
-}
-
-void cod_mix_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,
-                  uint32_t a, const uint32_t f[3], uint32_t *scr)
-{
-    uint32_t *ev, *ov;
-    if (w < 8 || !tent32(u, odd, w, sw, scr, &ev, &ov)) {
-        cod_mix_c(u, odd, d, o, w, sw, a, f, scr);
-        return;
-    }
     int x = 0;
     for (; x + 8 <= w; x += 8) {
         uint32x4_t t[2][3];
@@ -181,8 +147,9 @@ void cod_mix_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32
                 const uint32x4_t dd = dv.val[ch], tt = t[h][ch];
                 const uint64x2_t lo = vmlal_n_u32(vmull_n_u32(vget_low_u32(dd), a), vget_low_u32(tt), f[ch]);
                 const uint64x2_t hi = vmlal_high_n_u32(vmull_high_n_u32(dd, a), tt, f[ch]);
-                /* min((q + 2^23) >> 24, 2^32 - 1): the saturating narrow */
-                r.val[ch] = vcombine_u32(vqrshrn_n_u64(lo, 24), vqrshrn_n_u64(hi, 24));
+                /* (q + 2^23) >> 24: the saturating narrow, or the low 32 bits */
+                r.val[ch] = sat ? vcombine_u32(vqrshrn_n_u64(lo, 24), vqrshrn_n_u64(hi, 24))
+                                : vrshrn_high_n_u64(vrshrn_n_u64(lo, 24), hi, 24);
             }
             vst3q_u32(o + 3 * (x + 4 * h), r);
         }
@@ -191,9 +158,32 @@ void cod_mix_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32
         const uint32_t *t = ((x & 1) ? ov : ev) + 3 * (x >> 1);
         for (int ch = 0; ch < 3; ch++) {
             const uint64_t q = ((uint64_t)a * d[3 * x + ch] + (uint64_t)f[ch] * t[ch] + (1u << 23)) >> 24;
-            o[3 * x + ch] = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
+            o[3 * x + ch] = sat && q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
         }
     }
+}
+
+void cod_blend_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,
+                    uint32_t a, uint32_t c, uint32_t *scr)
+{
+    uint32_t *ev, *ov;
+    if (w < 8 || !tent32(u, odd, w, sw, scr, &ev, &ov)) {
+        cod_blend_c(u, odd, d, o, w, sw, a, c, scr);
+        return;
+    }
+    const uint32_t f[3] = {c, c, c};
+    weigh(ev, ov, d, o, w, a, f, false);
+}
+
+void cod_mix_neon(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,
+                  uint32_t a, const uint32_t f[3], uint32_t *scr)
+{
+    uint32_t *ev, *ov;
+    if (w < 8 || !tent32(u, odd, w, sw, scr, &ev, &ov)) {
+        cod_mix_c(u, odd, d, o, w, sw, a, f, scr);
+        return;
+    }
+    weigh(ev, ov, d, o, w, a, f, true);
 }
 
 #else
