@@ -25,6 +25,13 @@ command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 command -v gst-inspect-1.0 >/dev/null 2>&1 || need="$need gstreamer1.0-tools"
 ls /usr/lib/*/gstreamer-1.0/libgstapp.so /usr/lib/*/gstreamer-1.0/libgstvideoconvertscale.so \
     >/dev/null 2>&1 || need="$need gstreamer1.0-plugins-base"
+# the FPGA twin (port/fpga): two simulators, synthesis, iCE40 place and route
+command -v g++ >/dev/null 2>&1 || need="$need g++"
+command -v verilator >/dev/null 2>&1 || need="$need verilator"
+command -v iverilog >/dev/null 2>&1 || need="$need iverilog"
+command -v yosys >/dev/null 2>&1 || need="$need yosys"
+command -v nextpnr-ice40 >/dev/null 2>&1 || need="$need nextpnr-ice40"
+command -v icepack >/dev/null 2>&1 || need="$need fpga-icestorm"
 [ -z "$need" ] && exit 0
 echo "deps: installing$need"
 SUDO=""

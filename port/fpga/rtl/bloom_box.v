@@ -24,7 +24,8 @@
 // the flush is half as long as a row).
 //
 // Flow control: one enable for the whole stage, en = !out_valid ||
-// out_ready; the stage never buffers more than its output register.
+// out_ready; the stage holds at most its three pipeline registers (the
+// sums, the sum that leaves, the rounded pixel).
 `default_nettype none
 module bloom_box #(
     parameter SW = 21,   // sample bits per channel (values <= 2^20)
@@ -229,14 +230,14 @@ module bloom_box #(
     endfunction
 
     reg [3*AW-1:0] s1v, s2v;
-    reg [3*SW-1:0] fl_out, e1_out, e2_out;
+    reg e3_v;
+    reg [3*AW-1:0] e3_s;
+    reg [3*SW-1:0] e3_out;
     always @(*) begin
         for (ch = 0; ch < 3; ch = ch + 1) begin
             s1v[ch*AW +: AW] = a1[ch*AW +: AW] + wmul(s2_t1w, s2_h[ch*HW +: HW]);
             s2v[ch*AW +: AW] = (s2_t2st ? {AW{1'b0}} : a2[ch*AW +: AW]) + wmul(s2_t2w, s2_h[ch*HW +: HW]);
-            e1_out[ch*SW +: SW] = rnd16(s1v[ch*AW +: AW]);
-            e2_out[ch*SW +: SW] = rnd16(s2v[ch*AW +: AW]);
-            fl_out[ch*SW +: SW] = rnd16(fl_b ? rd1[ch*AW +: AW] : rd0[ch*AW +: AW]);
+            e3_out[ch*SW +: SW] = rnd16(e3_s[ch*AW +: AW]);
         end
         we0 = 1'b0;
         we1 = 1'b0;
@@ -266,6 +267,7 @@ module bloom_box #(
             fl_act <= 1'b0;
             lw0_v <= 1'b0;
             lw1_v <= 1'b0;
+            e3_v <= 1'b0;
             out_valid <= 1'b0;
         end else if (en) begin
             s2_v <= s1_v;
@@ -297,19 +299,22 @@ module bloom_box #(
                 fl_x <= 0;
                 fl_b <= s2_t1b ? 1'b0 : 1'b1; // t2's bank
             end
-            out_valid <= 1'b0;
+            // stage 3 takes the sum that leaves; the rounding is after it
+            e3_v <= 1'b0;
             if (f2_v) begin
-                out_valid <= 1'b1;
-                out_data <= fl_out;
+                e3_v <= 1'b1;
+                e3_s <= fl_b ? rd1 : rd0;
             end
             if (s2_v && s2_t1ex && s2_t1em) begin
-                out_valid <= 1'b1;
-                out_data <= e1_out;
+                e3_v <= 1'b1;
+                e3_s <= s1v;
             end
             if (s2_v && s2_t2em) begin
-                out_valid <= 1'b1;
-                out_data <= e2_out;
+                e3_v <= 1'b1;
+                e3_s <= s2v;
             end
+            out_valid <= e3_v;
+            out_data <= e3_out;
         end
     end
 endmodule

@@ -92,7 +92,7 @@ module bloom_knee #(
     reg [N2:0] d2_v;
 
     // C: num and the second dividend, from the last unit of division 1
-    wire [Q1-1:0] soft_q = step1_q(N1 - 1);
+    wire [Q1-1:0] soft_q;
     wire [SW-1:0] c_b = d1_b[(N1-1)*SW +: SW];
     wire [SW-1:0] c_o = d1_o[(N1-1)*SW +: SW];
     wire [SW-1:0] c_num = {1'b0, soft_q} > c_o ? {1'b0, soft_q} : c_o;
@@ -101,7 +101,7 @@ module bloom_knee #(
     // E: the factor, F: the products
     wire [SW-1:0] e_b = d2_b[(N2-1)*SW +: SW];
     wire [SW-1:0] e_num = d2_num[(N2-1)*SW +: SW];
-    wire [Q2-1:0] e_q = step2_q(N2 - 1);
+    wire [Q2-1:0] e_q;
     wire [24:0] f = e_num == 0 ? 25'd0 : (e_b < 11 ? e_num[3:0] * 25'd1600000 : e_q);
     wire [3*SW-1:0] e_c = d2_c[(N2-1)*3*SW +: 3*SW];
     reg [3*SW-1:0] f_c;
@@ -145,24 +145,14 @@ module bloom_knee #(
             else it2 = {t, n << 1, q[Q2-2:0], 1'b0};
         end
     endfunction
-    // the quotient of the last unit after its last step (this clock's)
-    function [Q1-1:0] step1_q;
-        input integer u;
-        reg [R1+Q1+Q1-1:0] s;
-        begin
-            s = it1(d1_r[u*R1 +: R1], d1_n[u*Q1 +: Q1], d1_q[u*Q1 +: Q1], u * II + II - 1 < Q1);
-            step1_q = s[Q1-1:0];
-        end
-    endfunction
-    function [Q2-1:0] step2_q;
-        input integer u;
-        reg [R2+Q2+Q2-1:0] s;
-        begin
-            s = it2(d2_r[u*R2 +: R2], d2_n[u*Q2 +: Q2], d2_q[u*Q2 +: Q2], d2_b[u*SW +: SW] == 0 ? 21'd1 : d2_b[u*SW +: SW],
-                    u * II + II - 1 < Q2);
-            step2_q = s[Q2-1:0];
-        end
-    endfunction
+    // the quotient of each division's last unit after its last step (this clock's)
+    wire [R1+Q1+Q1-1:0] last1 = it1(d1_r[(N1-1)*R1 +: R1], d1_n[(N1-1)*Q1 +: Q1], d1_q[(N1-1)*Q1 +: Q1],
+                                    (N1 - 1) * II + II - 1 < Q1);
+    wire [SW-1:0] last_b = d2_b[(N2-1)*SW +: SW];
+    wire [R2+Q2+Q2-1:0] last2 = it2(d2_r[(N2-1)*R2 +: R2], d2_n[(N2-1)*Q2 +: Q2], d2_q[(N2-1)*Q2 +: Q2],
+                                    last_b == 0 ? 21'd1 : last_b, (N2 - 1) * II + II - 1 < Q2);
+    assign soft_q = last1[Q1-1:0];
+    assign e_q = last2[Q2-1:0];
 
     integer u;
     reg [R1+Q1+Q1-1:0] s1;

@@ -40,18 +40,14 @@ module bloom_out #(
     assign s_ready = take;
 
     // the decoded source pixel
-    reg [62:0] sd;
-    always @(*) begin
-        if (FMT888) begin
-            sd[20:0] = dec8(s_data[7:0]);
-            sd[41:21] = dec8(s_data[15:8]);
-            sd[62:42] = dec8(s_data[PW-1:16]);
-        end else begin
-            sd[20:0] = dec5(s_data[15:11]);
-            sd[41:21] = dec6(s_data[10:5]);
-            sd[62:42] = dec5(s_data[4:0]);
+    wire [62:0] sd;
+    generate
+        if (FMT888) begin : g_dec888
+            assign sd = {dec8(s_data[PW-1:16]), dec8(s_data[15:8]), dec8(s_data[7:0])};
+        end else begin : g_dec565
+            assign sd = {dec5(s_data[4:0]), dec6(s_data[10:5]), dec5(s_data[15:11])};
         end
-    end
+    endgenerate
 
     function [20:0] thr;         // E_n[i] of the channel's code width
         input integer nb;
@@ -60,6 +56,13 @@ module bloom_out #(
             if (nb == 8) thr = enc8(i);
             else if (nb == 6) thr = enc6(i[5:0]);
             else thr = enc5(i[4:0]);
+        end
+    endfunction
+    function [PW-1:0] pack;      // codes R, G, B (8 bits each) to the pixel
+        input [23:0] c;
+        begin
+            if (FMT888) pack = c[PW-1:0];
+            else pack = {c[4:0], c[13:8], c[20:16]};
         end
     endfunction
     function integer nbits;
@@ -114,8 +117,7 @@ module bloom_out #(
                     c_c[(st+1)*24 + ch*8 +: 8] <= code;
                 end
             end
-            if (FMT888) o_px <= c_c[8*24 +: 24];
-            else o_px <= {c_c[8*24 + 0 +: 5], c_c[8*24 + 8 +: 6], c_c[8*24 + 16 +: 5]};
+            o_px <= pack(c_c[8*24 +: 24]);
         end
     end
 endmodule

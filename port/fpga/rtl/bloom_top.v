@@ -169,10 +169,13 @@ module bloom_top #(
                 wire [3*SW-1:0] kq_data;
                 wire kq_valid, kq_ready;
                 if (KNEE_II > 1) begin : g_queue
-                    // level-1 pixels come one every two clocks along a row:
-                    // a slower knee takes them from a row-long queue
+                    // level-1 pixels come one every two clocks along a row,
+                    // a quarter of a clock on average; at the end of a frame
+                    // two rows in a row (even height) or a row and the box's
+                    // flush (odd height): a knee taking one every KNEE_II <= 3
+                    // clocks needs a queue of one level-1 row to keep up
                     wire [31:0] unused;
-                    bloom_fifo #(.W(3 * SW), .DEPTH((WMAX + 3) / 4 + 8)) kq (
+                    bloom_fifo #(.W(3 * SW), .DEPTH((WMAX + 1) / 2 + 16)) kq (
                         .clk(clk), .rst(rst), .in_valid(bx_valid), .in_ready(bx_ready), .in_data(bx_data),
                         .out_valid(kq_valid), .out_ready(kq_ready), .out_data(kq_data), .level_max(unused));
                 end else begin : g_direct

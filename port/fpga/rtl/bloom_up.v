@@ -9,7 +9,7 @@
 // columns n = 0 .. wi-1, reading the same column of every bank in one
 // clock, and forms the vertical tent V(n) = (a u0 + 4 u1 + c u2 + 4) >> 3
 // with (a, c) = (3, 1) on even rows and (1, 3) on odd ones (half up). The
-// V values queue in four registers; the horizontal side takes two at the
+// V values queue in four registers (a circle); the horizontal side takes two at the
 // start of a row and one every other output pixel after, and makes
 // T(x) = (a' V(n-1) + 4 V(n) + c' V(n+1) + 3) >> 3, n = x >> 1, (a', c') =
 // (3, 1) for even x and (1, 3) for odd x (half down), one pixel per clock.
@@ -156,16 +156,19 @@ module bloom_up #(
     integer ch;
     always @(*) begin
         for (ch = 0; ch < 3; ch = ch + 1) begin
-            if (p_odd)
-                vs = u0[ch*UW +: UW] + {u1[ch*UW +: UW], 2'b0} + {u2[ch*UW +: UW], 1'b0} + u2[ch*UW +: UW] + 3'd4;
-            else
-                vs = {u0[ch*UW +: UW], 1'b0} + u0[ch*UW +: UW] + {u1[ch*UW +: UW], 2'b0} + u2[ch*UW +: UW] + 3'd4;
+            // (3, 4, 1) or (1, 4, 3): u0 + u2 + 4 u1 + 2 (the heavier end), one adder tree
+            vs = u0[ch*UW +: UW] + u2[ch*UW +: UW] + {u1[ch*UW +: UW], 2'b0} +
+                 {(p_odd ? u2[ch*UW +: UW] : u0[ch*UW +: UW]), 1'b0} + 3'd4;
             vnew[ch*UW +: UW] = vs[UW+2:3];
         end
     end
 
     // ---- V queue and the horizontal side -----------------------------
-    reg [3*UW-1:0] v0, v1, v2, v3;     // v0 is the head
+    // four entries in a circle: written at vw, read at vr and vr + 1
+    reg [3*UW-1:0] vq0, vq1, vq2, vq3;
+    reg [1:0] vw, vr;
+    wire [3*UW-1:0] v0 = pick(vr, vq0, vq1, vq2, vq3);
+    wire [3*UW-1:0] v1 = pick(vr + 2'd1, vq0, vq1, vq2, vq3);
     reg [3*UW-1:0] wp, wc, wn;         // V(n-1), V(n), V(n+1)
     reg [XW-1:0] hx;                   // output column
     wire [XW-1:0] hn = hx >> 1;
@@ -185,38 +188,21 @@ module bloom_up #(
     reg [UW+3:0] ts;
     always @(*) begin
         for (ch = 0; ch < 3; ch = ch + 1) begin
-            if (hx[0])
-                ts = xp[ch*UW +: UW] + {xc[ch*UW +: UW], 2'b0} + {xn[ch*UW +: UW], 1'b0} + xn[ch*UW +: UW] + 2'd3;
-            else
-                ts = {xp[ch*UW +: UW], 1'b0} + xp[ch*UW +: UW] + {xc[ch*UW +: UW], 2'b0} + xn[ch*UW +: UW] + 2'd3;
+            ts = xp[ch*UW +: UW] + xn[ch*UW +: UW] + {xc[ch*UW +: UW], 2'b0} +
+                 {(hx[0] ? xn[ch*UW +: UW] : xp[ch*UW +: UW]), 1'b0} + 2'd3;
             tval[ch*UW +: UW] = ts[UW+2:3] + (HAS_ADD != 0 ? add_data[ch*SW +: SW] : {SW{1'b0}});
         end
     end
 
-    // the queue: pop 0..2 at the head, push one at the tail
     wire [1:0] pop = emit ? npop : 2'd0;
-    reg [3*UW-1:0] s0, s1, s2, s3;
-    reg [2:0] c1;
-    always @(*) begin
-        s0 = v0;
-        s1 = v1;
-        s2 = v2;
-        s3 = v3;
-        if (pop == 2'd1) begin
-            s0 = v1;
-            s1 = v2;
-            s2 = v3;
-        end else if (pop == 2'd2) begin
-            s0 = v2;
-            s1 = v3;
-        end
-        c1 = vcnt - pop;
+    wire [2:0] c1 = vcnt - pop;
+    always @(posedge clk) begin
         if (p_v) begin
-            case (c1)
-            3'd0: s0 = vnew;
-            3'd1: s1 = vnew;
-            3'd2: s2 = vnew;
-            default: s3 = vnew;
+            case (vw)
+            2'd0: vq0 <= vnew;
+            2'd1: vq1 <= vnew;
+            2'd2: vq2 <= vnew;
+            default: vq3 <= vnew;
             endcase
         end
     end
@@ -224,14 +210,14 @@ module bloom_up #(
     always @(posedge clk) begin
         if (rst) begin
             vcnt <= 0;
+            vw <= 0;
+            vr <= 0;
             hx <= 0;
             out_valid <= 1'b0;
         end else begin
-            v0 <= s0;
-            v1 <= s1;
-            v2 <= s2;
-            v3 <= s3;
             vcnt <= c1 + p_v;
+            vr <= vr + pop;
+            if (p_v) vw <= vw + 1'b1;
             if (en) out_valid <= can;
             if (emit) begin
                 out_data <= tval;

@@ -85,7 +85,8 @@ static void make_frame(const Case &c, int f, std::vector<uint8_t> &px)
             case 1: {
                 const uint32_t v = rnd();
                 if ((v & 63) == 0)
-                    r = 200 + (int)(v >> 8) % 56, g = 180 + (int)(v >> 16) % 76, b = 150 + (int)(v >> 24) % 106;
+                    r = 200 + (int)(v >> 8) % 56, g = 180 + (int)(v >> 16) % 76,
+                    b = 150 + (int)(v >> 24) % 106;
                 else
                     r = (int)(v >> 8) & 63, g = (int)(v >> 14) & 63, b = (int)(v >> 20) & 63;
                 break;
@@ -143,7 +144,7 @@ static bool run_case(const Case &c, bool verbose)
     bloom_config_t cfg;
     bloom_config_default(&cfg, c.w, c.h);
     cfg.in_fmt = cfg.out_fmt = TB_FMT888 ? BLOOM_FMT_RGB888 : BLOOM_FMT_RGB565;
-    cfg.levels = c.levels;
+    cfg.levels = c.levels < TB_LMAX ? c.levels : TB_LMAX; // the build's deepest pyramid
     cfg.threshold = (uint32_t)(c.thr * 65536.0 + 0.5);
     cfg.soft_knee = (uint32_t)(c.knee * 65536.0 + 0.5);
     cfg.intensity = (uint32_t)(c.inten * 65536.0 + 0.5);
@@ -180,7 +181,7 @@ static bool run_case(const Case &c, bool verbose)
     reg_write(t, 0, c.debug ? 1u : 0u);
     reg_write(t, 1, (uint32_t)c.w);
     reg_write(t, 2, (uint32_t)c.h);
-    reg_write(t, 3, (uint32_t)c.levels);
+    reg_write(t, 3, (uint32_t)cfg.levels);
     reg_write(t, 4, info.threshold_q);
     reg_write(t, 5, info.knee_q);
     reg_write(t, 6, info.intensity_q);
@@ -297,15 +298,16 @@ static bool run_case(const Case &c, bool verbose)
     // block and rows are at least 16 pixels (shorter rows end before the
     // box's flush of an odd-height frame, a few clocks, is done)
     const bool strict = c.gap_pct == 0 && c.bp_pct == 0 && c.row_pause == 0 && c.w >= 16;
-    bool ok = diffs == 0 && framing == 0 && sync == 0 && rtl_levels == info.levels && (!strict || stalls == 0);
+    bool ok =
+        diffs == 0 && framing == 0 && sync == 0 && rtl_levels == info.levels && (!strict || stalls == 0);
     // the probe: the RTL needs exactly the rows the C engine needs
     if (c.row_pause && lat_max != info.latency_rows)
         ok = false;
     if (!ok || verbose) {
         printf("%s %s: %dx%d L=%d (rtl %d) %d frame(s): %ld bytes differ, %ld framing errors, sync %u, "
                "%ld input stalls%s",
-               ok ? "ok  " : "FAIL", c.name.c_str(), c.w, c.h, info.levels, rtl_levels, c.frames, diffs, framing,
-               sync, stalls, c.gap_pct || c.bp_pct ? " (throttled)" : "");
+               ok ? "ok  " : "FAIL", c.name.c_str(), c.w, c.h, info.levels, rtl_levels, c.frames, diffs,
+               framing, sync, stalls, c.gap_pct || c.bp_pct ? " (throttled)" : "");
         if (c.row_pause)
             printf("; latency %ld rows (C: %d) + %ld clocks", lat_max, info.latency_rows, lat_cyc_max);
         printf("\n");
@@ -338,13 +340,13 @@ int main(int argc, char **argv)
     }
     std::vector<Case> cs;
     auto add = [&](const std::string &n, int w, int h, int lv, double thr, double kn, double in, bool dbg,
-                   int frames, int blank, int gap, int bp, int scene, unsigned seed, const img_t *im = nullptr,
-                   int pause = 0) {
+                   int frames, int blank, int gap, int bp, int scene, unsigned seed,
+                   const img_t *im = nullptr, int pause = 0) {
         cs.push_back(Case{n, w, h, lv, thr, kn, in, dbg, frames, blank, gap, bp, pause, scene, seed, im});
     };
     // odd and tiny sizes, every level count the size allows
-    const int sizes[][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 3}, {1, 7}, {7, 1}, {2, 5}, {5, 2}, {4, 4},
-                            {5, 5}, {6, 9}, {33, 17}, {17, 33}, {31, 31}, {64, 48}};
+    const int sizes[][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 3},   {1, 7},   {7, 1},   {2, 5},
+                            {5, 2}, {4, 4}, {5, 5}, {6, 9}, {33, 17}, {17, 33}, {31, 31}, {64, 48}};
     for (auto &s : sizes)
         for (int lv = 1; lv <= TB_LMAX; lv++) {
             if (lv > 1 && (s[0] < 4 || s[1] < 4) && lv > 2)
@@ -353,12 +355,14 @@ int main(int argc, char **argv)
                 s[1], lv, 0.6, 0.5, 1.0, false, 3, 1, 0, 0, 0, (unsigned)(s[0] * 100 + s[1] * 7 + lv));
         }
     // parameter extremes (threshold 0 and 256, hard and full knee, intensity 0 and 10, debug view)
-    const double ext[][4] = {{0.0, 0.5, 1.0, 0}, {0.0, 0.0, 10.0, 0}, {256.0, 1.0, 10.0, 0}, {1.0, 0.0, 1.0, 0},
-                             {1.0, 1.0, 0.3, 0},  {0.5, 1.0, 10.0, 1}, {0.2, 0.3, 0.0, 0},  {0.9, 0.5, 2.5, 1},
-                             {1e-5, 1.0, 1.0, 0}, {0.0, 1.0, 10.0, 1}};
+    const double ext[][4] = {{0.0, 0.5, 1.0, 0}, {0.0, 0.0, 10.0, 0}, {256.0, 1.0, 10.0, 0},
+                             {1.0, 0.0, 1.0, 0}, {1.0, 1.0, 0.3, 0},  {0.5, 1.0, 10.0, 1},
+                             {0.2, 0.3, 0.0, 0}, {0.9, 0.5, 2.5, 1},  {1e-5, 1.0, 1.0, 0},
+                             {0.0, 1.0, 10.0, 1}};
     int ei = 0;
     for (auto &e : ext) {
-        add("params" + std::to_string(ei), 40, 30, 5, e[0], e[1], e[2], e[3] != 0, 2, 2, 0, 0, ei % 2, 300u + ei);
+        add("params" + std::to_string(ei), 40, 30, 5, e[0], e[1], e[2], e[3] != 0, 2, 2, 0, 0, ei % 2,
+            300u + ei);
         add("white" + std::to_string(ei), 37, 21, 4, e[0], e[1], e[2], e[3] != 0, 1, 1, 0, 0, 2, 310u + ei);
         ei++;
     }
@@ -375,8 +379,8 @@ int main(int argc, char **argv)
     add("rocket", 640, 427, 5, 0.6, 0.5, 1.5, false, 2, 2, 0, 0, 3, 11, &rocket);
     add("hubble_gaps", 200, 150, 6, 0.3, 0.8, 2.0, false, 2, 1, 20, 30, 3, 12, &hubble);
     for (int lv = 1; lv <= (quick ? 2 : TB_LMAX); lv++)
-        add("qvga_L" + std::to_string(lv), 320, 240, lv, 0.8, 0.5, 1.0, false, 3, 2, 0, 0, lv % 2 ? 1 : 3, 20u + lv,
-            &rocket);
+        add("qvga_L" + std::to_string(lv), 320, 240, lv, 0.8, 0.5, 1.0, false, 3, 2, 0, 0, lv % 2 ? 1 : 3,
+            20u + lv, &rocket);
     add("vga_L5", 640, 480, 5, 0.6, 0.5, 1.5, false, 3, 2, 0, 0, 3, 31, &hubble);
     if (!quick) {
         add("vga_L8", 640, 480, 8, 0.6, 0.5, 1.5, false, 2, 2, 0, 0, 1, 32);
@@ -384,8 +388,8 @@ int main(int argc, char **argv)
     }
     // the latency probe: every row drains before the next comes
     for (int lv = 1; lv <= 5; lv++)
-        add("latency_L" + std::to_string(lv), 64, 200, lv, 0.5, 0.5, 1.0, false, 1, 1, 0, 0, 1, 60u + lv, nullptr,
-            600);
+        add("latency_L" + std::to_string(lv), 64, 200, lv, 0.5, 0.5, 1.0, false, 1, 1, 0, 0, 1, 60u + lv,
+            nullptr, 600);
     add("latency_qvga", 320, 240, 5, 0.5, 0.5, 1.0, false, 1, 1, 0, 0, 1, 66, nullptr, 1500);
     if (TB_WMAX >= 1920) {
         add("hd_L5", 1920, 1080, 5, 1.0, 0.5, 1.0, false, 3, 45, 0, 0, 3, 41, &hubble);

@@ -1,0 +1,161 @@
+#!/bin/sh
+# Synthesis of the FPGA twin with the open tools from Debian.
+#
+#   synth.sh check OUTDIR          (make check-fpga-synth) the whole block
+#       elaborates in yosys for both pixel formats with no warning that
+#       matters (no latch, no multiple driver, no combinational loop); and
+#       each unit that repeats per level (box, tent, knee) is placed and
+#       routed on the iCE40 UP5K in a timing harness: it fits and meets
+#       25 MHz (640x480@60's pixel clock). Ends "N passed, N failed, 0 skipped".
+#   synth.sh table OUTDIR README   (make fpga) the resource and Fmax table:
+#       every build below through yosys (and nextpnr for the iCE40s), the
+#       table written into README between its two table markers.
+set -u
+mode=$1
+out=$2
+inc=$(dirname "$out")
+mkdir -p "$out"
+RTL="port/fpga/rtl/bloom_top.v port/fpga/rtl/bloom_box.v port/fpga/rtl/bloom_knee.v port/fpga/rtl/bloom_up.v
+     port/fpga/rtl/bloom_out.v port/fpga/rtl/bloom_fifo.v"
+# shellcheck disable=SC2086
+RTL=$(echo $RTL)
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); echo "ok   $*"; }
+bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+
+# json_num FILE KEY: the first number after "KEY" in a nextpnr report
+json_num() { tr -d '\n ' <"$1" | grep -o "\"$2\":{[^}]*}" | head -1; }
+# stat_count LOG CELL: the count of a cell type in yosys's last stat
+stat_count() {
+    awk -v c="$2" '$1 == c { n = $2 } END { print n + 0 }' "$1"
+}
+
+# pnr NAME DEVICE PACKAGE JSON: nextpnr-ice40 at 25 MHz; sets lc, lc_max, fmax
+pnr() {
+    lc="" lc_max="" fmax=""
+    if nextpnr-ice40 "--$2" --package "$3" --json "$4" --freq 25 --report "$out/$1.report.json" \
+        --timing-allow-fail --asc "$out/$1.asc" >"$out/$1.pnr.log" 2>&1; then
+        u=$(json_num "$out/$1.report.json" ICESTORM_LC)
+        lc=$(echo "$u" | grep -o '"used":[0-9]*' | cut -d: -f2)
+        lc_max=$(echo "$u" | grep -o '"available":[0-9]*' | cut -d: -f2)
+        fmax=$(tr -d '\n ' <"$out/$1.report.json" | grep -o '"achieved":[0-9.]*' | head -1 | cut -d: -f2)
+        return 0
+    fi
+    return 1
+}
+
+if [ "$mode" = check ]; then
+    for fmt in 1 0; do
+        ys="read_verilog -DSYNTHESIS -I$inc $RTL; chparam -set WMAX 320 -set HMAX 240 -set LMAX 5 -set FMT888 $fmt bloom_top;
+            hierarchy -check -top bloom_top; proc; opt_clean; check -assert"
+        if yosys -q -l "$out/elab_$fmt.log" -p "$ys" >/dev/null 2>&1; then
+            ok "yosys elaborates bloom_top (FMT888=$fmt): no latch, no multiple driver, no combinational loop"
+        else
+            bad "yosys elaboration (FMT888=$fmt): $(grep -i 'error\|warning' "$out/elab_$fmt.log" | head -3)"
+        fi
+    done
+    for unit in 0 1 2; do
+        name=$(echo "box tent knee" | cut -d' ' -f$((unit + 1)))
+        ys="read_verilog -DSYNTHESIS -I$inc $RTL port/fpga/syn/bloom_harness.v;
+            chparam -set UNIT $unit bloom_harness; synth_ice40 -dsp -top bloom_harness -json $out/unit_$name.json"
+        if ! yosys -q -l "$out/unit_$name.yosys.log" -p "$ys" >/dev/null 2>&1; then
+            bad "$name: yosys synth_ice40 failed"
+            continue
+        fi
+        if pnr "unit_$name" up5k sg48 "$out/unit_$name.json"; then
+            if awk -v f="$fmax" 'BEGIN { exit !(f >= 25) }'; then
+                ok "$name unit on the UP5K: $lc of $lc_max logic cells, Fmax $fmax MHz (>= 25)"
+            else
+                bad "$name unit on the UP5K: Fmax $fmax MHz, below 25"
+            fi
+        else
+            bad "$name unit: nextpnr-ice40 failed: $(grep -i 'error' "$out/unit_$name.pnr.log" | head -2)"
+        fi
+    done
+    echo "$pass passed, $fail failed, 0 skipped"
+    [ "$fail" -eq 0 ]
+    exit
+fi
+
+[ "$mode" = table ] || { echo "usage: synth.sh check|table OUTDIR [README]"; exit 2; }
+readme=$3
+tab=$out/table.md
+ws_of() { # W H L FMT888: the C engine's workspace for the same configuration, bytes
+    "$inc/gen_vectors" --workspace "$1" "$2" "$3" "$4"
+}
+mem_bits() { # params...: the memory bits the RTL infers
+    yosys -q -l "$out/mem.log" -p "read_verilog -DSYNTHESIS -I$inc $RTL; chparam $* bloom_top;
+        hierarchy -top bloom_top; proc; flatten; memory -nomap; stat" >/dev/null 2>&1
+    awk '/Number of memory bits/ { n = $NF } END { print n + 0 }' "$out/mem.log"
+}
+{
+    echo "| build | device | logic | flip-flops | block RAM | DSP | Fmax | on-chip memory / C workspace |"
+    echo "|---|---|---|---|---|---|---|---|"
+} >"$tab"
+# name, device, yosys pass, parameters (W H L FMT888 KNEE_II)
+while read -r name dev W H L F II; do
+    [ -z "$name" ] && continue
+    p="-set WMAX $W -set HMAX $H -set LMAX $L -set FMT888 $F -set KNEE_II $II"
+    bits=$(mem_bits "$p")
+    ws=$(ws_of "$W" "$H" "$L" "$F")
+    memcol="$((bits / 8192)) KB / $((ws / 1024)) KB"
+    fmt=$([ "$F" = 1 ] && echo RGB888 || echo RGB565)
+    label="${W}x$H $fmt, $L levels, knee every $II clock$([ "$II" = 1 ] || echo s)"
+    log=$out/$name.yosys.log
+    case $dev in
+    up5k | hx8k)
+        flags=$([ "$dev" = up5k ] && echo "-dsp -spram" || echo "")
+        # shellcheck disable=SC2086
+        yosys -q -l "$log" -p "read_verilog -DSYNTHESIS -I$inc $RTL port/fpga/syn/bloom_board.v;
+            chparam $p bloom_board;
+            synth_ice40 $flags -top bloom_board -json $out/$name.json; stat" >/dev/null 2>&1
+        luts=$(stat_count "$log" SB_LUT4)
+        ffs=$(awk '$1 ~ /^SB_DFF/ { n += $2 } END { print n + 0 }' "$log")
+        ebr=$(stat_count "$log" SB_RAM40_4K)
+        spram=$(stat_count "$log" SB_SPRAM256KA)
+        dsp=$(stat_count "$log" SB_MAC16)
+        if [ "$dev" = up5k ]; then cap="5280 LUT, 30 EBR, 4 SPRAM, 8 MAC16"; else cap="7680 LUT, 32 EBR"; fi
+        if pnr "$name" "$dev" "$([ "$dev" = up5k ] && echo sg48 || echo ct256)" "$out/$name.json"; then
+            fm="$fmax MHz"
+        else
+            fm="does not fit ($cap)"
+        fi
+        echo "| $label | iCE40 $(echo "$dev" | tr a-z A-Z) | $luts LUT4 | $ffs | $ebr EBR, $spram SPRAM | $dsp MAC16 | $fm | $memcol |" >>"$tab"
+        ;;
+    xc7)
+        yosys -q -l "$log" -p "read_verilog -DSYNTHESIS -I$inc $RTL; chparam $p bloom_top;
+            synth_xilinx -family xc7 -top bloom_top; stat" >/dev/null 2>&1
+        luts=$(awk '$1 ~ /^LUT[1-6]$/ { n += $2 } END { print n + 0 }' "$log")
+        ffs=$(awk '$1 ~ /^FD[CPRSE]*$/ { n += $2 } END { print n + 0 }' "$log")
+        b36=$(stat_count "$log" RAMB36E1)
+        b18=$(stat_count "$log" RAMB18E1)
+        dsp=$(stat_count "$log" DSP48E1)
+        echo "| $label | Xilinx 7-series (estimate) | $luts LUT | $ffs | $b36 RAMB36 + $b18 RAMB18 | $dsp DSP48E1 | (no place and route) | $memcol |" >>"$tab"
+        ;;
+    ecp5)
+        yosys -q -l "$log" -p "read_verilog -DSYNTHESIS -I$inc $RTL; chparam $p bloom_top;
+            synth_ecp5 -top bloom_top; stat" >/dev/null 2>&1
+        luts=$(stat_count "$log" LUT4)
+        ffs=$(stat_count "$log" TRELLIS_FF)
+        bram=$(stat_count "$log" DP16KD)
+        dsp=$(stat_count "$log" MULT18X18D)
+        echo "| $label | Lattice ECP5 (estimate) | $luts LUT4 | $ffs | $bram DP16KD | $dsp MULT18X18D | (no place and route) | $memcol |" >>"$tab"
+        ;;
+    esac
+    echo "$name: $(tail -1 "$tab")"
+done <<BUILDS
+up5k_qvga up5k 320 240 5 0 3
+up5k_small up5k 64 48 1 0 3
+hx8k_small hx8k 64 48 1 0 3
+xc7_hd3 xc7 1920 1080 3 1 1
+xc7_hd5 xc7 1920 1080 5 1 1
+ecp5_hd3 ecp5 1920 1080 3 1 1
+ecp5_hd5 ecp5 1920 1080 5 1 1
+BUILDS
+# into README, between the markers
+awk -v tab="$tab" '
+    /<!-- fpga-table:begin -->/ { print; while ((getline l < tab) > 0) print l; skip = 1; next }
+    /<!-- fpga-table:end -->/ { skip = 0 }
+    !skip { print }' "$readme" >"$readme.tmp" && mv "$readme.tmp" "$readme"
+echo "table written into $readme"
