@@ -23,6 +23,9 @@
 // next frame's row 1 waits for the flush: it is never needed in practice,
 // the flush is half as long as a row).
 //
+// Widths (8-bit and 5/6-bit codes: samples <= 2^20, SW = 21 bits): H <=
+// 2^22 (SW + 2), the 16-sample sums <= 2^24 (AW = SW + 4), rounding adds 8.
+//
 // Flow control: one enable for the whole stage, en = !out_valid ||
 // out_ready; the stage holds at most its three pipeline registers (the
 // sums, the sum that leaves, the rounded pixel).

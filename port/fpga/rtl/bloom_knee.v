@@ -16,9 +16,10 @@
 // The pipeline is phase-locked: a pixel enters every II clocks, and every
 // divider unit performs II steps of its division on the pixel it holds
 // before passing it on (II = 1: one pixel per clock, 45 units; II = 2 or
-// 4: half or a quarter of the units, for small FPGAs, fed through a FIFO:
+// 3: a half or a third of the units, for small FPGAs, fed through a queue:
 // level-1 pixels come at most one every two clocks, a quarter of a clock
-// on average).
+// on average, so II = 4 would have no slack left; II = 1 and 3 are the
+// tested builds).
 `default_nettype none
 module bloom_knee #(
     parameter SW = 21,

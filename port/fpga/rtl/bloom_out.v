@@ -7,8 +7,11 @@
 // B comes from the last tent (bloom_up, HAS_ADD = 0), S is the source
 // pixel read a second time (c_axis), decoded. The encoder is a binary
 // search over the generated thresholds, one bit per pipeline stage
-// (8 stages; 5- and 6-bit channels pass the first ones through).
-// A plain pipeline: every stage moves when the output is free.
+// (8 stages; 5- and 6-bit channels pass the last ones through).
+// Widths: B < 2^25 (UW), I_q < 2^24, so I B < 2^49; S + P < 2^34, and
+// anything at 2^20 or above is the top code.
+// A plain pipeline: every stage moves when the output is free (so
+// m_tready reaches b_ready and c_tready in the same clock).
 `default_nettype none
 module bloom_out #(
     parameter UW = 25,

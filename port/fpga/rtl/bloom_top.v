@@ -19,7 +19,7 @@ module bloom_top #(
     parameter HMAX = 1080,
     parameter LMAX = 5,        // deepest pyramid the build carries (1 .. 16)
     parameter FMT888 = 1,      // pixels: 1 RGB888, 0 RGB565
-    parameter KNEE_II = 1,     // clocks per level-1 pixel in the knee (1, 2, 4)
+    parameter KNEE_II = 1,     // clocks per level-1 pixel in the knee (1 .. 3)
     parameter MARGIN = 8,      // delay-line rows beyond 2^(L-k+2)
     parameter PW = FMT888 ? 24 : 16
 ) (
@@ -61,7 +61,8 @@ module bloom_top #(
     reg [28:0] r_t, r_k;
     reg [23:0] r_i;
     reg r_debug;
-    reg [2:0] sync_err;        // sticky: s_axis, c_axis framing
+    reg [2:0] sync_err;        // sticky: s_axis framing, c_axis framing, a refused write
+    reg bad_write;
     wire [4:0] lv;             // levels built, L
     wire idle;
     always @(posedge clk) begin
@@ -73,18 +74,36 @@ module bloom_top #(
             r_k <= 29'd524288;
             r_i <= 24'd65536;
             r_debug <= 1'b0;
-        end else if (reg_we) begin
+        end else if (reg_we && !bad_write) begin
             case (reg_addr)
             3'd0: r_debug <= reg_wdata[0];
             3'd1: r_w <= reg_wdata[XW-1:0];
             3'd2: r_h <= reg_wdata[YW-1:0];
             3'd3: r_n <= reg_wdata[4:0];
-            3'd4: r_t <= reg_wdata[28:0];
+            3'd4: begin
+                r_t <= reg_wdata[28:0];
+                r_k <= 0;      // K_q <= T_q always: KNEE_Q is written after
+            end
             3'd5: r_k <= reg_wdata[28:0];
             3'd6: r_i <= reg_wdata[23:0];
             default: ;
             endcase
         end
+    end
+    // a value the block cannot run is refused: the register keeps its old
+    // value and CTRL bit 7 says so (the ranges bloom_query checks, and the
+    // build's largest frame; K_q <= T_q: a THRESHOLD_Q write sets KNEE_Q
+    // to 0, and KNEE_Q is written after it)
+    always @(*) begin
+        case (reg_addr)
+        3'd1: bad_write = reg_wdata == 0 || reg_wdata > WMAX;
+        3'd2: bad_write = reg_wdata == 0 || reg_wdata > HMAX;
+        3'd3: bad_write = reg_wdata == 0 || reg_wdata > 16;
+        3'd4: bad_write = reg_wdata > 32'h10000000;
+        3'd5: bad_write = reg_wdata > {3'b0, r_t};
+        3'd6: bad_write = reg_wdata >= 32'h1000000;
+        default: bad_write = 1'b0;
+        endcase
     end
     always @(*) begin
         case (reg_addr)
@@ -194,8 +213,13 @@ module bloom_top #(
             end
 
             // D_k: to box_{k+1} and FIFO_k below L, as U_k at L
-            wire below = exists[k] && (k < LMAX ? exists[k+1] : 1'b0);
-            wire at_l = exists[k] && !below;
+            wire below, at_l;
+            if (k < LMAX) begin : g_below
+                assign below = exists[k] && exists[k+1];
+            end else begin : g_deepest
+                assign below = 1'b0;
+            end
+            assign at_l = exists[k] && !below;
             if (k < LMAX) begin : g_fork
                 assign b_in_data[k+1] = d_data[k];
                 assign b_in_valid[k+1] = d_valid[k] && below && f_in_ready[k];
@@ -268,6 +292,7 @@ module bloom_top #(
             sync_err <= 0;
         end else begin
             if (reg_we && reg_addr == 3'd0) sync_err <= sync_err & ~reg_wdata[7:5];
+            if (reg_we && bad_write) sync_err[2] <= 1'b1;
             if (s_take) begin
                 if (s_tuser != (sx == 0 && sy == 0) || s_tlast != (sx == r_w - 1'b1)) sync_err[0] <= 1'b1;
                 sx <= (sx == r_w - 1'b1) ? {XW{1'b0}} : sx + 1'b1;

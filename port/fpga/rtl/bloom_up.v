@@ -14,6 +14,10 @@
 // T(x) = (a' V(n-1) + 4 V(n) + c' V(n+1) + 3) >> 3, n = x >> 1, (a', c') =
 // (3, 1) for even x and (1, 3) for odd x (half down), one pixel per clock.
 //
+// Widths: U <= 16 * 2^20 for up to 16 levels (UW = 25 bits); the weighted
+// sums of eight U reach 2^28 (UW + 3 bits, plus the rounding); D_k adds
+// at most 2^20, and U_k stays below 2^25.
+//
 // A row may be written once the reader no longer needs the row four
 // below it; the reader starts a row once its lowest row is complete.
 // Frames follow each other without a gap: the rows' global numbers run

@@ -1,11 +1,11 @@
-// A timing harness for placing and routing one unit of the pipeline on
-// its own (make check-fpga-synth): the unit's inputs come from a shift
+// A harness for synthesizing (and placing and routing) one unit of the
+// pipeline on its own (make check-fpga-synth): the unit's inputs come from a shift
 // register fed by one pin, its outputs are registered and folded into one
 // pin, so the tools keep every path and the unit needs three pins. The
 // figure it gives is the unit's own Fmax and size, not the board's.
 `default_nettype none
 module bloom_harness #(
-    parameter UNIT = 0          // 0 bloom_box (level 1), 1 bloom_up (level 0), 2 bloom_knee
+    parameter UNIT = 0          // 0 bloom_box (level 1), 1 bloom_up (level 0), 2 bloom_knee, 3 bloom_out
 ) (
     input wire clk,
     input wire din,
@@ -32,6 +32,14 @@ module bloom_harness #(
                 .in_valid(sh[34]), .in_ready(r), .in_data(sh[109:35]), .add_valid(1'b0), .add_ready(ar),
                 .add_data(63'd0), .out_valid(v), .out_ready(sh[110]), .out_data(d));
             assign o = {ar, r, v, d};
+        end else if (UNIT == 3) begin : g_out
+            wire [15:0] d;
+            wire v, br, sr;
+            bloom_out #(.UW(25), .FMT888(0)) u (
+                .clk(clk), .rst(rst), .i_q(sh[23:0]), .debug(sh[24]), .b_valid(sh[25]), .b_ready(br),
+                .b_data(sh[100:26]), .s_valid(sh[101]), .s_ready(sr), .s_data(sh[117:102]),
+                .o_valid(v), .o_ready(sh[118]), .o_data(d));
+            assign o = {br, sr, v, d};
         end else begin : g_knee
             wire [62:0] d;
             wire v, r;
