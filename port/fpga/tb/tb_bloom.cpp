@@ -418,7 +418,7 @@ int main(int argc, char **argv)
             nullptr, 600);
     add("latency_qvga", 320, 240, 5, 0.5, 0.5, 1.0, false, 1, 1, 0, 0, 1, 66, nullptr, 1500);
     if (TB_WMAX >= 1920) {
-        add("hd_L5", 1920, 1080, 5, 1.0, 0.5, 1.0, false, 3, 45, 0, 0, 3, 41, &hubble);
+        add("hd_L5", 1920, 1080, 5, 1.0, 0.5, 1.0, false, quick ? 2 : 3, 45, 0, 0, 3, 41, &hubble);
         if (!quick)
             add("hd_L3", 1920, 1080, 3, 0.5, 0.7, 2.0, false, 2, 45, 0, 0, 1, 42);
     }
