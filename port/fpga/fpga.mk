@@ -69,7 +69,7 @@ fpga-lint: $(FPGA_RTL) $(FPGA_ROM)
 
 check-fpga-synth: fpga-lint $(FPGA_RTL) $(FPGA_ROM) $(FPGA)/syn/check.sh $(FPGA)/syn/bloom_harness.v
 	@sh tests/runbin.sh "fpga: verilator -Wall lint clean; yosys (elaboration, the per-level units for the iCE40):" '' -- \
-	  sh $(FPGA)/syn/check.sh $(FPGA_B)/check
+	  env FPGA_RTL="$(FPGA_RTL)" sh $(FPGA)/syn/check.sh $(FPGA_B)/check
 
 fpga: $(FPGA_RTL) $(FPGA_ROM) $(FPGA)/syn/synth.sh $(FPGA)/syn/bloom_board.v $(FPGA_B)/gen_vectors
-	sh $(FPGA)/syn/synth.sh table $(FPGA_B)/syn $(FPGA)/README.md
+	FPGA_RTL="$(FPGA_RTL)" sh $(FPGA)/syn/synth.sh table $(FPGA_B)/syn $(FPGA)/README.md

@@ -14,10 +14,8 @@ set -u
 out=$1
 inc=$(dirname "$out")
 mkdir -p "$out"
-RTL="port/fpga/rtl/bloom_top.v port/fpga/rtl/bloom_box.v port/fpga/rtl/bloom_knee.v port/fpga/rtl/bloom_up.v
-     port/fpga/rtl/bloom_out.v port/fpga/rtl/bloom_fifo.v"
-# shellcheck disable=SC2086
-RTL=$(echo $RTL)
+# the RTL's files: FPGA_RTL of port/fpga/fpga.mk, the one list of them
+RTL=${FPGA_RTL:?"run through make (FPGA_RTL lists the RTL)"}
 pass=0
 fail=0
 ok() { pass=$((pass + 1)); echo "ok   $*"; }

@@ -9,10 +9,8 @@ mode=$1
 out=$2
 inc=$(dirname "$out")
 mkdir -p "$out"
-RTL="port/fpga/rtl/bloom_top.v port/fpga/rtl/bloom_box.v port/fpga/rtl/bloom_knee.v port/fpga/rtl/bloom_up.v
-     port/fpga/rtl/bloom_out.v port/fpga/rtl/bloom_fifo.v"
-# shellcheck disable=SC2086
-RTL=$(echo $RTL)
+# the RTL's files: FPGA_RTL of port/fpga/fpga.mk, the one list of them
+RTL=${FPGA_RTL:?"run through make (FPGA_RTL lists the RTL)"}
 # json_num FILE KEY: the first number after "KEY" in a nextpnr report
 json_num() { tr -d '\n ' <"$1" | grep -o "\"$2\":{[^}]*}" | head -1; }
 # stat_count LOG REGEX: the cells whose type matches, in the log's last stat
