@@ -18,8 +18,7 @@ module bloom_fifo #(
     input wire [W-1:0] in_data,
     output wire out_valid,
     input wire out_ready,
-    output wire [W-1:0] out_data,
-    output reg [31:0] level_max    // the most words ever held (for sizing)
+    output wire [W-1:0] out_data
 );
     localparam AW = DEPTH > 1 ? $clog2(DEPTH) : 1;
     reg [W-1:0] mem [0:DEPTH-1];
@@ -68,7 +67,6 @@ module bloom_fifo #(
             cnt <= 0;
             pend <= 1'b0;
             qn <= 0;
-            level_max <= 0;
         end else begin
             if (push) wp <= (wp == DEPTH - 1) ? {AW{1'b0}} : wp + 1'b1;
             if (issue) rp <= (rp == DEPTH - 1) ? {AW{1'b0}} : rp + 1'b1;
@@ -77,9 +75,6 @@ module bloom_fifo #(
             q0 <= nq0;
             q1 <= nq1;
             qn <= nqn;
-`ifndef SYNTHESIS
-            if ({1'b0, cnt} + qn + pend > level_max) level_max <= {1'b0, cnt} + qn + pend;
-`endif
         end
     end
 endmodule

@@ -193,10 +193,9 @@ module bloom_top #(
                     // two rows in a row (even height) or a row and the box's
                     // flush (odd height): a knee taking one every KNEE_II <= 3
                     // clocks needs a queue of one level-1 row to keep up
-                    wire [31:0] unused;
                     bloom_fifo #(.W(3 * SW), .DEPTH((WMAX + 1) / 2 + 16)) kq (
                         .clk(clk), .rst(rst), .in_valid(bx_valid), .in_ready(bx_ready), .in_data(bx_data),
-                        .out_valid(kq_valid), .out_ready(kq_ready), .out_data(kq_data), .level_max(unused));
+                        .out_valid(kq_valid), .out_ready(kq_ready), .out_data(kq_data));
                 end else begin : g_direct
                     assign kq_valid = bx_valid;
                     assign kq_data = bx_data;
@@ -228,10 +227,9 @@ module bloom_top #(
 
                 localparam integer WK = (WMAX + (1 << k) - 1) >> k;
                 localparam integer DEP = ((1 << (LMAX - k + 2)) + MARGIN) * WK;
-                wire [31:0] fmax;
                 bloom_fifo #(.W(3 * SW), .DEPTH(DEP)) fifo (
                     .clk(clk), .rst(rst), .in_valid(f_in_valid[k]), .in_ready(f_in_ready[k]), .in_data(d_data[k]),
-                    .out_valid(f_valid[k]), .out_ready(f_ready[k]), .out_data(f_data[k]), .level_max(fmax));
+                    .out_valid(f_valid[k]), .out_ready(f_ready[k]), .out_data(f_data[k]));
 
                 // U_k = D_k + tent(U_{k+1})
                 bloom_up #(.UW(UW), .SW(SW), .XW(XW), .YW(YW), .WIMAX((WMAX + (1 << (k + 1)) - 1) >> (k + 1)),
