@@ -67,6 +67,16 @@
 #define BLOOM_SMALL 0
 #endif
 
+/* The static schedule: the order in which rows are made is computed once,
+ * at bloom_init, into a table in the workspace (about 5 bytes per frame
+ * row, sim/docs/streaming.md), and every frame walks it. 0 makes each pull
+ * find its rows by walking the graph down from the output instead (less
+ * code and workspace, more instructions per row; the size build's
+ * choice). Same results bit for bit. */
+#ifndef BLOOM_SCHED_TABLE
+#define BLOOM_SCHED_TABLE (!BLOOM_SMALL)
+#endif
+
 /* Pixels per chunk of the fused output kernel: a stack buffer of
  * 3 * 4 * BLOOM_OUT_CHUNK bytes. */
 #ifndef BLOOM_OUT_CHUNK

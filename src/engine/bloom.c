@@ -269,16 +269,23 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
             g->aux_copy = (uint8_t *)take(base, &off, ucap * g->aux_row_bytes);
         if (per_level)
             per_level[0] += (size_t)(off - before);
-    } else {
-        g->src_ptr = (const uint8_t **)take(base, &off, ucap * sizeof(const uint8_t *));
-        if (bg_aux_bpp(g))
-            g->aux_ptr = (const uint8_t **)take(base, &off, ucap * sizeof(const uint8_t *));
     }
-    g->src_tag = (int32_t *)take(base, &off, ucap * sizeof(int32_t));
+    g->src_ptr = (const void **)take(base, &off, 2u * ucap * sizeof(const void *));
+    if (bg_aux_bpp(g))
+        g->aux_ptr = (const void **)take(base, &off, 2u * ucap * sizeof(const void *));
+    for (int s = 0; base && g->src_copy && s < 2 * cap; s++) {
+        g->src_ptr[s] = g->src_copy + (size_t)(s % cap) * g->src_row_bytes;
+        if (bg_aux_bpp(g))
+            g->aux_ptr[s] = g->aux_copy + (size_t)(s % cap) * g->aux_row_bytes;
+    }
+    g->src_tag = (int32_t *)take(base, &off, 2u * ucap * sizeof(int32_t));
     if (bg_tiled(g))
         g->out_row = (uint8_t *)take(base, &off,
                                      (uint64_t)g->node[g->out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
     g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
+#if BLOOM_SCHED_TABLE
+    g->sched = (uint8_t *)take(base, &off, (uint64_t)g->sched_len);
+#endif
     if (base)
         g->src_cap = cap;
     for (int i = 0; i < g->nnodes; i++) {
@@ -289,19 +296,45 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
         const int c = imax(n->need, 1);
         const uint64_t words = (uint64_t)c * (uint64_t)n->w * n->ch;
         n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
-        n->tag = (int32_t *)take(base, &off, (uint64_t)c * sizeof(int32_t));
+        n->rowp = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
+        n->tag = (int32_t *)take(base, &off, 2u * (uint64_t)c * sizeof(int32_t));
         if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
             n->cap = (uint16_t)c;
             if (BLOOM_USE_SKIP)
                 memset(n->buf, 0, (size_t)words * sizeof *n->buf);
+            for (int s = 0; s < 2 * c; s++)
+                n->rowp[s] = n->buf + (size_t)(s % c) * n->w * n->ch;
             /* every tag byte 0x40: the zero bit (bit 30) set in each tag,
              * whatever the byte order; bloom_begin (bloom_init's last
              * step) then makes each "no row", keeping that bit */
-            memset(n->tag, BLOOM_USE_SKIP ? 0x40 : 0, (size_t)c * sizeof *n->tag);
+            memset(n->tag, BLOOM_USE_SKIP ? 0x40 : 0, 2u * (size_t)c * sizeof *n->tag);
         }
         if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
             per_level[n->level] += (size_t)(off - before);
     }
+    /* each input's ring, for the row calls; a tile's inputs read from a
+     * column on: their own view of the slots' pointers, when the slots
+     * stay (node rings, copied source rows) */
+    for (int i = 0; i < g->nnodes; i++)
+        for (int j = 0; j < g->node[i].nin; j++) {
+            bg_input_t *in = &g->node[i].in[j];
+            const bg_node_t *f = in->node >= 0 ? &g->node[in->node] : NULL;
+            const int c = f ? imax(f->need, 1) : cap;
+            const void **view = NULL;
+            if (in->step && (f || g->src_copy))
+                view = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
+            if (!base)
+                continue;
+            in->ring = f ? f->rowp : !BLOOM_USE_GRAPH || in->node == BG_SRC ? g->src_ptr : g->aux_ptr;
+            in->tags = f ? f->tag : g->src_tag;
+            in->cap = c;
+            in->h = f ? f->h : g->h[0];
+            in->add = view ? 0u : in->step;
+            for (int s = 0; view && s < 2 * c; s++)
+                view[s] = (const uint8_t *)in->ring[s] + in->step;
+            if (view)
+                in->ring = view;
+        }
     return off;
 }
 
@@ -376,6 +409,14 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
         return BLOOM_E_WORKSPACE;
     if (bloom_carve(g, (uint8_t *)ws, NULL) != need) /* the carving ends where sizing said */
         return BLOOM_E_INTERNAL;
+#if BLOOM_SCHED_TABLE
+    /* the dry run again, now that the schedule has its place: it writes
+     * the same firings it counted (and finds the same ring sizes) */
+    const int len = g->sched_len;
+    bloom_dry_frame(g);
+    if (g->sched_len != len)
+        return BLOOM_E_INTERNAL;
+#endif
     *out = g;
     return bloom_begin(g);
 }
@@ -385,15 +426,24 @@ bloom_status_t bloom_begin(bloom_t *b)
     if (!b)
         return BLOOM_E_NULL;
     b->src_n = 0;
+    b->src_put = 0;
     b->out_rows = 0;
     b->failed = false;
-    for (int i = 0; i < b->src_cap; i++)
-        b->src_tag[i] = -1;
+    b->sched_at = 0;
+    b->src_free = 0;
+    b->src_seen = 0;
+    /* an empty source slot: a negative row (no row matches it), without
+     * the zero bit (were it read, it would not pass for a dark row) */
+    for (int i = 0; i < 2 * b->src_cap; i++)
+        b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
     /* node slots keep their zero bit: a slot that holds zeros still does */
     for (int i = 0; i < b->nnodes; i++) {
         bg_node_t *n = &b->node[i];
         n->next = 0;
-        for (int s = 0; s < n->cap; s++)
+        n->put = 0;
+        for (int j = 0; j < n->nin; j++)
+            n->in[j].row = n->in[j].slot = 0; /* row 0 is in slot 0 */
+        for (int s = 0; s < 2 * n->cap; s++)
             n->tag[s] = (n->tag[s] & BLOOM_TAG_ZERO) | 0x3FFFFFFF;
     }
     return BLOOM_OK;

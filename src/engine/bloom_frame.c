@@ -72,8 +72,8 @@ static bool ranges_meet(uintptr_t a, size_t an, uintptr_t c, size_t cn)
 /* Whether output row y written at d would overwrite a source row the engine
  * still reads (pointer mode): any held row after y, or row y itself unless
  * d is that row and the formats are the same (in place). Rows before y are
- * never read again once y is out; empty slots (tag -1) are skipped. */
-static bool dst_overlaps(const uint8_t *const *ptr, const int32_t *tag, int cap, size_t src_bytes,
+ * never read again once y is out; empty slots (a negative tag) are skipped. */
+static bool dst_overlaps(const void *const *ptr, const int32_t *tag, int cap, size_t src_bytes,
                          size_t dst_bytes, bool same, int y, const uint8_t *d)
 {
 #if BLOOM_SMALL /* the size build: only d over row y itself in another format */

@@ -1,8 +1,17 @@
-/* The scheduler (bloom_engine.h): rows in and out, the dry run. Pull-driven: an output row asks its inputs for the rows it
+/* The scheduler (bloom_engine.h): rows in and out, and the dry run.
+ *
+ * The order in which node rows are made depends on the frame geometry
+ * alone. The dry run (bloom_plan, at bloom_query and bloom_init) finds it
+ * the pull-driven way: each output row asks its inputs for the rows it
  * reads, each node row asks its inputs, down to the source rows pushed so
- * far; a request that cannot be met yet returns false and is resumed
- * later, so the order of row computations depends on the frame geometry
- * alone, whatever way the caller feeds rows. */
+ * far, one push at a time; a request that cannot be met yet is resumed
+ * after the next push. It sizes every ring by what that order keeps, and
+ * (BLOOM_SCHED_TABLE) writes the order down as the static schedule, one
+ * byte per firing: a frame then walks the table, so a push's BUSY and a
+ * pull's AGAIN are a counter compared with another, and nothing is
+ * searched per row. Without the table (the size build) each pull runs the
+ * same pull-driven walk on the real rows. Either way a row is made from
+ * the same input rows: the same bits. */
 #include "bloom_engine.h"
 
 #include <string.h>
@@ -46,14 +55,6 @@ static int oldest_of(const bloom_graph_t *g, int from)
     return o;
 }
 
-/* The source (or aux) row held in slot `slot` of the source ring. */
-static const void *src_slot(const bloom_graph_t *g, int from, int slot)
-{
-    if (!BLOOM_USE_GRAPH || from == BG_SRC) /* (only presets read an aux plane) */
-        return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
-    return g->aux_copy ? g->aux_copy + (size_t)slot * g->aux_row_bytes : g->aux_ptr[slot];
-}
-
 /* The last row of input i that row r of node n reads. */
 static int input_top(const bloom_graph_t *g, const bg_node_t *n, int i, int r)
 {
@@ -79,52 +80,53 @@ static bool ensure_inputs(bloom_graph_t *g, const bg_node_t *n, int r)
  * the recursion of ensure() keeps small frames (the Cortex-M stack figure). */
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
-static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, void *dst)
+static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN] = {NULL, NULL, NULL};
     int used = 0;
     bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
     for (int i = 0; i < n->nin; i++) {
-        const bg_input_t *ip = &n->in[i];
-        const int from = ip->node, hin = in_height(g, from), b = bg_base(ip->map, r);
-        /* the rows are consecutive (repeated at the edges): one division for
-         * the first slot, then a step with wrap-around */
-        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
-        const int cap = src ? src->cap : g->src_cap;
-        const int32_t *tags = src ? src->tag : g->src_tag;
-        int prev = clampi(b + ip->lo, 0, hin - 1), slot = prev % cap;
+        bg_input_t *ip = &n->in[i];
+        const int hin = ip->h, cap = ip->cap;
+        /* rings keep their slots' row pointers and tags twice over: any
+         * run of consecutive slots is one array, wrap-around included */
+        const int32_t *tags = ip->tags;
+        const void *const *ring = ip->ring;
+        const int b = bg_base(ip->map, r), lo = b + ip->lo, hi = b + ip->hi;
+        /* the first row read moves the slot cursor: readers' rows only go
+         * forward, so no division; the rows are consecutive slots from it */
+        const int first = clampi(lo, 0, hin - 1), last = clampi(hi, 0, hin - 1);
+        int slot = ip->slot + (first - ip->row);
+        while (slot >= cap)
+            slot -= cap;
+        ip->row = (uint16_t)first;
+        ip->slot = (uint16_t)slot;
+        tags += slot;
+        ring += slot;
+#if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
+        if ((tags[0] & ~ZBIT) != first || (tags[last - first] & ~ZBIT) != last)
+            g->failed = true;
+#endif
         uint32_t zm = 0;
-        in[i] = rows + used;
-        for (int j = ip->lo; j <= ip->hi; j++) {
-            const int rr = clampi(b + j, 0, hin - 1);
-            if (rr != prev) {
-                prev = rr;
-                slot = slot + 1 == cap ? 0 : slot + 1;
+        if (lo == first && hi == last && !ip->add) { /* the slots' own pointers: nothing to gather */
+            in[i] = ring;
+            if (BLOOM_USE_SKIP)
+                for (int k = 0; k <= hi - lo; k++)
+                    zm |= ((uint32_t)tags[k] >> 30 & 1u) << k;
+        } else { /* edge rows repeated, or a tile's column offset added */
+            in[i] = rows + used;
+            for (int j = lo; j <= hi; j++) {
+                const int d = clampi(j, 0, hin - 1) - first;
+                if (BLOOM_USE_SKIP)
+                    zm |= ((uint32_t)tags[d] >> 30 & 1u) << (j - lo);
+                rows[used++] = (const uint8_t *)ring[d] + ip->add;
             }
-            const int32_t tag = tags[slot];
-#if BLOOM_CHECK_RINGS
-            if ((tag & ~ZBIT) != rr)
-                g->failed = true;
-#endif
-            if (BLOOM_USE_SKIP && (tag & ZBIT))
-                zm |= 1u << (j - ip->lo);
-            rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
-                               : src_slot(g, from, slot);
         }
-#if !BLOOM_SMALL
-        if (g->tiled) { /* a tile's nodes: the input from the first column n reads on (bg_in_w) */
-            const int off = bg_base(ip->map, n->xa) - (src ? src->xa : 0);
-            const size_t step = (size_t)off * (src ? src->ch * sizeof(uint32_t)
-                                                   : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g)));
-            for (int j = used - (ip->hi - ip->lo + 1); step && j < used; j++)
-                rows[j] = (const uint8_t *)rows[j] + step;
-        }
-#endif
         if (!BLOOM_USE_SKIP)
             continue;
         g->zin[i] = zm;
-        if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
+        if (ip->node != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
     if (all_zero)
@@ -139,31 +141,63 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, const bg_node_t *n, int r, v
  * written). */
 static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
 {
-    const int s = r % n->cap;
+    const int s = n->put;
+    n->put = s + 1 == n->cap ? 0 : s + 1;
     const size_t len = (size_t)n->w * n->ch;
-    uint32_t *dst = n->buf + (size_t)s * len;
+    uint32_t *dst = (uint32_t *)(uintptr_t)n->rowp[s];
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
-    n->tag[s] = r;
+    n->tag[s] = n->tag[s + n->cap] = r;
     const int made = run_row(g, n, r, dst);
     if (!BLOOM_USE_SKIP || made == ROW_MADE)
         return;
     if (made == ROW_SKIPPED && !had_zeros)
         memset(dst, 0, len * sizeof *dst);
-    n->tag[s] = r | ZBIT;
+    n->tag[s] = n->tag[s + n->cap] = r | ZBIT;
 }
 
-/* Node ni's next row, its inputs known to exist: sized (dry run) or made.
- * A row overwritten while still needed is caught where it is read (run_row
- * compares the tags), so the write needs no check. */
+/* One byte of the static schedule: written when the table has its place
+ * (bloom_init's second dry run), counted always (its size). */
+static void emit(bloom_graph_t *g, int byte)
+{
+#if BLOOM_SCHED_TABLE
+    if (g->sched)
+        g->sched[g->sched_len] = (uint8_t)byte;
+    g->sched_len++;
+#else
+    (void)g;
+    (void)byte;
+#endif
+}
+
+/* Dry run: the source rows that no firing to come reads, one BG_S_FREE
+ * byte each (the oldest row still read only moves forward). */
+static void emit_free(bloom_graph_t *g)
+{
+#if BLOOM_SCHED_TABLE
+    const int o = imin(oldest_of(g, BG_SRC), g->h[0]);
+    for (; g->src_free < o; g->src_free++)
+        emit(g, BG_S_FREE);
+#else
+    (void)g;
+#endif
+}
+
+/* Node ni's next row, its inputs known to exist: sized and written down
+ * (dry run) or made. A row overwritten while still needed is caught where
+ * it is read (run_row compares the tags), so the write needs no check. */
 static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
 {
     bg_node_t *n = &g->node[ni];
     const int r = n->next;
-    if (g->dry)
+    if (g->dry) {
         n->need = (uint16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
-    else
+        emit(g, ni);
+    } else {
         make_row(g, n, r);
+    }
     n->next++;
+    if (g->dry)
+        emit_free(g);
 }
 
 /* Rows of node ni up to j (the source: pushed). The recursion runs down the
@@ -187,18 +221,51 @@ static bool ensure(bloom_graph_t *g, int ni, int j)
 
 /* ---- the dry run and the frame ---------------------------------------- */
 
+/* Each input's byte offset to the first column its reader reads (a tile's
+ * window: bg_in_w), once instead of per row. */
+static void lay_out_inputs(bloom_graph_t *g)
+{
+    for (int ni = 0; ni < g->nnodes; ni++) {
+        bg_node_t *n = &g->node[ni];
+        for (int i = 0; i < n->nin; i++) {
+            bg_input_t *ip = &n->in[i];
+            ip->step = 0;
+#if !BLOOM_SMALL
+            if (!g->tiled)
+                continue;
+            const int from = ip->node;
+            const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+            const int off = bg_base(ip->map, n->xa) - (src ? src->xa : 0);
+            const size_t bytes = src ? (size_t)src->ch * sizeof(uint32_t)
+                                     : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g));
+            ip->step = (uint32_t)((size_t)off * bytes);
+#endif
+        }
+    }
+}
+
 void bloom_dry_frame(bloom_graph_t *g)
 {
     bg_node_t *o = &g->node[g->out_node];
+    for (int i = 0; i < g->nnodes; i++)
+        g->node[i].next = 0;
+    lay_out_inputs(g);
     g->dry = true;
+    g->src_n = 0;
+    g->src_free = 0;
+    g->sched_len = 0;
+    emit_free(g);
     for (int y = 0; y < g->h[0]; y++) {
         g->need_src = imax(g->need_src, y - imin(oldest_of(g, BG_SRC), y) + 1);
+        emit(g, BG_S_PUSH);
         g->src_n = y + 1;
         while (o->next < g->h[0]) {
             if (!ensure_inputs(g, o, o->next))
                 break;
             g->latency = imax(g->latency, y - o->next);
+            emit(g, g->out_node);
             o->next++;
+            emit_free(g);
         }
     }
     g->dry = false;
@@ -216,36 +283,83 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
         g->src_n++; /* the tile is out: the rest of the window's rows are not needed */
         return BLOOM_OK;
     }
-    const int r = g->src_n, slot = r % g->src_cap;
+    const int r = g->src_n, slot = g->src_put;
+#if BLOOM_SCHED_TABLE
+    if (r - g->src_cap >= g->src_free)
+#else
     if (r - g->src_cap >= oldest_of(g, BG_SRC))
+#endif
         return BLOOM_E_BUSY;
     /* the window's columns of the frame row (win_x is 0 without a tile) */
     src_row = (const uint8_t *)src_row + (size_t)bg_win_x(g) * (size_t)g->src_bpp;
     if (bg_aux_bpp(g))
         aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(g) * (size_t)bg_aux_bpp(g);
-    if (g->src_copy) {
+    const int cap = g->src_cap;
+    if (g->src_copy) { /* (the slots' pointers are the copies', set once) */
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
         if (bg_aux_bpp(g))
             memcpy(g->aux_copy + (size_t)slot * g->aux_row_bytes, aux_row, g->aux_row_bytes);
     } else {
-        g->src_ptr[slot] = (const uint8_t *)src_row;
+        g->src_ptr[slot] = g->src_ptr[slot + cap] = src_row;
         if (bg_aux_bpp(g))
-            g->aux_ptr[slot] = (const uint8_t *)aux_row;
+            g->aux_ptr[slot] = g->aux_ptr[slot + cap] = aux_row;
     }
 #if BLOOM_USE_SKIP
     const bool dark =
         g->dark_src && BLOOM_KERN_DARK(&g->kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
-    g->src_tag[slot] = r | (dark ? ZBIT : 0);
+    g->src_tag[slot] = g->src_tag[slot + cap] = r | (dark ? ZBIT : 0);
 #else
-    g->src_tag[slot] = r;
+    g->src_tag[slot] = g->src_tag[slot + cap] = r;
 #endif
+    g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
     g->src_n++;
     return BLOOM_OK;
 }
 
+#if BLOOM_SCHED_TABLE
+/* Walk the schedule up to the output's next row: true when it is due (its
+ * inputs made), false when the walk waits for a push. The tile's halo rows
+ * above it are passed (their inputs are made, they are not). */
+static bool walk_to_output(bloom_graph_t *g)
+{
+    const bg_node_t *o = &g->node[g->out_node];
+    const uint8_t *t = g->sched;
+    int at = g->sched_at;
+    for (; at < g->sched_len; at++) {
+        const int e = t[at];
+        if (e == BG_S_FREE) {
+            g->src_free++;
+        } else if (e == BG_S_PUSH) {
+            if (g->src_seen == g->src_n)
+                break;
+            g->src_seen++;
+        } else if (e != g->out_node) {
+            bg_node_t *n = &g->node[e];
+            make_row(g, n, n->next);
+            n->next++;
+        } else if (!bg_tiled(g) || o->next >= g->tile_y0) {
+            g->sched_at = at;
+            return true;
+        } else {
+            g->node[g->out_node].next++;
+        }
+    }
+    g->sched_at = at;
+    return false;
+}
+#endif
+
 bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
 {
     bg_node_t *o = &g->node[g->out_node];
+#if BLOOM_SCHED_TABLE
+    if (o->next >= g->h[0] || (bg_tiled(g) && o->next >= g->tile_y1))
+        return BLOOM_DONE;
+    if (!walk_to_output(g) || g->failed)
+        return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
+    g->sched_at++; /* (the output row's byte) */
+    const int y = o->next;
+#else
 #if !BLOOM_SMALL
     if (g->tiled) /* halo rows above the tile: their inputs are made, they are not */
         while (o->next < g->tile_y0 && o->next < g->src_n && ensure_inputs(g, o, o->next))
@@ -256,6 +370,7 @@ bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
         return BLOOM_DONE;
     if (y >= g->src_n || !ensure_inputs(g, o, y))
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
+#endif
     if (!bg_tiled(g)) {
         run_row(g, o, y, dst_row);
     } else { /* the tile's columns of the window's row */

@@ -57,7 +57,7 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
         return;
     }
 #endif
-    nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi};
+    nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi, 0, 0, 0, NULL, NULL, 0, 0, 0};
 }
 
 /* ---- helpers for row functions ---------------------------------------- */

@@ -73,6 +73,21 @@ typedef struct {
     int8_t node; /* node index, BG_SRC or BG_AUX */
     uint8_t map; /* bg_map_t */
     int8_t lo, hi;
+    /* Laid out by the engine (bloom_dry_frame, bloom_begin), not the build
+     * hook: the input's first row read by the last row made and its ring
+     * slot (a cursor: rows only move forward, so no division per row), and
+     * the byte offset of the first column the reader reads in the input's
+     * rows (a tile's window: bg_in_w; 0 otherwise). */
+    uint16_t row, slot;
+    uint32_t step;
+    /* the ring read (bloom_carve): its slots' row pointers (with step
+     * added, when the slots do not move: a view of the ring's own), tags,
+     * slots and the input's height; add: the bytes still to add per row
+     * (step, for the caller's source rows) */
+    const void *const *ring;
+    const int32_t *tags;
+    int cap, h;
+    uint32_t add;
 } bg_input_t;
 
 struct bg_node {
@@ -84,14 +99,18 @@ struct bg_node {
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
     uint32_t k[4]; /* the row function's constants */
-    /* ring (not for the output node) */
+    /* ring (not for the output node): cap rows at buf; each slot's row
+     * pointer and tag (the row it holds) are kept twice over, at s and
+     * s + cap, so that any run of consecutive slots is one array */
     uint32_t *buf;
+    const void **rowp;
     int32_t *tag;
     uint16_t cap;  /* ring rows (at most the node's height, <= BLOOM_MAX_DIM = 2^14) */
     uint16_t need; /* dry run: largest occupancy (the same bound); both 16 bits so
                       that xa below costs no workspace, on 32-bit targets either
                       (unsigned: Thumb-2 loads them in 16-bit instructions) */
     int next;      /* next row to compute */
+    int put;       /* its ring slot (next % cap, kept as a cursor) */
     /* Columns xa .. xa + w - 1 of the level (at the node's resolution) are
      * made: all of them (xa = 0) but in a tile's window, where a node makes
      * only what its readers use (bloom_plan; g->views); its row function
@@ -129,8 +148,10 @@ struct bloom {
     uint32_t *scratch;
     size_t scratch_len;
     int scratch_rows; /* rows the preset's row functions use (0 .. BG_SCRATCH) */
-    /* source and aux rings: one slot per pushed row, the same for both */
-    const uint8_t **src_ptr, **aux_ptr;
+    /* source and aux rings: one slot per pushed row, the same for both;
+     * pointers and tags twice over as a node's (rowp, tag), the pointers
+     * the caller's rows or the copies' (BLOOM_FLAG_COPY_SOURCE) */
+    const void **src_ptr, **aux_ptr;
     uint8_t *src_copy, *aux_copy;
     int32_t *src_tag;
     int src_cap;
@@ -145,13 +166,26 @@ struct bloom {
     int nsrc_readers;
     /* progress */
     int src_n;
+    int src_put; /* the source ring's slot for row src_n (src_n % src_cap) */
     bool failed, dry;
     int need_src, latency;
+    /* The static schedule (BLOOM_SCHED_TABLE; engine/bloom_sched.c): the
+     * dry run's firings in order, one byte each: a node index (make its
+     * next row; the output node: the next output row is due), BG_S_PUSH
+     * (the next source row must have been pushed) or BG_S_FREE (one more
+     * source row is read by no firing to come). sched_len bytes at sched
+     * (in the workspace; NULL while the dry run only counts them). */
+    uint8_t *sched;
+    int sched_len, sched_at;
+    int src_free; /* source rows no firing to come reads: push r needs r - src_cap < src_free */
+    int src_seen; /* BG_S_PUSH bytes the walk has passed */
     /* the nodes: in the workspace right after this struct (bloom_init), or
      * on the stack (bloom_query); node_cap of them fit (above) */
     bg_node_t *node;
 };
 #define BG_SCRATCH 4
+#define BG_S_FREE 0xFE
+#define BG_S_PUSH 0xFF
 
 /* ---- graph construction (for build hooks) ---------------------------- */
 
