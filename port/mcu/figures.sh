@@ -180,11 +180,14 @@ cat <<EOF
 
 Measured by painting: the firmware fills the free stack below its own frame
 with a pattern, makes the call, and finds the lowest word overwritten. The
-scheduler recurses up the levels (\`ensure_up\` → \`ensure_U\` one level
-down, depth L − 1; the down chain \`ensure_D\` is a loop), so a static call
-graph cannot bound it alone; the measured depth at 5 levels and at 7 (the
-deepest pyramid 320×240 allows) is the figure. \`bloom_init\` runs the sizing dry run
-with an engine struct on the stack; it is not part of the frame call.
+minimal build's scheduler is the pull-driven walk (\`BLOOM_SCHED_TABLE\` is 0
+with \`BLOOM_SMALL\`): \`ensure\` in \`src/engine/bloom_sched.c\` recurses down the
+chain of nodes from the output, one frame per node (two nodes a level), so
+a static call graph cannot bound it alone; the measured depth at 5 levels
+and at 7 (the deepest pyramid 320×240 allows) is the figure. The other
+builds walk the static schedule in the frame call (no recursion there);
+\`bloom_init\` runs the same recursion in its dry run, which is part of its
+figure, with the engine planned in the workspace.
 
 | build | CPU | levels | \`bloom_process\` | \`bloom_init\` | whole program |
 |---|---|---|---|---|---|
@@ -202,8 +205,7 @@ cat <<EOF
 
 The frame call grows by $inc bytes per pyramid level (minimal build,
 Cortex-M4: ($s7 − $s5) / 2), about $((s5 - 5 * inc)) + $inc·L bytes at L levels;
-by \`-fstack-usage\` one level is a frame of \`ensure_up\` ($(su ensure_up) bytes), into
-which \`ensure_U\` is inlined.
+by \`-fstack-usage\` a node is a frame of \`ensure\` ($(su ensure) bytes), two a level.
 EOF
 cat <<EOF
 
@@ -271,7 +273,7 @@ done
 cat <<EOF
 
 Why $tlevels levels: a strip engine's workspace follows its source
-rectangle, the strip and its halo (\`halo_of\`, sim/docs/tiles.md), but
+rectangle, the strip and its halo (\`tile_halo\`, sim/docs/tiles.md), but
 each of its nodes makes only the columns its readers use (the output the
 strip, the down chain the halo's reach), so at the default 5 levels strips
 of 64 columns fit 32 KB. Largest strip workspace on the Cortex-M4, bytes:

@@ -1,5 +1,5 @@
-/* The engine's set-up: planning a configuration (the preset's graph and the
- * dry run, bloom_graph.c), sizing and carving the caller's workspace, and
+/* The engine's set-up: planning a configuration (the preset's graph, built
+ * with graph/bloom_graph.c, and the dry run, bloom_sched.c), sizing and carving the caller's workspace, and
  * the start of a frame. The row, band and frame calls are bloom_frame.c.
  *
  * Every preset, the default included, is a graph of row stages built by its
@@ -92,7 +92,8 @@ static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, b
         return BLOOM_E_WORKSPACE; /* bloom_init's buffer: too small for the nodes */
     if (g->failed)
         return BLOOM_E_INTERNAL;
-#if !BLOOM_SMALL /* a build hook's mistakes (the default's graph is checked by every other build) */
+#if !BLOOM_SMALL || BLOOM_USE_GRAPH /* a build hook's mistakes (the default's graph alone is
+                                        checked by every other build) */
     if (g->out_node < 0 || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0] ||
         g->scratch_rows < 0 || g->scratch_rows > BG_SCRATCH)
         return BLOOM_E_INTERNAL;
@@ -125,19 +126,33 @@ static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, b
  * maps, not the nodes' memory levels. A kernel reaches as far across as its
  * rows reach down (box, tents, Gaussian, Kawase, 13-tap: square
  * footprints); the halo is the larger side, for both axes, so a kernel whose
- * columns mirror its rows is covered too. (Default 5 levels: 124.) */
-static int halo_of(const bloom_graph_t *g)
+ * columns mirror its rows is covered too. (Default 5 levels: 124.)
+ *
+ * Worked example, the default at 2 levels (before, after):
+ *   D1 reads the source (e 0) DOWN at -1 .. 2:          1, 1
+ *   D2 reads D1 (e 1) DOWN at -1 .. 2: 2, 2 + D1's 1, 1 = 3, 3
+ *   U1 reads D2 (e 2) UP at -1 .. 1: 2 + 4, 3 * 2 + D2's = 9, 9
+ *      (and D1's copy SAME at 0 .. 0: 1, 1; the larger is kept)
+ *   out reads U1 (e 1) UP at -1 .. 1: 1 + 2, 3 * 1 + 9 = 12, 12
+ * so the halo is 12: a strip of columns 0 .. 63 reads source columns
+ * 0 .. 75 (76 is a multiple of 2^L). */
+static int tile_halo(const bloom_graph_t *g)
 {
-    int lo_r[BG_MAX_NODES], hi_r[BG_MAX_NODES], res[BG_MAX_NODES];
+    /* per node: how far its pixels reach into the source before and after
+     * their own span (frame pixels), and log2 of its pixel's size in frame
+     * pixels */
+    int reach_lo[BG_MAX_NODES], reach_hi[BG_MAX_NODES], px_log2[BG_MAX_NODES];
     for (int i = 0; i < g->nnodes; i++) {
         const bg_node_t *n = &g->node[i];
-        lo_r[i] = hi_r[i] = 0;
-        res[i] = 0;
+        reach_lo[i] = reach_hi[i] = 0;
+        px_log2[i] = 0;
         for (int j = 0; j < n->nin; j++) {
             const bg_input_t *in = &n->in[j];
-            const int from = in->node, e = from < 0 ? 0 : res[from];
-            const int s = 1 << e, lo = in->lo, hi = in->hi;
-            const int flo = from < 0 ? 0 : lo_r[from], fhi = from < 0 ? 0 : hi_r[from];
+            const int from = in->node, e = from < 0 ? 0 : px_log2[from];
+            /* a pixel finer than the frame's (e < 0: no preset builds one)
+             * counts as a frame pixel: a reach above the true one, never below */
+            const int s = 1 << imax(e, in->map == BG_UP ? 1 : 0), lo = in->lo, hi = in->hi;
+            const int flo = from < 0 ? 0 : reach_lo[from], fhi = from < 0 ? 0 : reach_hi[from];
             int l, h;
             if (in->map == BG_DOWN) {
                 l = -lo * s, h = (hi - 1) * s;
@@ -146,13 +161,13 @@ static int halo_of(const bloom_graph_t *g)
             } else { /* BG_UP: the input has twice the pixel size (e >= 1) */
                 l = s / 2 - lo * s, h = (2 * hi + 1) * (s / 2);
             }
-            lo_r[i] = imax(lo_r[i], l + flo);
-            hi_r[i] = imax(hi_r[i], h + fhi);
+            reach_lo[i] = imax(reach_lo[i], l + flo);
+            reach_hi[i] = imax(reach_hi[i], h + fhi);
             if (j == 0)
-                res[i] = e + (in->map == BG_DOWN ? 1 : in->map == BG_UP ? -1 : 0);
+                px_log2[i] = e + (in->map == BG_DOWN ? 1 : in->map == BG_UP ? -1 : 0);
         }
     }
-    return imax(0, imax(lo_r[g->out_node], hi_r[g->out_node]));
+    return imax(0, imax(reach_lo[g->out_node], reach_hi[g->out_node]));
 }
 
 /* [a, b) of a frame side n around [t, t + tn): the margin m either side,
@@ -180,26 +195,27 @@ static void window_side(int t, int tn, int n, int m, int align, int *a, int *b)
  * own width) is the edge rule again. Without g->views only the
  * output node is narrowed (every preset's output row function reads its
  * widths by bg_in_w); the others make every column. */
-static void narrow_nodes(bloom_graph_t *g)
+static void cut_node_columns(bloom_graph_t *g)
 {
-    int na[BG_MAX_NODES], nb[BG_MAX_NODES];
+    /* per node: the first column its readers read, and one past the last */
+    int first_read[BG_MAX_NODES], end_read[BG_MAX_NODES];
     for (int i = 0; i < g->nnodes; i++)
-        na[i] = INT_MAX, nb[i] = INT_MIN;
-    na[g->out_node] = g->tile_x0;
-    nb[g->out_node] = g->tile_x1;
+        first_read[i] = INT_MAX, end_read[i] = INT_MIN;
+    first_read[g->out_node] = g->tile_x0;
+    end_read[g->out_node] = g->tile_x1;
     for (int i = g->out_node; i >= 0; i--) { /* readers come after their inputs */
         bg_node_t *n = &g->node[i];
         int a = 0, b = n->w, spoil = 0, spoil_r = 0, up = 0;
-        if ((g->views || i == g->out_node) && na[i] < nb[i]) {
+        if ((g->views || i == g->out_node) && first_read[i] < end_read[i]) {
             for (int j = 0; j < n->nin; j++) {
                 const int lo = n->in[j].lo, map = n->in[j].map;
                 spoil = imax(spoil, map == BG_UP ? -2 * lo : map == BG_DOWN ? (1 - lo) / 2 : -lo);
                 spoil_r = imax(spoil_r, map == BG_SAME ? n->in[j].hi : 0);
                 up |= map == BG_UP;
             }
-            a = imax(0, na[i] - spoil);
+            a = imax(0, first_read[i] - spoil);
             a = up ? a & ~1 : a;
-            b = imin(n->w, nb[i] + spoil_r);
+            b = imin(n->w, end_read[i] + spoil_r);
         }
         n->xa = a;
         n->w = b - a;
@@ -209,8 +225,8 @@ static void narrow_nodes(bloom_graph_t *g)
                 continue;
             const int m = in->map, f = in->node, wf = g->node[f].w;
             const int first = bg_base(m, a), last = bg_base(m, b - 1) + in->hi;
-            na[f] = imin(na[f], first);
-            nb[f] = imax(nb[f], imin(last + 1, wf));
+            first_read[f] = imin(first_read[f], first);
+            end_read[f] = imax(end_read[f], imin(last + 1, wf));
         }
     }
 }
@@ -225,7 +241,7 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
          * window is the tile with that halo, out to multiples of the
          * deepest level's pixel so its levels halve as the frame's, and
          * the graph is built again over it */
-        const int align = 1 << g->L, m = halo_of(g);
+        const int align = 1 << g->L, m = tile_halo(g);
         int x0, x1, y0, y1;
         window_side(cfg->tile_x, cfg->tile_w, cfg->width, m, align, &x0, &x1);
         window_side(cfg->tile_y, cfg->tile_h, cfg->height, m, align, &y0, &y1);
@@ -236,7 +252,7 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
         g->tile_y0 = cfg->tile_y - y0;
         g->tile_y1 = g->tile_y0 + cfg->tile_h;
         if (st == BLOOM_OK)
-            narrow_nodes(g);
+            cut_node_columns(g);
     }
 #endif
     if (st == BLOOM_OK)
@@ -244,9 +260,6 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
     return st;
 }
 
-/* Lay the rings out after the engine struct; with base NULL only count.
- * Counted in 64 bits: on a 32-bit target a huge configuration must be
- * refused (BLOOM_E_TOO_BIG), not wrap around. */
 /* `bytes` at offset *off of base (NULL: only counted), *off moved on,
  * 8-byte aligned (BLOOM_TAKE as a function: one copy of the 64-bit sums). */
 static void *take(uint8_t *base, uint64_t *off, uint64_t bytes)
@@ -256,6 +269,29 @@ static void *take(uint8_t *base, uint64_t *off, uint64_t bytes)
     return p;
 }
 
+/* The byte offset, in the rows of input i of node n, of the first column n
+ * reads (a tile's window: bg_in_w; 0 without a tile). */
+static uint32_t input_step(const bloom_graph_t *g, const bg_node_t *n, int i)
+{
+#if !BLOOM_SMALL
+    if (g->tiled) {
+        const int from = n->in[i].node;
+        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+        const int off = bg_base(n->in[i].map, n->xa) - (src ? src->xa : 0);
+        const size_t bytes =
+            src ? (size_t)src->ch * sizeof(uint32_t) : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g));
+        return (uint32_t)((size_t)off * bytes);
+    }
+#endif
+    (void)g;
+    (void)n;
+    (void)i;
+    return 0;
+}
+
+/* Lay the rings out after the engine struct; with base NULL only count.
+ * Counted in 64 bits: on a 32-bit target a huge configuration must be
+ * refused (BLOOM_E_TOO_BIG), not wrap around. */
 uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
 {
     uint64_t off =
@@ -312,29 +348,40 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
         if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
             per_level[n->level] += (size_t)(off - before);
     }
-    /* each input's ring, for the row calls; a tile's inputs read from a
+    /* each input's gather, for the row calls; a tile's inputs read from a
      * column on: their own view of the slots' pointers, when the slots
      * stay (node rings, copied source rows) */
+    int nin = 0;
     for (int i = 0; i < g->nnodes; i++)
-        for (int j = 0; j < g->node[i].nin; j++) {
-            bg_input_t *in = &g->node[i].in[j];
+        nin += g->node[i].nin;
+    bg_gather_t *gat = (bg_gather_t *)take(base, &off, (uint64_t)nin * sizeof(bg_gather_t));
+    for (int i = 0; i < g->nnodes; i++) {
+        bg_node_t *n = &g->node[i];
+        if (base)
+            n->gat = gat;
+        for (int j = 0; j < n->nin; j++) {
+            const bg_input_t *in = &n->in[j];
             const bg_node_t *f = in->node >= 0 ? &g->node[in->node] : NULL;
             const int c = f ? imax(f->need, 1) : cap;
+            const uint32_t step = input_step(g, n, j);
             const void **view = NULL;
-            if (in->step && (f || g->src_copy))
+            if (step && (f || g->src_copy))
                 view = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
             if (!base)
                 continue;
-            in->ring = f ? f->rowp : !BLOOM_USE_GRAPH || in->node == BG_SRC ? g->src_ptr : g->aux_ptr;
-            in->tags = f ? f->tag : g->src_tag;
-            in->cap = c;
-            in->h = f ? f->h : g->h[0];
-            in->add = view ? 0u : in->step;
+            bg_gather_t *ga = gat++;
+            ga->ring = f ? f->rowp : !BLOOM_USE_GRAPH || in->node == BG_SRC ? g->src_ptr : g->aux_ptr;
+            ga->tags = f ? f->tag : g->src_tag;
+            ga->cap = (uint16_t)c;
+            ga->h = (uint16_t)(f ? f->h : g->h[0]);
+            ga->add = view ? 0u : step;
+            ga->row = ga->slot = 0;
             for (int s = 0; view && s < 2 * c; s++)
-                view[s] = (const uint8_t *)in->ring[s] + in->step;
+                view[s] = (const uint8_t *)ga->ring[s] + step;
             if (view)
-                in->ring = view;
+                ga->ring = view;
         }
+    }
     return off;
 }
 
@@ -442,7 +489,7 @@ bloom_status_t bloom_begin(bloom_t *b)
         n->next = 0;
         n->put = 0;
         for (int j = 0; j < n->nin; j++)
-            n->in[j].row = n->in[j].slot = 0; /* row 0 is in slot 0 */
+            n->gat[j].row = n->gat[j].slot = 0; /* row 0 is in slot 0 */
         for (int s = 0; s < 2 * n->cap; s++)
             n->tag[s] = (n->tag[s] & BLOOM_TAG_ZERO) | 0x3FFFFFFF;
     }

@@ -1,7 +1,7 @@
 /* The row, band and frame calls of the API: argument checks, the aliasing
  * rules (a destination may overlap its source only in place), and the band
  * and frame calls as loops over the row calls of the scheduler
- * (bloom_graph.c). */
+ * (bloom_sched.c). */
 #include <string.h>
 
 #include "bloom_engine.h"
@@ -160,9 +160,9 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         return BLOOM_E_NULL;
     const uint8_t *s = (const uint8_t *)src;
     uint8_t *d = (uint8_t *)dst;
-    const int end = bloom_rows_in(b) + nrows;
-    if (nrows < 0 || end > rows_total(b))
+    if (nrows < 0 || nrows > rows_total(b) - bloom_rows_in(b)) /* (no sum that could overflow) */
         return BLOOM_E_STATE;
+    const int end = bloom_rows_in(b) + nrows;
     if (frames_overlap(b, s, src_stride, d, dst_stride, bloom_rows_in(b), end))
         return BLOOM_E_ALIAS;
     const uint8_t *aux = NULL;

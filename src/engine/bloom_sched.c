@@ -87,21 +87,22 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
     int used = 0;
     bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
     for (int i = 0; i < n->nin; i++) {
-        bg_input_t *ip = &n->in[i];
-        const int hin = ip->h, cap = ip->cap;
+        const bg_input_t *ip = &n->in[i];
+        bg_gather_t *ga = &n->gat[i];
+        const int hin = ga->h, cap = ga->cap;
         /* rings keep their slots' row pointers and tags twice over: any
          * run of consecutive slots is one array, wrap-around included */
-        const int32_t *tags = ip->tags;
-        const void *const *ring = ip->ring;
+        const int32_t *tags = ga->tags;
+        const void *const *ring = ga->ring;
         const int b = bg_base(ip->map, r), lo = b + ip->lo, hi = b + ip->hi;
         /* the first row read moves the slot cursor: readers' rows only go
          * forward, so no division; the rows are consecutive slots from it */
         const int first = clampi(lo, 0, hin - 1), last = clampi(hi, 0, hin - 1);
-        int slot = ip->slot + (first - ip->row);
+        int slot = ga->slot + (first - ga->row);
         while (slot >= cap)
             slot -= cap;
-        ip->row = (uint16_t)first;
-        ip->slot = (uint16_t)slot;
+        ga->row = (uint16_t)first;
+        ga->slot = (uint16_t)slot;
         tags += slot;
         ring += slot;
 #if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
@@ -109,7 +110,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
             g->failed = true;
 #endif
         uint32_t zm = 0;
-        if (lo == first && hi == last && !ip->add) { /* the slots' own pointers: nothing to gather */
+        if (lo == first && hi == last && !ga->add) { /* the slots' own pointers: nothing to gather */
             in[i] = ring;
             if (BLOOM_USE_SKIP)
                 for (int k = 0; k <= hi - lo; k++)
@@ -120,7 +121,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
                 const int d = clampi(j, 0, hin - 1) - first;
                 if (BLOOM_USE_SKIP)
                     zm |= ((uint32_t)tags[d] >> 30 & 1u) << (j - lo);
-                rows[used++] = (const uint8_t *)ring[d] + ip->add;
+                rows[used++] = (const uint8_t *)ring[d] + ga->add;
             }
         }
         if (!BLOOM_USE_SKIP)
@@ -221,35 +222,11 @@ static bool ensure(bloom_graph_t *g, int ni, int j)
 
 /* ---- the dry run and the frame ---------------------------------------- */
 
-/* Each input's byte offset to the first column its reader reads (a tile's
- * window: bg_in_w), once instead of per row. */
-static void lay_out_inputs(bloom_graph_t *g)
-{
-    for (int ni = 0; ni < g->nnodes; ni++) {
-        bg_node_t *n = &g->node[ni];
-        for (int i = 0; i < n->nin; i++) {
-            bg_input_t *ip = &n->in[i];
-            ip->step = 0;
-#if !BLOOM_SMALL
-            if (!g->tiled)
-                continue;
-            const int from = ip->node;
-            const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
-            const int off = bg_base(ip->map, n->xa) - (src ? src->xa : 0);
-            const size_t bytes = src ? (size_t)src->ch * sizeof(uint32_t)
-                                     : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g));
-            ip->step = (uint32_t)((size_t)off * bytes);
-#endif
-        }
-    }
-}
-
 void bloom_dry_frame(bloom_graph_t *g)
 {
     bg_node_t *o = &g->node[g->out_node];
     for (int i = 0; i < g->nnodes; i++)
         g->node[i].next = 0;
-    lay_out_inputs(g);
     g->dry = true;
     g->src_n = 0;
     g->src_free = 0;

@@ -44,9 +44,10 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
         return;
     }
     bg_node_t *nd = &g->node[n];
-#if !BLOOM_SMALL
-    /* A build hook's mistakes (BLOOM_SMALL leaves these checks out: its only
-     * graph is the default's, which every other build checks the same way):
+#if !BLOOM_SMALL || BLOOM_USE_GRAPH
+    /* A build hook's mistakes (a size build of the default alone leaves these
+     * checks out: its only graph is the default's, which every other build
+     * checks the same way; with presets in it, it keeps them):
      * inputs built before their readers, a bit of zin per row, at most
      * BG_MAX_ROWS rows gathered for one node row. */
     int rows = hi - lo + 1;
@@ -57,7 +58,7 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
         return;
     }
 #endif
-    nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi, 0, 0, 0, NULL, NULL, 0, 0, 0};
+    nd->in[nd->nin++] = (bg_input_t){(int8_t)from, (uint8_t)map, (int8_t)lo, (int8_t)hi};
 }
 
 /* ---- helpers for row functions ---------------------------------------- */

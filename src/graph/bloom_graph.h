@@ -33,8 +33,8 @@
 #include "bloom_internal.h"
 #include "bloom_kernels.h"
 
-/* Nodes of the largest graph built in: the default's 2L + 3 at L = 16, or a
- * preset's (cod: about 3L + 3). */
+/* Nodes of the largest graph built in: the default's 2L + 2 at L = 16 (room
+ * for 2L + 4), or a preset's (cod: about 3L + 3). */
 #if BLOOM_USE_GRAPH
 #define BG_MAX_NODES 52
 #else
@@ -73,22 +73,23 @@ typedef struct {
     int8_t node; /* node index, BG_SRC or BG_AUX */
     uint8_t map; /* bg_map_t */
     int8_t lo, hi;
-    /* Laid out by the engine (bloom_dry_frame, bloom_begin), not the build
-     * hook: the input's first row read by the last row made and its ring
-     * slot (a cursor: rows only move forward, so no division per row), and
-     * the byte offset of the first column the reader reads in the input's
-     * rows (a tile's window: bg_in_w; 0 otherwise). */
-    uint16_t row, slot;
-    uint32_t step;
-    /* the ring read (bloom_carve): its slots' row pointers (with step
-     * added, when the slots do not move: a view of the ring's own), tags,
-     * slots and the input's height; add: the bytes still to add per row
-     * (step, for the caller's source rows) */
+} bg_input_t;
+
+/* How the scheduler gathers one input's rows (engine/; bloom_carve lays it
+ * out, one per input of every node, in the workspace): the ring read, its
+ * slots' row pointers and tags (twice over: see bg_node_t; a tile's input
+ * read from a column on gets its own view of the pointers, offset, when
+ * the slots stay), its slots and height; `add`, bytes still to add per row
+ * (that offset, for the caller's own source rows); and a cursor: the first
+ * row read by the last row made and its slot (rows only move forward, so
+ * no division per row). */
+typedef struct {
     const void *const *ring;
     const int32_t *tags;
-    int cap, h;
+    uint16_t cap, h;
+    uint16_t row, slot;
     uint32_t add;
-} bg_input_t;
+} bg_gather_t;
 
 struct bg_node {
     bg_row_fn fn;
@@ -98,6 +99,7 @@ struct bg_node {
     uint8_t nin;  /* inputs */
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
+    bg_gather_t *gat; /* nin of them: the scheduler's (bloom_carve) */
     uint32_t k[4]; /* the row function's constants */
     /* ring (not for the output node): cap rows at buf; each slot's row
      * pointer and tag (the row it holds) are kept twice over, at s and

@@ -13,9 +13,13 @@
 #if !BLOOM_SMALL
 /* Level-1 columns per chunk of the fast output path (stack: 3 x 32 words). */
 #define OUT_FAST_CH 32
+/* The largest I_q (Q16.16) whose products stay below 2^32 there: 223.8,
+ * srgb_to_linear(10.0), the largest intensity bloom_query takes. */
+#define OUT_FAST_MAX_I 14668679u
 
-/* The fast output path of bloom_row_out_k (see bloom_internal.h for the
- * bound it relies on). Per chunk of level-1 columns m0 .. m0+n-1: the
+/* The fast output path of bloom_row_out_k, taken only within the bounds
+ * it relies on (checked there: I_q at most OUT_FAST_MAX_I; U <= 16 * 2^F
+ * holds for every level sum, sim/docs/fixed-point.md). Per chunk of level-1 columns m0 .. m0+n-1: the
  * vertical tent V of columns m0-1 .. m0+n (edges replicated) in one flat
  * pass, the horizontal tent into the even (e) and odd (od) output columns,
  * the intensity, then the composite and encode per output pixel. Same bits
@@ -105,7 +109,8 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
                      uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
 #if !BLOOM_SMALL
-    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
+        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
         out_fast(k, u, odd, src, dst, w, sw, o);
         return;
     }
