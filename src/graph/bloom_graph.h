@@ -100,7 +100,7 @@ struct bg_node {
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
     bg_gather_t *gat; /* nin of them: the scheduler's (bloom_carve) */
-    uint32_t k[4]; /* the row function's constants */
+    uint32_t k[4];    /* the row function's constants */
     /* ring (not for the output node): cap rows at buf; each slot's row
      * pointer and tag (the row it holds) are kept twice over, at s and
      * s + cap, so that any run of consecutive slots is one array */
