@@ -26,3 +26,31 @@ static inline __m256i bloom_box_rnd8(__m256i s)
     const __m256i odd = _mm256_and_si256(_mm256_srli_epi32(s, 4), _mm256_set1_epi32(1));
     return _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(s, _mm256_set1_epi32(7)), odd), 4);
 }
+
+/* The OR of the 8 lanes. */
+static inline uint32_t or_lanes8(__m256i v)
+{
+    __m128i x = _mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    x = _mm_or_si128(x, _mm_srli_si128(x, 8));
+    x = _mm_or_si128(x, _mm_srli_si128(x, 4));
+    return (uint32_t)_mm_cvtsi128_si32(x);
+}
+
+/* The 24 samples of 8 pixels (4 even/odd pairs, R G B each) in pixel
+ * order, from the even columns' e[0..11] and the odd columns' o[0..11]. */
+static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
+{
+    const __m256i e0 = LD8(e), e4 = LD8(e + 4), o0 = LD8(o), o4 = LD8(o + 4);
+    v[0] = _mm256_blend_epi32(PERM(e0, 0, 1, 2, 0, 0, 0, 3, 4), PERM(o0, 0, 0, 0, 0, 1, 2, 0, 0), 0x38);
+    v[1] = _mm256_blend_epi32(PERM(e4, 1, 0, 0, 0, 2, 3, 4, 0), PERM(o0, 0, 3, 4, 5, 0, 0, 0, 6), 0x8E);
+    v[2] = _mm256_blend_epi32(PERM(e4, 0, 0, 5, 6, 7, 0, 0, 0), PERM(o4, 3, 4, 0, 0, 0, 5, 6, 7), 0xE3);
+}
+
+#if BLOOM_USE_RGB888
+/* 8 sRGB 8-bit codes at p decoded to Q12.20 (table gathers). */
+static inline __m256i dec8x8(const uint8_t *p)
+{
+    const __m256i c = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
+    return GATHER(bloom_srgb_dec8, c);
+}
+#endif

@@ -40,14 +40,6 @@ bool bloom_cpu_avx2(void)
 
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
-static inline uint32_t or_lanes8(__m256i v)
-{
-    __m128i x = _mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 8));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 4));
-    return (uint32_t)_mm_cvtsi128_si32(x);
-}
-
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3 in wrapping 32-bit lanes
  * (bloom_internal.h); returns the OR of every dst[i], and the OR of every
  * input in *in_or (the sums are exact when it is below 2^29). */
@@ -116,16 +108,6 @@ uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, in
     if (i < n)
         r |= bloom_row_htent_eo_sse2(v + i, e + i, o + i, n - i);
     return r;
-}
-
-/* The 24 samples of 8 pixels (4 even/odd pairs, R G B each) in pixel
- * order, from the even columns' e[0..11] and the odd columns' o[0..11]. */
-static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
-{
-    const __m256i e0 = LD8(e), e4 = LD8(e + 4), o0 = LD8(o), o4 = LD8(o + 4);
-    v[0] = _mm256_blend_epi32(PERM(e0, 0, 1, 2, 0, 0, 0, 3, 4), PERM(o0, 0, 0, 0, 0, 1, 2, 0, 0), 0x38);
-    v[1] = _mm256_blend_epi32(PERM(e4, 1, 0, 0, 0, 2, 3, 4, 0), PERM(o0, 0, 3, 4, 5, 0, 0, 0, 6), 0x8E);
-    v[2] = _mm256_blend_epi32(PERM(e4, 0, 0, 5, 6, 7, 0, 0, 0), PERM(o4, 3, 4, 0, 0, 0, 5, 6, 7), 0xE3);
 }
 
 /* bloom_row_il_add_c in groups of 8 pixels. */

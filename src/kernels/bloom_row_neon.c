@@ -5,12 +5,11 @@
 #include "bloom_pixel.h"
 
 #if defined(BLOOM_SIMD_NEON)
-#include <arm_neon.h>
 #include <string.h>
 
+#include "bloom_simd4.h" /* LD4, ST4, bloom_box_rnd4 */
+
 typedef uint32x4_t VT;
-#define LD4(p) vld1q_u32(p)
-#define ST4(p, v) vst1q_u32((p), (v))
 #define LD2(p) vcombine_u32(vld1_u32(p), vdup_n_u32(0))
 #define ST2(p, v) vst1_u32((p), vget_low_u32(v))
 #define ADD(a, b) vaddq_u32((a), (b))

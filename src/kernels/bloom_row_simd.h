@@ -33,9 +33,6 @@ static inline int simd_imax(int a, int b)
 
 /* ---- box down: 4x4 of four rows, sum / 16 half to even ------------------ */
 
-/* BLOOM_BOX_RND on four lanes: (s + 7 + ((s >> 4) & 1)) >> 4. */
-#define BOX_RND(s_, k7_, k1_) SHR(ADD(ADD((s_), (k7_)), AND(SHR((s_), 4), (k1_))), 4)
-
 /* Column sum of the four rows at sample index i (lane 3: the next sample). */
 #define COL4(s0, s1, s2, s3, i)                                                                              \
     ADD(ADD(LD4((s0) + (i)), LD4((s1) + (i))), ADD(LD4((s2) + (i)), LD4((s3) + (i))))
@@ -45,15 +42,14 @@ static inline int simd_imax(int a, int b)
 static void box_pairs(const uint32_t *const s[4], uint32_t *dst, int xa, int np)
 {
     const uint32_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
-    const VT k7 = DUP(7u), k1 = DUP(1u);
     size_t c = (size_t)(2 * xa - 1) * 3u;
     uint32_t *d = dst + (size_t)xa * 3u;
     VT a = ADD(COL4(s0, s1, s2, s3, c), COL4(s0, s1, s2, s3, c + 3u)); /* columns 2x-1, 2x */
     for (int i = 0; i < np; i++, c += 12u, d += 6u) {
         const VT b = ADD(COL4(s0, s1, s2, s3, c + 6u), COL4(s0, s1, s2, s3, c + 9u));
-        const VT e = BOX_RND(ADD(a, b), k7, k1);
+        const VT e = bloom_box_rnd4(ADD(a, b));
         a = ADD(COL4(s0, s1, s2, s3, c + 12u), COL4(s0, s1, s2, s3, c + 15u));
-        const VT o = BOX_RND(ADD(b, a), k7, k1);
+        const VT o = bloom_box_rnd4(ADD(b, a));
         ST4(d, PACK_LO(e, o));
         ST2(d + 4, PACK_HI(o));
     }

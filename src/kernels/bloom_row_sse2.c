@@ -4,12 +4,11 @@
 #include "bloom_kernels.h"
 
 #if defined(BLOOM_SIMD_SSE2)
-#include <emmintrin.h>
 #include <string.h>
 
+#include "bloom_simd4.h" /* LD4, ST4, bloom_box_rnd4 */
+
 typedef __m128i VT;
-#define LD4(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
-#define ST4(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
 #define LD2(p) _mm_loadl_epi64((const __m128i *)(const void *)(p))
 #define ST2(p, v) _mm_storel_epi64((__m128i *)(void *)(p), (v))
 #define ADD(a, b) _mm_add_epi32((a), (b))

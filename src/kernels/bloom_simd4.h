@@ -1,7 +1,7 @@
-/* Helpers the 4-lane twins of the presets share (SSE2 on x86-64, NEON on
- * aarch64), for the files inside their BLOOM_SIMD_SSE2 / BLOOM_SIMD_NEON
- * guards. (The core's own SSE2/NEON kernels are one template,
- * bloom_row_simd.h, with its own operations.) */
+/* Helpers the 4-lane twins share (SSE2 on x86-64, NEON on aarch64): the
+ * presets' and the core's own (one template, bloom_row_simd.h, with its
+ * operation layer in bloom_row_sse2.c and bloom_row_neon.c), for the files
+ * inside their BLOOM_SIMD_SSE2 / BLOOM_SIMD_NEON guards. */
 #ifndef BLOOM_SIMD4_H
 #define BLOOM_SIMD4_H
 

@@ -13,21 +13,7 @@
 
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
-static inline uint32_t or_lanes8(__m256i v)
-{
-    __m128i x = _mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 8));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 4));
-    return (uint32_t)_mm_cvtsi128_si32(x);
-}
-
 #if BLOOM_USE_RGB888
-static inline __m256i dec8x8(const uint8_t *p)
-{
-    const __m256i c = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
-    return GATHER(bloom_srgb_dec8, c);
-}
-
 void cod_vsum6_avx2(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n)
 {
     int i = 0;

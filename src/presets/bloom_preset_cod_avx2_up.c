@@ -11,14 +11,6 @@
 
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
-static inline uint32_t or_lanes8(__m256i v)
-{
-    __m128i x = _mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 8));
-    x = _mm_or_si128(x, _mm_srli_si128(x, 4));
-    return (uint32_t)_mm_cvtsi128_si32(x);
-}
-
 /* The tent's two halves in 32-bit lanes when every sample of the four rows
  * is below 2^24 (V < 2^28, T4 < 2^32; else false: the C kernel):
  * V = wa a + wb b + wc c + wd d at scr + 6 (padded 2 columns each side),
@@ -71,16 +63,6 @@ static bool tent32(const uint32_t *const u[4], int odd, int w, int sw, uint32_t 
     *e = ev;
     *o = ov;
     return true;
-}
-
-/* The 24 samples of 8 pixels (4 even/odd pairs) in pixel order, from the
- * even columns' e[0..11] and the odd columns' o[0..11]. */
-static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
-{
-    const __m256i e0 = LD8(e), e4 = LD8(e + 4), o0 = LD8(o), o4 = LD8(o + 4);
-    v[0] = _mm256_blend_epi32(PERM(e0, 0, 1, 2, 0, 0, 0, 3, 4), PERM(o0, 0, 0, 0, 0, 1, 2, 0, 0), 0x38);
-    v[1] = _mm256_blend_epi32(PERM(e4, 1, 0, 0, 0, 2, 3, 4, 0), PERM(o0, 0, 3, 4, 5, 0, 0, 0, 6), 0x8E);
-    v[2] = _mm256_blend_epi32(PERM(e4, 0, 0, 5, 6, 7, 0, 0, 0), PERM(o4, 3, 4, 0, 0, 0, 5, 6, 7), 0xE3);
 }
 
 /* (a d + c t + 2^23) >> 24 in 64-bit lanes (even and odd 32-bit lanes
@@ -174,14 +156,6 @@ void cod_mix_avx2(const uint32_t *const u[4], int odd, const uint32_t *d, uint32
 /* RGB888 sRGB decode by table gathers, encode by the fast encoder of
  * bloom_pixel.h (bloom_enc_fast: the bucket table gathered as bytes, the
  * next threshold as words); other formats and curves go to the C rows. */
-#if BLOOM_USE_RGB888
-static inline __m256i dec8x8(const uint8_t *p)
-{
-    const __m256i c = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
-    return GATHER(bloom_srgb_dec8, c);
-}
-#endif
-
 void cod_dec_avx2(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n)
 {
 #if BLOOM_USE_RGB888

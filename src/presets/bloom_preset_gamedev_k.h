@@ -115,6 +115,7 @@ void gd_gauss_h_sse2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 #if defined(BLOOM_SIMD_AVX2)
 void gd_bright_avx2(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 void gd_gauss_v_avx2(const uint32_t *const a[9], uint32_t *dst, int m);
+void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
 void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 #endif
 #endif
@@ -122,6 +123,7 @@ void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 void gd_bright_neon(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 void gd_gauss_v_neon(const uint32_t *const a[9], uint32_t *dst, int m);
 void gd_gauss_h_neon(const uint32_t *v, uint32_t *dst, int i0, int i1);
+void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
 #endif
 
 #endif

@@ -91,12 +91,12 @@ static const gd_kern_t gd_kern_sse2 = {gd_bright_sse2, gd_gauss_v_sse2, gd_gauss
                                        gd_tone8_c,     gd_lut8_c,       "sse2"};
 #if defined(BLOOM_SIMD_AVX2)
 static const gd_kern_t gd_kern_avx2 = {gd_bright_avx2, gd_gauss_v_avx2, gd_gauss_h_avx2,
-                                       gd_tone8_c,     gd_lut8_c,       "avx2"};
+                                       gd_tone8_c,     gd_lut8_avx2,    "avx2"};
 #endif
 #endif
 #if defined(BLOOM_SIMD_NEON) && !BLOOM_SMALL
 static const gd_kern_t gd_kern_neon = {gd_bright_neon, gd_gauss_v_neon, gd_gauss_h_neon,
-                                       gd_tone8_c,     gd_lut8_c,       "neon"};
+                                       gd_tone8_c,     gd_lut8_neon,    "neon"};
 #endif
 
 const gd_kern_t *gd_kern_for(bloom_isa_t isa)

@@ -2,7 +2,9 @@
  * (bloom_preset_gamedev_k.h), bit-identical to gd_gauss_v_c and
  * gd_gauss_h_c: the pairs in 32-bit lanes (< 2^29), products and sums by
  * UMULL / UMLAL into 64-bit lanes, the result (sum + 2^23) >> 24 < 2^28
- * narrowed back (SHRN). The tone curve stays C here: NEON has no gather.
+ * narrowed back (SHRN). The per-code table of rows without bloom by TBL and
+ * TBX on four 64-byte quarters of the table. The tone curve stays C here:
+ * NEON has no gather.
  * Empty on other targets. */
 #include "bloom_preset_gamedev_k.h"
 
@@ -70,6 +72,32 @@ void gd_gauss_h_neon(const uint32_t *v, uint32_t *dst, int i0, int i1)
     }
     if (i < i1)
         gd_gauss_h_c(v, dst, i, i1);
+}
+
+void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
+{
+    if (n < 256) { /* building the table costs more than the row */
+        gd_lut8_c(s, tab, d, n);
+        return;
+    }
+    uint8_t b[256];
+    for (int c = 0; c < 256; c++)
+        b[c] = (uint8_t)tab[c];
+    const uint8x16x4_t q0 = vld1q_u8_x4(b), q1 = vld1q_u8_x4(b + 64), q2 = vld1q_u8_x4(b + 128),
+                       q3 = vld1q_u8_x4(b + 192);
+    int i = 0;
+    for (; i + 16 <= n; i += 16) {
+        /* TBL gives 0 and TBX keeps the lane for an index past 63: code
+         * c is found in quarter c >> 6 at c - 64 (c >> 6) */
+        const uint8x16_t x = vld1q_u8(s + i);
+        uint8x16_t r = vqtbl4q_u8(q0, x);
+        r = vqtbx4q_u8(r, q1, vsubq_u8(x, vdupq_n_u8(64)));
+        r = vqtbx4q_u8(r, q2, vsubq_u8(x, vdupq_n_u8(128)));
+        r = vqtbx4q_u8(r, q3, vsubq_u8(x, vdupq_n_u8(192)));
+        vst1q_u8(d + i, r);
+    }
+    if (i < n)
+        gd_lut8_c(s + i, tab, d + i, n - i);
 }
 
 #else
