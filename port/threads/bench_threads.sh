@@ -20,7 +20,7 @@ ir() {
 i1=$(ir 1)
 i4=$(ir 4)
 t1=$(get t1_ms "$dir/time.txt") t2=$(get t2_ms "$dir/time.txt") ratio=$(get ratio "$dir/time.txt")
-cpus=$(get cpus "$dir/time.txt") same=$(get identical "$dir/time.txt")
+cpus=$(get cpus "$dir/time.txt") same=$(get identical "$dir/time.txt") ceil=$(get ceiling "$dir/time.txt")
 ws1=$(get workspace "$dir/icount.1.txt") ws4=$(get workspace "$dir/icount.4.txt")
 over=$(awk -v a="$i4" -v b="$i1" 'BEGIN { printf "%.2f", 100 * (a / b - 1) }')
 model=$(awk -v o="$over" 'BEGIN { printf "%.2f", 4 / (1 + o / 100) }')
@@ -43,15 +43,20 @@ cc=$(sed -n 1p "$(dirname "$bin")/cflags" 2>/dev/null || echo "")
     echo "|---|---|---|---|"
     echo "| 1 thread, ms per frame (median of $rounds paired rounds) | $t1 | | |"
     echo "| 2 threads (2 strips), ms per frame | $t2 | | |"
-    echo "| speed-up, median of the rounds' ratios | ${ratio}x | >= 1.8x | $(pass "$ratio" 1.8 ge) |"
-    echo "| halo overhead of 4 strips (callgrind instructions over the untiled frame) | ${over} % | <= 10 % | $(pass "$over" 10 le) |"
-    echo "| 4-core model, 4 / (1 + overhead) | ${model}x | >= 3.5x | $(pass "$model" 3.5 ge) |"
+    echo "| speed-up, median of the rounds' ratios | ${ratio}x | >= 1.85x (issue 20) | $(pass "$ratio" 1.85 ge) |"
+    echo "| this machine's ceiling: two whole frames by two independent engines at once, over one frame (same rounds) | ${ceil}x | | |"
+    echo "| halo overhead of 4 strips (callgrind instructions over the untiled frame) | ${over} % | <= 8 % (issue 20) | $(pass "$over" 8 le) |"
+    echo "| 4-core model, 4 / (1 + overhead) | ${model}x | >= 3.7x (issue 20) | $(pass "$model" 3.7 ge) |"
     echo "| workspace, untiled / 4 strip engines together, bytes | $ws1 / $ws4 | | |"
     echo
     echo "Instructions inside \`bloom_process\` ($vg, \`--toggle-collect=bloom_process\`): the untiled"
     echo "frame $i1, the four strip engines run one after another $i4. The model assumes"
     echo "the strips scale as their instructions do (no memory-bandwidth limit); the measured"
-    echo "2-core ratio beside it is the check on that assumption."
+    echo "2-core ratio beside it is the check on that assumption. The ceiling row is"
+    echo "what two cores of this machine give the engine with no strips, no halo and"
+    echo "no shared frame: two untiled engines, each on its own frame, at once. Where"
+    echo "it is well below 2 the machine (the caches and memory a virtual machine"
+    echo "shares), not the strips, holds the 2-thread figure down."
     echo
     echo "Method: each round times one frame on each side, the order alternating (a side"
     echo "never always runs second, on a warm cache); the ratio is the median of the rounds'"

@@ -112,9 +112,11 @@ void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
         /* bit 4 + k of each code at bit 7 of its byte, which VPBLENDVB
          * reads (a 16-bit shift moves bits into the next byte's low bits
          * only) */
-        const __m256i k0 = _mm256_slli_epi16(x, 3), k1 = _mm256_slli_epi16(x, 2), k2 = _mm256_slli_epi16(x, 1);
+        const __m256i k0 = _mm256_slli_epi16(x, 3), k1 = _mm256_slli_epi16(x, 2),
+                      k2 = _mm256_slli_epi16(x, 1);
         /* depth first, so that few values are live at once */
-#define LUT_PAIR(h) _mm256_blendv_epi8(_mm256_shuffle_epi8(row[h], lo), _mm256_shuffle_epi8(row[(h) + 1], lo), k0)
+#define LUT_PAIR(h)                                                                                          \
+    _mm256_blendv_epi8(_mm256_shuffle_epi8(row[h], lo), _mm256_shuffle_epi8(row[(h) + 1], lo), k0)
 #define LUT_QUAD(h) _mm256_blendv_epi8(LUT_PAIR(h), LUT_PAIR((h) + 2), k1)
 #define LUT_OCT(h) _mm256_blendv_epi8(LUT_QUAD(h), LUT_QUAD((h) + 4), k2)
         ST8(d + i, _mm256_blendv_epi8(LUT_OCT(0), LUT_OCT(8), x));
