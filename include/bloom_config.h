@@ -68,13 +68,17 @@
 #endif
 
 /* The static schedule: the order in which rows are made is computed once,
- * at bloom_init, into a table in the workspace (about 5 bytes per frame
- * row, sim/docs/streaming.md), and every frame walks it. 0 makes each pull
- * find its rows by walking the graph down from the output instead (less
- * code and workspace, more instructions per row; the size build's
- * choice). Same results bit for bit. */
+ * at bloom_init, into a table in the workspace (about 6 bytes per frame
+ * row, sim/docs/streaming.md), every frame walks it, and each ring keeps
+ * its slots' pointers and tags twice over with a cursor per reader. 0 (the
+ * size build's choice, with BLOOM_SMALL only) makes each pull find its rows
+ * by walking the graph down from the output instead: less code and
+ * workspace, more instructions per row. Same results bit for bit. */
 #ifndef BLOOM_SCHED_TABLE
 #define BLOOM_SCHED_TABLE (!BLOOM_SMALL)
+#endif
+#if !BLOOM_SCHED_TABLE && !BLOOM_SMALL
+#error "BLOOM_SCHED_TABLE 0 goes with BLOOM_SMALL (tiles read their rows through the table's gathers)"
 #endif
 
 /* Pixels per chunk of the fused output kernel: a stack buffer of

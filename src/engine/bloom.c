@@ -269,6 +269,7 @@ static void *take(uint8_t *base, uint64_t *off, uint64_t bytes)
     return p;
 }
 
+#if BLOOM_SCHED_TABLE
 /* The byte offset, in the rows of input i of node n, of the first column n
  * reads (a tile's window: bg_in_w; 0 without a tile). */
 static uint32_t input_step(const bloom_graph_t *g, const bg_node_t *n, int i)
@@ -288,69 +289,15 @@ static uint32_t input_step(const bloom_graph_t *g, const bg_node_t *n, int i)
     (void)i;
     return 0;
 }
-
-/* Lay the rings out after the engine struct; with base NULL only count.
- * Counted in 64 bits: on a 32-bit target a huge configuration must be
- * refused (BLOOM_E_TOO_BIG), not wrap around. */
-uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
-{
-    uint64_t off =
-        bloom_align8(sizeof(bloom_graph_t)) + bloom_align8(sizeof(bg_node_t) * (uint64_t)g->nnodes);
-    const int cap = imax(g->need_src, 1);
-    const uint64_t ucap = (uint64_t)cap;
-    if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
-        const uint64_t before = off;
-        g->src_copy = (uint8_t *)take(base, &off, ucap * g->src_row_bytes);
-        if (bg_aux_bpp(g))
-            g->aux_copy = (uint8_t *)take(base, &off, ucap * g->aux_row_bytes);
-        if (per_level)
-            per_level[0] += (size_t)(off - before);
-    }
-    g->src_ptr = (const void **)take(base, &off, 2u * ucap * sizeof(const void *));
-    if (bg_aux_bpp(g))
-        g->aux_ptr = (const void **)take(base, &off, 2u * ucap * sizeof(const void *));
-    for (int s = 0; base && g->src_copy && s < 2 * cap; s++) {
-        g->src_ptr[s] = g->src_copy + (size_t)(s % cap) * g->src_row_bytes;
-        if (bg_aux_bpp(g))
-            g->aux_ptr[s] = g->aux_copy + (size_t)(s % cap) * g->aux_row_bytes;
-    }
-    g->src_tag = (int32_t *)take(base, &off, 2u * ucap * sizeof(int32_t));
-    if (bg_tiled(g))
-        g->out_row = (uint8_t *)take(base, &off,
-                                     (uint64_t)g->node[g->out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
-    g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
-#if BLOOM_SCHED_TABLE
-    g->sched = (uint8_t *)take(base, &off, (uint64_t)g->sched_len);
 #endif
-    if (base)
-        g->src_cap = cap;
-    for (int i = 0; i < g->nnodes; i++) {
-        bg_node_t *n = &g->node[i];
-        if (i == g->out_node)
-            continue;
-        const uint64_t before = off;
-        const int c = imax(n->need, 1);
-        const uint64_t words = (uint64_t)c * (uint64_t)n->w * n->ch;
-        n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
-        n->rowp = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
-        n->tag = (int32_t *)take(base, &off, 2u * (uint64_t)c * sizeof(int32_t));
-        if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
-            n->cap = (uint16_t)c;
-            if (BLOOM_USE_SKIP)
-                memset(n->buf, 0, (size_t)words * sizeof *n->buf);
-            for (int s = 0; s < 2 * c; s++)
-                n->rowp[s] = n->buf + (size_t)(s % c) * n->w * n->ch;
-            /* every tag byte 0x40: the zero bit (bit 30) set in each tag,
-             * whatever the byte order; bloom_begin (bloom_init's last
-             * step) then makes each "no row", keeping that bit */
-            memset(n->tag, BLOOM_USE_SKIP ? 0x40 : 0, 2u * (size_t)c * sizeof *n->tag);
-        }
-        if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
-            per_level[n->level] += (size_t)(off - before);
-    }
-    /* each input's gather, for the row calls; a tile's inputs read from a
-     * column on: their own view of the slots' pointers, when the slots
-     * stay (node rings, copied source rows) */
+
+#if BLOOM_SCHED_TABLE
+/* Each input's gather, for the row calls, from offset off of base (NULL:
+ * only counted; returns the offset after them); cap: the source ring's
+ * slots. A tile's inputs read from a column on: their own view of the
+ * slots' pointers, when the slots stay (node rings, copied source rows). */
+static uint64_t lay_out_gathers(bloom_graph_t *g, uint8_t *base, uint64_t off, int cap)
+{
     int nin = 0;
     for (int i = 0; i < g->nnodes; i++)
         nin += g->node[i].nin;
@@ -382,6 +329,79 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
                 ga->ring = view;
         }
     }
+    return off;
+}
+#endif
+
+/* Lay the rings out after the engine struct; with base NULL only count.
+ * Counted in 64 bits: on a 32-bit target a huge configuration must be
+ * refused (BLOOM_E_TOO_BIG), not wrap around. */
+uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
+{
+    uint64_t off =
+        bloom_align8(sizeof(bloom_graph_t)) + bloom_align8(sizeof(bg_node_t) * (uint64_t)g->nnodes);
+    const int cap = imax(g->need_src, 1);
+    const uint64_t ucap = (uint64_t)cap;
+    if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
+        const uint64_t before = off;
+        g->src_copy = (uint8_t *)take(base, &off, ucap * g->src_row_bytes);
+        if (bg_aux_bpp(g))
+            g->aux_copy = (uint8_t *)take(base, &off, ucap * g->aux_row_bytes);
+        if (per_level)
+            per_level[0] += (size_t)(off - before);
+    }
+    const uint64_t copies = BG_RING_COPIES * ucap; /* (pointers and tags) */
+    if (BLOOM_SCHED_TABLE || !g->src_copy) {       /* (the size build finds copies by their slot) */
+        g->src_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
+        if (bg_aux_bpp(g))
+            g->aux_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
+    }
+#if BLOOM_SCHED_TABLE
+    for (int s = 0; base && g->src_copy && s < (int)copies; s++) { /* the copies' slots */
+        g->src_ptr[s] = g->src_copy + (size_t)(s % cap) * g->src_row_bytes;
+        if (bg_aux_bpp(g))
+            g->aux_ptr[s] = g->aux_copy + (size_t)(s % cap) * g->aux_row_bytes;
+    }
+#endif
+    g->src_tag = (int32_t *)take(base, &off, copies * sizeof(int32_t));
+    if (bg_tiled(g))
+        g->out_row = (uint8_t *)take(base, &off,
+                                     (uint64_t)g->node[g->out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
+    g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
+#if BLOOM_SCHED_TABLE
+    g->sched = (uint8_t *)take(base, &off, (uint64_t)g->sched_len);
+#endif
+    if (base)
+        g->src_cap = cap;
+    for (int i = 0; i < g->nnodes; i++) {
+        bg_node_t *n = &g->node[i];
+        if (i == g->out_node)
+            continue;
+        const uint64_t before = off;
+        const int c = imax(n->need, 1);
+        const uint64_t words = (uint64_t)c * (uint64_t)n->w * n->ch;
+        n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
+#if BLOOM_SCHED_TABLE
+        n->rowp = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
+        for (int s = 0; base && s < 2 * c; s++)
+            n->rowp[s] = n->buf + (size_t)(s % c) * n->w * n->ch;
+#endif
+        n->tag = (int32_t *)take(base, &off, BG_RING_COPIES * (uint64_t)c * sizeof(int32_t));
+        if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
+            n->cap = (uint16_t)c;
+            if (BLOOM_USE_SKIP)
+                memset(n->buf, 0, (size_t)words * sizeof *n->buf);
+            /* every tag byte 0x40: the zero bit (bit 30) set in each tag,
+             * whatever the byte order; bloom_begin (bloom_init's last
+             * step) then makes each "no row", keeping that bit */
+            memset(n->tag, BLOOM_USE_SKIP ? 0x40 : 0, BG_RING_COPIES * (size_t)c * sizeof *n->tag);
+        }
+        if (per_level && n->level >= 0 && n->level <= BLOOM_MAX_LEVELS)
+            per_level[n->level] += (size_t)(off - before);
+    }
+#if BLOOM_SCHED_TABLE
+    off = lay_out_gathers(g, base, off, cap);
+#endif
     return off;
 }
 
@@ -473,24 +493,28 @@ bloom_status_t bloom_begin(bloom_t *b)
     if (!b)
         return BLOOM_E_NULL;
     b->src_n = 0;
-    b->src_put = 0;
     b->out_rows = 0;
     b->failed = false;
+#if BLOOM_SCHED_TABLE
+    b->src_put = 0;
     b->sched_at = 0;
     b->src_free = 0;
     b->src_seen = 0;
+#endif
     /* an empty source slot: a negative row (no row matches it), without
      * the zero bit (were it read, it would not pass for a dark row) */
-    for (int i = 0; i < 2 * b->src_cap; i++)
+    for (int i = 0; i < BG_RING_COPIES * b->src_cap; i++)
         b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
     /* node slots keep their zero bit: a slot that holds zeros still does */
     for (int i = 0; i < b->nnodes; i++) {
         bg_node_t *n = &b->node[i];
         n->next = 0;
+#if BLOOM_SCHED_TABLE
         n->put = 0;
         for (int j = 0; j < n->nin; j++)
             n->gat[j].row = n->gat[j].slot = 0; /* row 0 is in slot 0 */
-        for (int s = 0; s < 2 * n->cap; s++)
+#endif
+        for (int s = 0; s < BG_RING_COPIES * n->cap; s++)
             n->tag[s] = (n->tag[s] & BLOOM_TAG_ZERO) | 0x3FFFFFFF;
     }
     return BLOOM_OK;

@@ -55,6 +55,16 @@ static int oldest_of(const bloom_graph_t *g, int from)
     return o;
 }
 
+#if !BLOOM_SCHED_TABLE
+/* The source (or aux) row held in slot `slot` of the source ring. */
+static const void *src_slot(const bloom_graph_t *g, int from, int slot)
+{
+    if (!BLOOM_USE_GRAPH || from == BG_SRC) /* (only presets read an aux plane) */
+        return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
+    return g->aux_copy ? g->aux_copy + (size_t)slot * g->aux_row_bytes : g->aux_ptr[slot];
+}
+#endif
+
 /* The last row of input i that row r of node n reads. */
 static int input_top(const bloom_graph_t *g, const bg_node_t *n, int i, int r)
 {
@@ -86,6 +96,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
     const void *const *in[BG_MAX_IN] = {NULL, NULL, NULL};
     int used = 0;
     bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
+#if BLOOM_SCHED_TABLE
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
         bg_gather_t *ga = &n->gat[i];
@@ -130,6 +141,41 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
         if (ip->node != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
+#else /* the size build: no cursors, no doubled rings, no aux plane, no tiles */
+    for (int i = 0; i < n->nin; i++) {
+        const bg_input_t *ip = &n->in[i];
+        const int from = ip->node, hin = in_height(g, from), b = bg_base(ip->map, r);
+        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+        const int cap = src ? src->cap : g->src_cap;
+        const int32_t *tags = src ? src->tag : g->src_tag;
+        /* the rows are consecutive (repeated at the edges): one division for
+         * the first slot, then a step with wrap-around */
+        int prev = clampi(b + ip->lo, 0, hin - 1), slot = prev % cap;
+        uint32_t zm = 0;
+        in[i] = rows + used;
+        for (int j = ip->lo; j <= ip->hi; j++) {
+            const int rr = clampi(b + j, 0, hin - 1);
+            if (rr != prev) {
+                prev = rr;
+                slot = slot + 1 == cap ? 0 : slot + 1;
+            }
+            const int32_t tag = tags[slot];
+#if BLOOM_CHECK_RINGS
+            if ((tag & ~ZBIT) != rr)
+                g->failed = true;
+#endif
+            if (BLOOM_USE_SKIP && (tag & ZBIT))
+                zm |= 1u << (j - ip->lo);
+            rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
+                               : src_slot(g, from, slot);
+        }
+        if (!BLOOM_USE_SKIP)
+            continue;
+        g->zin[i] = zm;
+        if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
+            all_zero = false;
+    }
+#endif
     if (all_zero)
         return ROW_SKIPPED;
     if (BLOOM_CHECK_RINGS && g->failed)
@@ -142,18 +188,27 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
  * written). */
 static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
 {
-    const int s = n->put;
-    n->put = s + 1 == n->cap ? 0 : s + 1;
     const size_t len = (size_t)n->w * n->ch;
+#if BLOOM_SCHED_TABLE
+    const int s = n->put, s2 = s + n->cap; /* (the tag's second copy) */
+    n->put = s + 1 == n->cap ? 0 : s + 1;
     uint32_t *dst = (uint32_t *)(uintptr_t)n->rowp[s];
+#else
+    const int s = r % n->cap, s2 = s; /* (s2 unused: one copy) */
+    uint32_t *dst = n->buf + (size_t)s * len;
+#endif
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
-    n->tag[s] = n->tag[s + n->cap] = r;
+    n->tag[s] = r;
+    if (BLOOM_SCHED_TABLE)
+        n->tag[s2] = r;
     const int made = run_row(g, n, r, dst);
     if (!BLOOM_USE_SKIP || made == ROW_MADE)
         return;
     if (made == ROW_SKIPPED && !had_zeros)
         memset(dst, 0, len * sizeof *dst);
-    n->tag[s] = n->tag[s + n->cap] = r | ZBIT;
+    n->tag[s] = r | ZBIT;
+    if (BLOOM_SCHED_TABLE)
+        n->tag[s2] = r | ZBIT;
 }
 
 /* One byte of the static schedule: written when the table has its place
@@ -225,12 +280,14 @@ static bool ensure(bloom_graph_t *g, int ni, int j)
 void bloom_dry_frame(bloom_graph_t *g)
 {
     bg_node_t *o = &g->node[g->out_node];
+#if BLOOM_SCHED_TABLE /* (bloom_init runs it a second time, to write the table) */
     for (int i = 0; i < g->nnodes; i++)
         g->node[i].next = 0;
-    g->dry = true;
     g->src_n = 0;
     g->src_free = 0;
     g->sched_len = 0;
+#endif
+    g->dry = true;
     emit_free(g);
     for (int y = 0; y < g->h[0]; y++) {
         g->need_src = imax(g->need_src, y - imin(oldest_of(g, BG_SRC), y) + 1);
@@ -260,7 +317,11 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
         g->src_n++; /* the tile is out: the rest of the window's rows are not needed */
         return BLOOM_OK;
     }
+#if BLOOM_SCHED_TABLE
     const int r = g->src_n, slot = g->src_put;
+#else
+    const int r = g->src_n, slot = r % g->src_cap;
+#endif
 #if BLOOM_SCHED_TABLE
     if (r - g->src_cap >= g->src_free)
 #else
@@ -271,24 +332,35 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
     src_row = (const uint8_t *)src_row + (size_t)bg_win_x(g) * (size_t)g->src_bpp;
     if (bg_aux_bpp(g))
         aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(g) * (size_t)bg_aux_bpp(g);
-    const int cap = g->src_cap;
-    if (g->src_copy) { /* (the slots' pointers are the copies', set once) */
+    const int slot2 = slot + g->src_cap; /* the second copies (BLOOM_SCHED_TABLE) */
+    if (g->src_copy) {                   /* (the slots' pointers are the copies', set once) */
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
         if (bg_aux_bpp(g))
             memcpy(g->aux_copy + (size_t)slot * g->aux_row_bytes, aux_row, g->aux_row_bytes);
     } else {
-        g->src_ptr[slot] = g->src_ptr[slot + cap] = src_row;
-        if (bg_aux_bpp(g))
-            g->aux_ptr[slot] = g->aux_ptr[slot + cap] = aux_row;
+        g->src_ptr[slot] = src_row;
+        if (BLOOM_SCHED_TABLE)
+            g->src_ptr[slot2] = src_row;
+        if (bg_aux_bpp(g)) {
+            g->aux_ptr[slot] = aux_row;
+            if (BLOOM_SCHED_TABLE)
+                g->aux_ptr[slot2] = aux_row;
+        }
     }
 #if BLOOM_USE_SKIP
     const bool dark =
         g->dark_src && BLOOM_KERN_DARK(&g->kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
-    g->src_tag[slot] = g->src_tag[slot + cap] = r | (dark ? ZBIT : 0);
+    g->src_tag[slot] = r | (dark ? ZBIT : 0);
+    if (BLOOM_SCHED_TABLE)
+        g->src_tag[slot2] = g->src_tag[slot];
 #else
-    g->src_tag[slot] = g->src_tag[slot + cap] = r;
+    g->src_tag[slot] = r;
+    if (BLOOM_SCHED_TABLE)
+        g->src_tag[slot2] = r;
 #endif
+#if BLOOM_SCHED_TABLE
     g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
+#endif
     g->src_n++;
     return BLOOM_OK;
 }

@@ -99,20 +99,26 @@ struct bg_node {
     uint8_t nin;  /* inputs */
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
+#if BLOOM_SCHED_TABLE
     bg_gather_t *gat; /* nin of them: the scheduler's (bloom_carve) */
-    uint32_t k[4];    /* the row function's constants */
+#endif
+    uint32_t k[4]; /* the row function's constants */
     /* ring (not for the output node): cap rows at buf; each slot's row
      * pointer and tag (the row it holds) are kept twice over, at s and
      * s + cap, so that any run of consecutive slots is one array */
     uint32_t *buf;
+#if BLOOM_SCHED_TABLE
     const void **rowp;
+#endif
     int32_t *tag;
     uint16_t cap;  /* ring rows (at most the node's height, <= BLOOM_MAX_DIM = 2^14) */
     uint16_t need; /* dry run: largest occupancy (the same bound); both 16 bits so
                       that xa below costs no workspace, on 32-bit targets either
                       (unsigned: Thumb-2 loads them in 16-bit instructions) */
     int next;      /* next row to compute */
-    int put;       /* its ring slot (next % cap, kept as a cursor) */
+#if BLOOM_SCHED_TABLE
+    int put; /* its ring slot (next % cap, kept as a cursor) */
+#endif
     /* Columns xa .. xa + w - 1 of the level (at the node's resolution) are
      * made: all of them (xa = 0) but in a tile's window, where a node makes
      * only what its readers use (bloom_plan; g->views); its row function
@@ -186,6 +192,9 @@ struct bloom {
     bg_node_t *node;
 };
 #define BG_SCRATCH 4
+/* Each ring slot's tag (and source row pointer) is kept this many times:
+ * twice with the static schedule's gathers (bg_node_t), once without. */
+#define BG_RING_COPIES (BLOOM_SCHED_TABLE ? 2 : 1)
 #define BG_S_FREE 0xFE
 #define BG_S_PUSH 0xFF
 
