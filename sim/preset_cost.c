@@ -168,11 +168,22 @@ static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
                   !engine_make(&e[i], (bloom_preset_t)(i / 2), w, h, i % 2 ? BLOOM_FLAG_NO_SIMD : 0u) &&
                   !run(&e[i], src, dst, w); /* warm-up */
     size_t slot = 0;
+    unsigned long long rng = 0x9E3779B97F4A7C15ull;
     for (int r = 0; r < runs; r++) {
-        /* the order rotates with the round: none always runs first after
-         * the cold copy (or last before it) */
+        /* a new order every round (a fixed seed): no engine always runs
+         * after the same one (after cod's long runs every engine is slower,
+         * the copy too) or first after the cold copy */
+        int order[NE];
+        for (int q = 0; q < NE; q++)
+            order[q] = q;
+        for (int q = NE - 1; q > 0; q--) {
+            rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+            const int k = (int)((rng >> 33) % (unsigned long long)(q + 1)), tq = order[q];
+            order[q] = order[k];
+            order[k] = tq;
+        }
         for (int q = 0; q < NE; q++) {
-            const int i = (q + r) % NE;
+            const int i = order[q];
             if (!have[i])
                 continue;
             const uint8_t *cold = ring + slot * fb;

@@ -351,7 +351,8 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
             per_level[0] += (size_t)(off - before);
     }
     const uint64_t copies = BG_RING_COPIES * ucap; /* (pointers and tags) */
-    if (BLOOM_SCHED_TABLE || !g->src_copy) {       /* (the size build finds copies by their slot) */
+    if (BLOOM_SCHED_TABLE ||
+        !(g->cfg.flags & BLOOM_FLAG_COPY_SOURCE)) { /* (the size build finds copies by their slot) */
         g->src_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
         if (bg_aux_bpp(g))
             g->aux_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
