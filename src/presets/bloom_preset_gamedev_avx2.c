@@ -95,13 +95,9 @@ void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1)
 
 void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
 {
-    if (n < 256) { /* building the rows costs more than the row */
-        gd_lut8_c(s, tab, d, n);
-        return;
-    }
     uint8_t b[256];
-    for (int c = 0; c < 256; c++)
-        b[c] = (uint8_t)tab[c];
+    if (!gd_lut_bytes(s, tab, d, n, b))
+        return;
     __m256i row[16]; /* row h: codes 16 h .. 16 h + 15, in both lanes */
     for (int h = 0; h < 16; h++)
         row[h] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(b + 16 * h)));

@@ -63,6 +63,9 @@ const gd_kern_t *gd_kern_for(bloom_isa_t isa);
 void gd_gauss_v_c(const uint32_t *const a[9], uint32_t *dst, int m);
 void gd_gauss_h_c(const uint32_t *v, uint32_t *dst, int i0, int i1);
 void gd_lut8_c(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
+/* The twins' start: a row under 256 bytes through gd_lut8_c (false), else
+ * the table packed as bytes into b (true). */
+bool gd_lut_bytes(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n, uint8_t b[256]);
 void gd_bright_c(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 /* A whole row of w pixels: the edge pixels (columns clamped) in C, the
  * interior by k->gauss_h. */

@@ -66,6 +66,17 @@ void gd_lut8_c(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
         d[i] = (uint8_t)tab[s[i]];
 }
 
+bool gd_lut_bytes(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n, uint8_t b[256])
+{
+    if (n < 256) { /* packing the table costs more than the row */
+        gd_lut8_c(s, tab, d, n);
+        return false;
+    }
+    for (int c = 0; c < 256; c++)
+        b[c] = (uint8_t)tab[c];
+    return true;
+}
+
 /* Horizontal pass of a row of w pixels: v (3 samples per pixel) -> dst. */
 void gd_gauss_h_row(const gd_kern_t *k, const uint32_t *v, uint32_t *dst, int w)
 {

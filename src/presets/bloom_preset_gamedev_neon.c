@@ -76,13 +76,9 @@ void gd_gauss_h_neon(const uint32_t *v, uint32_t *dst, int i0, int i1)
 
 void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
 {
-    if (n < 256) { /* building the table costs more than the row */
-        gd_lut8_c(s, tab, d, n);
-        return;
-    }
     uint8_t b[256];
-    for (int c = 0; c < 256; c++)
-        b[c] = (uint8_t)tab[c];
+    if (!gd_lut_bytes(s, tab, d, n, b))
+        return;
     const uint8x16x4_t q0 = vld1q_u8_x4(b), q1 = vld1q_u8_x4(b + 64), q2 = vld1q_u8_x4(b + 128),
                        q3 = vld1q_u8_x4(b + 192);
     int i = 0;
