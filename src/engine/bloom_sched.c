@@ -305,6 +305,10 @@ void bloom_dry_frame(bloom_graph_t *g)
     g->dry = false;
 }
 
+#if BLOOM_SCHED_TABLE
+static bool walk_to_output(bloom_graph_t *g);
+#endif
+
 bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row)
 {
     if (bg_aux_bpp(g) && !aux_row)
@@ -323,6 +327,13 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
     const int r = g->src_n, slot = r % g->src_cap;
 #endif
 #if BLOOM_SCHED_TABLE
+    /* the rows the table makes before the next output row may free the
+     * slot (a pull could not: it stops at that row); then a push is BUSY
+     * only when an output row is due */
+    if (r - g->src_cap >= g->src_free)
+        walk_to_output(g);
+    if (g->failed)
+        return BLOOM_E_INTERNAL;
     if (r - g->src_cap >= g->src_free)
 #else
     if (r - g->src_cap >= oldest_of(g, BG_SRC))
