@@ -321,8 +321,7 @@ static uint64_t lay_out_gathers(bloom_graph_t *g, uint8_t *base, uint64_t off, i
             ga->tags = f ? f->tag : g->src_tag;
             ga->cap = (uint16_t)c;
             ga->h = (uint16_t)(f ? f->h : g->h[0]);
-            ga->add = view ? 0u : step;
-            ga->row = ga->slot = 0;
+            ga->add = view ? 0u : step; /* (the cursor: bloom_begin) */
             for (int s = 0; view && s < 2 * c; s++)
                 view[s] = (const uint8_t *)ga->ring[s] + step;
             if (view)

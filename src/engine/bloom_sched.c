@@ -183,6 +183,21 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
     return !n->fn(g, n, r, in, dst) && BLOOM_USE_SKIP && g->skip ? ROW_ZEROS : ROW_MADE;
 }
 
+/* Tag (or row pointer) v into slot s of a ring of cap slots: both copies
+ * with the static schedule's doubled rings, the one otherwise. */
+static inline void put_tag(int32_t *tags, int s, int cap, int32_t v)
+{
+    tags[s] = v;
+    if (BLOOM_SCHED_TABLE)
+        tags[s + cap] = v;
+}
+static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
+{
+    ptrs[s] = v;
+    if (BLOOM_SCHED_TABLE)
+        ptrs[s + cap] = v;
+}
+
 /* Node row r into its ring slot, tagged. A zero row leaves zeros in the
  * slot (a slot tagged zero holds zeros: if it did already, nothing is
  * written). */
@@ -190,25 +205,21 @@ static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
 {
     const size_t len = (size_t)n->w * n->ch;
 #if BLOOM_SCHED_TABLE
-    const int s = n->put, s2 = s + n->cap; /* (the tag's second copy) */
+    const int s = n->put;
     n->put = s + 1 == n->cap ? 0 : s + 1;
     uint32_t *dst = (uint32_t *)(uintptr_t)n->rowp[s];
 #else
-    const int s = r % n->cap, s2 = s; /* (s2 unused: one copy) */
+    const int s = r % n->cap;
     uint32_t *dst = n->buf + (size_t)s * len;
 #endif
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
-    n->tag[s] = r;
-    if (BLOOM_SCHED_TABLE)
-        n->tag[s2] = r;
+    put_tag(n->tag, s, n->cap, r);
     const int made = run_row(g, n, r, dst);
     if (!BLOOM_USE_SKIP || made == ROW_MADE)
         return;
     if (made == ROW_SKIPPED && !had_zeros)
         memset(dst, 0, len * sizeof *dst);
-    n->tag[s] = r | ZBIT;
-    if (BLOOM_SCHED_TABLE)
-        n->tag[s2] = r | ZBIT;
+    put_tag(n->tag, s, n->cap, r | ZBIT);
 }
 
 /* One byte of the static schedule: written when the table has its place
@@ -343,31 +354,21 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
     src_row = (const uint8_t *)src_row + (size_t)bg_win_x(g) * (size_t)g->src_bpp;
     if (bg_aux_bpp(g))
         aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(g) * (size_t)bg_aux_bpp(g);
-    const int slot2 = slot + g->src_cap; /* the second copies (BLOOM_SCHED_TABLE) */
-    if (g->src_copy) {                   /* (the slots' pointers are the copies', set once) */
+    if (g->src_copy) { /* (the slots' pointers are the copies', set once) */
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
         if (bg_aux_bpp(g))
             memcpy(g->aux_copy + (size_t)slot * g->aux_row_bytes, aux_row, g->aux_row_bytes);
     } else {
-        g->src_ptr[slot] = src_row;
-        if (BLOOM_SCHED_TABLE)
-            g->src_ptr[slot2] = src_row;
-        if (bg_aux_bpp(g)) {
-            g->aux_ptr[slot] = aux_row;
-            if (BLOOM_SCHED_TABLE)
-                g->aux_ptr[slot2] = aux_row;
-        }
+        put_ptr(g->src_ptr, slot, g->src_cap, src_row);
+        if (bg_aux_bpp(g))
+            put_ptr(g->aux_ptr, slot, g->src_cap, aux_row);
     }
 #if BLOOM_USE_SKIP
     const bool dark =
         g->dark_src && BLOOM_KERN_DARK(&g->kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
-    g->src_tag[slot] = r | (dark ? ZBIT : 0);
-    if (BLOOM_SCHED_TABLE)
-        g->src_tag[slot2] = g->src_tag[slot];
+    put_tag(g->src_tag, slot, g->src_cap, r | (dark ? ZBIT : 0));
 #else
-    g->src_tag[slot] = r;
-    if (BLOOM_SCHED_TABLE)
-        g->src_tag[slot2] = r;
+    put_tag(g->src_tag, slot, g->src_cap, r);
 #endif
 #if BLOOM_SCHED_TABLE
     g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
