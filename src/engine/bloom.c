@@ -25,91 +25,96 @@ static uint32_t dark_code(uint32_t cut, bool linear, const uint32_t *table, uint
     return c;
 }
 
-static void set_dark(bloom_graph_t *g)
+static void set_dark(bloom_t *g, uint32_t cut)
 {
-    const uint32_t cut = g->dark_cut;
-    const bool lin = g->out.linear;
+    const bool lin = g->row.par.out.linear;
     (void)lin;
 #if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888
-    g->dark.c8 = dark_code(cut, lin, bloom_srgb_dec8, 255);
+    g->row.dark.c8 = dark_code(cut, lin, bloom_srgb_dec8, 255);
 #endif
 #if BLOOM_USE_RGB565
-    g->dark.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
-    g->dark.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
+    g->row.dark.c6 = dark_code(cut, lin, bloom_srgb_dec6, 63);
+    g->row.dark.c5 = dark_code(cut, lin, bloom_srgb_dec5, 31);
 #endif
-    g->dark.q16 = cut >> BLOOM_Q16_SHIFT; /* min(w, 2^24 - 1) << shift <= cut */
+    g->row.dark.q16 = cut >> BLOOM_Q16_SHIFT; /* min(w, 2^24 - 1) << shift <= cut */
 }
 #endif
 
-#define NO_CUT 0xFFFFFFFFu
-
-/* The graph over the window x0, y0, w x h of the frame (no dry run yet). */
-static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap,
-                                  int x0, int y0, int w, int h)
+/* The graph over the window x0, y0, w x h of the frame (no dry run yet):
+ * the preset's build hook makes it from the configuration, and the
+ * parameters it returns go to the row context. */
+static bloom_status_t plan_window(bloom_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap, int x0,
+                                  int y0, int w, int h)
 {
     const bloom_preset_ops_t *ops = bloom_preset_ops(cfg->preset);
     if (!ops)
         return BLOOM_E_PRESET;
     memset(g, 0, sizeof *g); /* the nodes are set as they are made */
-    g->node = nodes;
-    g->node_cap = cap;
     g->cfg = *cfg;
+    bg_graph_t *gr = &g->gr;
+    bg_ctx_t *row = &g->row;
+    gr->cfg = row->cfg = &g->cfg;
+    gr->node = nodes;
+    row->node = nodes;
+    gr->node_cap = cap;
 #if !BLOOM_SMALL /* (else the window is the frame, bg_win_x/y are 0) */
-    g->frame_w = cfg->width;
-    g->frame_h = cfg->height;
-    g->win_x = x0;
-    g->win_y = y0;
+    gr->frame_w = cfg->width;
+    gr->frame_h = cfg->height;
+    row->win_x = x0;
+    row->win_y = y0;
 #else
     (void)x0;
     (void)y0;
 #endif
-    g->w[0] = w;
-    g->h[0] = h;
-    bg_levels(g, cfg->levels);
-    g->knee.t = cfg->threshold << BLOOM_Q16_SHIFT; /* Q16.16 -> internal, exact */
-    g->knee.k = (uint32_t)(((uint64_t)g->knee.t * cfg->soft_knee + 32768u) >> 16);
-    g->out.in_fmt = cfg->in_fmt;
-    g->out.out_fmt = cfg->out_fmt;
-    g->out.linear = (cfg->flags & BLOOM_FLAG_LINEAR) != 0;
-    g->out.debug = (cfg->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
-    g->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
-    g->skip = BLOOM_USE_SKIP && !(cfg->flags & BLOOM_FLAG_NO_SKIP);
-    bloom_kernels_select(&g->kern, cfg->flags);
-    g->src_bpp = bloom_format_bpp(cfg->in_fmt);
-#if BLOOM_USE_GRAPH
-    g->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
-#endif
-    g->src_row_bytes = (size_t)w * (size_t)g->src_bpp;
-    g->aux_row_bytes = (size_t)w * (size_t)bg_aux_bpp(g);
-    g->scratch_len = (size_t)w * 3u + 16u;
-    g->out_node = -1;
-    if (BLOOM_USE_SKIP)
-        g->dark_cut = NO_CUT;
-    bloom_status_t st = ops->build(g);
+    gr->w[0] = row->w0 = w;
+    gr->h[0] = h;
+    bg_levels(gr, cfg->levels);
+    bg_params_t *par = &row->par;                    /* what the build hook returns, the engine's first */
+    par->knee.t = cfg->threshold << BLOOM_Q16_SHIFT; /* Q16.16 -> internal, exact */
+    par->knee.k = (uint32_t)(((uint64_t)par->knee.t * cfg->soft_knee + 32768u) >> 16);
+    par->out.in_fmt = cfg->in_fmt;
+    par->out.out_fmt = cfg->out_fmt;
+    par->out.linear = (cfg->flags & BLOOM_FLAG_LINEAR) != 0;
+    par->out.debug = (cfg->flags & BLOOM_FLAG_DEBUG_VIEW) != 0;
+    par->out.intensity = bloom_srgb_to_linear_q16(cfg->intensity);
+    par->dark_cut = BG_NO_CUT;
+    par->scratch_len = (size_t)w * 3u + 16u; /* (scratch_rows, views: 0 from the memset) */
+    gr->out_node = -1;
+    bloom_status_t st = ops->build(gr, par);
     if (st != BLOOM_OK)
         return st;
-    if (g->failed && g->nnodes == cap && cap < BG_MAX_NODES)
+    if (gr->failed && gr->nnodes == cap && cap < BG_MAX_NODES)
         return BLOOM_E_WORKSPACE; /* bloom_init's buffer: too small for the nodes */
-    if (g->failed)
+    if (gr->failed)
         return BLOOM_E_INTERNAL;
 #if !BLOOM_SMALL || BLOOM_USE_GRAPH /* a build hook's mistakes (the default's graph alone is
                                         checked by every other build) */
-    if (g->out_node < 0 || g->out_node != g->nnodes - 1 || g->node[g->out_node].h != g->h[0] ||
-        g->scratch_rows < 0 || g->scratch_rows > BG_SCRATCH)
+    if (gr->out_node < 0 || gr->out_node != gr->nnodes - 1 || nodes[gr->out_node].h != gr->h[0] ||
+        par->scratch_rows < 0 || par->scratch_rows > BG_SCRATCH)
         return BLOOM_E_INTERNAL;
 #endif
+    g->row.skip = BLOOM_USE_SKIP && !(cfg->flags & BLOOM_FLAG_NO_SKIP);
+    bloom_kernels_select(&row->kern, cfg->flags);
+    row->src_bpp = (uint8_t)bloom_format_bpp(cfg->in_fmt);
+#if BLOOM_USE_GRAPH
+    row->aux_bpp = cfg->aux_fmt == BLOOM_AUX_U16 ? 2 : cfg->aux_fmt == BLOOM_AUX_U8 ? 1 : 0;
+#endif
+    g->src_row_bytes = (size_t)w * (size_t)row->src_bpp;
+    g->aux_row_bytes = (size_t)w * (size_t)bg_aux_bpp(row);
 #if BLOOM_USE_GRAPH /* (a list worth its code where graphs are big) */
-    for (int i = 0; i < g->nnodes; i++)
-        for (int j = 0; j < g->node[i].nin; j++)
-            if (g->node[i].in[j].node < 0) {
+    for (int i = 0; i < gr->nnodes; i++)
+        for (int j = 0; j < nodes[i].nin; j++)
+            if (nodes[i].in[j].node < 0) {
                 g->src_reader[g->nsrc_readers++] = (int8_t)i;
                 break;
             }
 #endif
 #if BLOOM_USE_SKIP
-    g->dark_src = g->skip && g->dark_cut != NO_CUT;
-    if (g->dark_src)
-        set_dark(g);
+    g->row.dark_src = g->row.skip && par->dark_cut != BG_NO_CUT;
+    if (g->row.dark_src)
+        set_dark(g, par->dark_cut);
+#else
+    (void)par->dark_cut;
 #endif
     return BLOOM_OK;
 }
@@ -136,14 +141,14 @@ static bloom_status_t plan_window(bloom_graph_t *g, const bloom_config_t *cfg, b
  *   out reads U1 (e 1) UP at -1 .. 1: 1 + 2, 3 * 1 + 9 = 12, 12
  * so the halo is 12: a strip of columns 0 .. 63 reads source columns
  * 0 .. 75 (76 is a multiple of 2^L). */
-static int tile_halo(const bloom_graph_t *g)
+static int tile_halo(const bloom_t *g)
 {
     /* per node: how far its pixels reach into the source before and after
      * their own span (frame pixels), and log2 of its pixel's size in frame
      * pixels */
     int reach_lo[BG_MAX_NODES], reach_hi[BG_MAX_NODES], px_log2[BG_MAX_NODES];
-    for (int i = 0; i < g->nnodes; i++) {
-        const bg_node_t *n = &g->node[i];
+    for (int i = 0; i < g->gr.nnodes; i++) {
+        const bg_node_t *n = &g->gr.node[i];
         reach_lo[i] = reach_hi[i] = 0;
         px_log2[i] = 0;
         for (int j = 0; j < n->nin; j++) {
@@ -167,7 +172,7 @@ static int tile_halo(const bloom_graph_t *g)
                 px_log2[i] = e + (in->map == BG_DOWN ? 1 : in->map == BG_UP ? -1 : 0);
         }
     }
-    return imax(0, imax(reach_lo[g->out_node], reach_hi[g->out_node]));
+    return imax(0, imax(reach_lo[g->gr.out_node], reach_hi[g->gr.out_node]));
 }
 
 /* [a, b) of a frame side n around [t, t + tn): the margin m either side,
@@ -192,21 +197,21 @@ static void window_side(int t, int tn, int n, int m, int align, int *a, int *b)
  * SAME input read to column x + hi, hi more (kernels that clamp at their
  * own width, as a horizontal pass does); its inputs are made as far as it
  * reads, or to the edge, where the kernels' clamp at bg_in_w (or at their
- * own width) is the edge rule again. Without g->views only the
+ * own width) is the edge rule again. Without the preset's views only the
  * output node is narrowed (every preset's output row function reads its
  * widths by bg_in_w); the others make every column. */
-static void cut_node_columns(bloom_graph_t *g)
+static void cut_node_columns(bloom_t *g)
 {
     /* per node: the first column its readers read, and one past the last */
     int first_read[BG_MAX_NODES], end_read[BG_MAX_NODES];
-    for (int i = 0; i < g->nnodes; i++)
+    for (int i = 0; i < g->gr.nnodes; i++)
         first_read[i] = INT_MAX, end_read[i] = INT_MIN;
-    first_read[g->out_node] = g->tile_x0;
-    end_read[g->out_node] = g->tile_x1;
-    for (int i = g->out_node; i >= 0; i--) { /* readers come after their inputs */
-        bg_node_t *n = &g->node[i];
+    first_read[g->gr.out_node] = g->tile_x0;
+    end_read[g->gr.out_node] = g->tile_x1;
+    for (int i = g->gr.out_node; i >= 0; i--) { /* readers come after their inputs */
+        bg_node_t *n = &g->gr.node[i];
         int a = 0, b = n->w, spoil = 0, spoil_r = 0, up = 0;
-        if ((g->views || i == g->out_node) && first_read[i] < end_read[i]) {
+        if ((g->row.par.views || i == g->gr.out_node) && first_read[i] < end_read[i]) {
             for (int j = 0; j < n->nin; j++) {
                 const int lo = n->in[j].lo, map = n->in[j].map;
                 spoil = imax(spoil, map == BG_UP ? -2 * lo : map == BG_DOWN ? (1 - lo) / 2 : -lo);
@@ -223,7 +228,7 @@ static void cut_node_columns(bloom_graph_t *g)
             const bg_input_t *in = &n->in[j];
             if (in->node < 0)
                 continue;
-            const int m = in->map, f = in->node, wf = g->node[f].w;
+            const int m = in->map, f = in->node, wf = g->gr.node[f].w;
             const int first = bg_base(m, a), last = bg_base(m, b - 1) + in->hi;
             first_read[f] = imin(first_read[f], first);
             end_read[f] = imax(end_read[f], imin(last + 1, wf));
@@ -232,7 +237,7 @@ static void cut_node_columns(bloom_graph_t *g)
 }
 #endif
 
-bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap)
+bloom_status_t bloom_plan(bloom_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap)
 {
     bloom_status_t st = plan_window(g, cfg, nodes, cap, 0, 0, cfg->width, cfg->height);
 #if !BLOOM_SMALL
@@ -241,12 +246,12 @@ bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t
          * window is the tile with that halo, out to multiples of the
          * deepest level's pixel so its levels halve as the frame's, and
          * the graph is built again over it */
-        const int align = 1 << g->L, m = tile_halo(g);
+        const int align = 1 << g->gr.L, m = tile_halo(g);
         int x0, x1, y0, y1;
         window_side(cfg->tile_x, cfg->tile_w, cfg->width, m, align, &x0, &x1);
         window_side(cfg->tile_y, cfg->tile_h, cfg->height, m, align, &y0, &y1);
         st = plan_window(g, cfg, nodes, cap, x0, y0, x1 - x0, y1 - y0);
-        g->tiled = true;
+        g->row.tiled = true;
         g->tile_x0 = cfg->tile_x - x0;
         g->tile_x1 = g->tile_x0 + cfg->tile_w;
         g->tile_y0 = cfg->tile_y - y0;
@@ -272,15 +277,15 @@ static void *take(uint8_t *base, uint64_t *off, uint64_t bytes)
 #if BLOOM_SCHED_TABLE
 /* The byte offset, in the rows of input i of node n, of the first column n
  * reads (a tile's window: bg_in_w; 0 without a tile). */
-static uint32_t input_step(const bloom_graph_t *g, const bg_node_t *n, int i)
+static uint32_t input_step(const bloom_t *g, const bg_node_t *n, int i)
 {
 #if !BLOOM_SMALL
-    if (g->tiled) {
+    if (g->row.tiled) {
         const int from = n->in[i].node;
-        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+        const bg_node_t *src = from >= 0 ? &g->gr.node[from] : NULL;
         const int off = bg_base(n->in[i].map, n->xa) - (src ? src->xa : 0);
-        const size_t bytes =
-            src ? (size_t)src->ch * sizeof(uint32_t) : (size_t)(from == BG_SRC ? g->src_bpp : bg_aux_bpp(g));
+        const size_t bytes = src ? (size_t)src->ch * sizeof(uint32_t)
+                                 : (size_t)(from == BG_SRC ? g->row.src_bpp : bg_aux_bpp(&g->row));
         return (uint32_t)((size_t)off * bytes);
     }
 #endif
@@ -296,19 +301,19 @@ static uint32_t input_step(const bloom_graph_t *g, const bg_node_t *n, int i)
  * only counted; returns the offset after them); cap: the source ring's
  * slots. A tile's inputs read from a column on: their own view of the
  * slots' pointers, when the slots stay (node rings, copied source rows). */
-static uint64_t lay_out_gathers(bloom_graph_t *g, uint8_t *base, uint64_t off, int cap)
+static uint64_t lay_out_gathers(bloom_t *g, uint8_t *base, uint64_t off, int cap)
 {
     int nin = 0;
-    for (int i = 0; i < g->nnodes; i++)
-        nin += g->node[i].nin;
+    for (int i = 0; i < g->gr.nnodes; i++)
+        nin += g->gr.node[i].nin;
     bg_gather_t *gat = (bg_gather_t *)take(base, &off, (uint64_t)nin * sizeof(bg_gather_t));
-    for (int i = 0; i < g->nnodes; i++) {
-        bg_node_t *n = &g->node[i];
+    for (int i = 0; i < g->gr.nnodes; i++) {
+        bg_node_t *n = &g->gr.node[i];
         if (base)
             n->gat = gat;
         for (int j = 0; j < n->nin; j++) {
             const bg_input_t *in = &n->in[j];
-            const bg_node_t *f = in->node >= 0 ? &g->node[in->node] : NULL;
+            const bg_node_t *f = in->node >= 0 ? &g->gr.node[in->node] : NULL;
             const int c = f ? imax(f->need, 1) : cap;
             const uint32_t step = input_step(g, n, j);
             const void **view = NULL;
@@ -320,7 +325,7 @@ static uint64_t lay_out_gathers(bloom_graph_t *g, uint8_t *base, uint64_t off, i
             ga->ring = f ? f->rowp : !BLOOM_USE_GRAPH || in->node == BG_SRC ? g->src_ptr : g->aux_ptr;
             ga->tags = f ? f->tag : g->src_tag;
             ga->cap = (uint16_t)c;
-            ga->h = (uint16_t)(f ? f->h : g->h[0]);
+            ga->h = (uint16_t)(f ? f->h : g->gr.h[0]);
             ga->add = view ? 0u : step; /* (the cursor: bloom_begin) */
             for (int s = 0; view && s < 2 * c; s++)
                 view[s] = (const uint8_t *)ga->ring[s] + step;
@@ -335,16 +340,15 @@ static uint64_t lay_out_gathers(bloom_graph_t *g, uint8_t *base, uint64_t off, i
 /* Lay the rings out after the engine struct; with base NULL only count.
  * Counted in 64 bits: on a 32-bit target a huge configuration must be
  * refused (BLOOM_E_TOO_BIG), not wrap around. */
-uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
+uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
 {
-    uint64_t off =
-        bloom_align8(sizeof(bloom_graph_t)) + bloom_align8(sizeof(bg_node_t) * (uint64_t)g->nnodes);
+    uint64_t off = bloom_align8(sizeof(bloom_t)) + bloom_align8(sizeof(bg_node_t) * (uint64_t)g->gr.nnodes);
     const int cap = imax(g->need_src, 1);
     const uint64_t ucap = (uint64_t)cap;
     if (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE) {
         const uint64_t before = off;
         g->src_copy = (uint8_t *)take(base, &off, ucap * g->src_row_bytes);
-        if (bg_aux_bpp(g))
+        if (bg_aux_bpp(&g->row))
             g->aux_copy = (uint8_t *)take(base, &off, ucap * g->aux_row_bytes);
         if (per_level)
             per_level[0] += (size_t)(off - before);
@@ -353,29 +357,30 @@ uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level)
     if (BLOOM_SCHED_TABLE ||
         !(g->cfg.flags & BLOOM_FLAG_COPY_SOURCE)) { /* (the size build finds copies by their slot) */
         g->src_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
-        if (bg_aux_bpp(g))
+        if (bg_aux_bpp(&g->row))
             g->aux_ptr = (const void **)take(base, &off, copies * sizeof(const void *));
     }
 #if BLOOM_SCHED_TABLE
     for (int s = 0; base && g->src_copy && s < (int)copies; s++) { /* the copies' slots */
         g->src_ptr[s] = g->src_copy + (size_t)(s % cap) * g->src_row_bytes;
-        if (bg_aux_bpp(g))
+        if (bg_aux_bpp(&g->row))
             g->aux_ptr[s] = g->aux_copy + (size_t)(s % cap) * g->aux_row_bytes;
     }
 #endif
     g->src_tag = (int32_t *)take(base, &off, copies * sizeof(int32_t));
-    if (bg_tiled(g))
-        g->out_row = (uint8_t *)take(base, &off,
-                                     (uint64_t)g->node[g->out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
-    g->scratch = (uint32_t *)take(base, &off, (uint64_t)g->scratch_rows * g->scratch_len * sizeof(uint32_t));
+    if (bg_tiled(&g->row))
+        g->out_row = (uint8_t *)take(
+            base, &off, (uint64_t)g->gr.node[g->gr.out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
+    g->row.scratch = (uint32_t *)take(
+        base, &off, (uint64_t)g->row.par.scratch_rows * g->row.par.scratch_len * sizeof(uint32_t));
 #if BLOOM_SCHED_TABLE
     g->sched = (uint8_t *)take(base, &off, (uint64_t)g->sched_len);
 #endif
     if (base)
         g->src_cap = cap;
-    for (int i = 0; i < g->nnodes; i++) {
-        bg_node_t *n = &g->node[i];
-        if (i == g->out_node)
+    for (int i = 0; i < g->gr.nnodes; i++) {
+        bg_node_t *n = &g->gr.node[i];
+        if (i == g->gr.out_node)
             continue;
         const uint64_t before = off;
         const int c = imax(n->need, 1);
@@ -412,28 +417,28 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
     bloom_status_t st = bloom_validate(cfg);
     if (st != BLOOM_OK)
         return st;
-    bloom_graph_t tmp;
+    bloom_t tmp;
     bg_node_t nodes[BG_MAX_NODES];
     st = bloom_plan(&tmp, cfg, nodes, BG_MAX_NODES);
     if (st != BLOOM_OK || !info)
         return st;
     memset(info, 0, sizeof *info);
-    info->levels = tmp.L;
-    for (int k = 0; k <= tmp.L; k++) {
-        info->level_w[k] = tmp.w[k];
-        info->level_h[k] = tmp.h[k];
+    info->levels = tmp.gr.L;
+    for (int k = 0; k <= tmp.gr.L; k++) {
+        info->level_w[k] = tmp.gr.w[k];
+        info->level_h[k] = tmp.gr.h[k];
     }
     info->latency_rows = tmp.latency;
     info->source_rows = imax(tmp.need_src, 1);
-    info->threshold_q = tmp.knee.t;
-    info->knee_q = tmp.knee.k;
-    info->intensity_q = tmp.out.intensity;
+    info->threshold_q = tmp.row.par.knee.t;
+    info->knee_q = tmp.row.par.knee.k;
+    info->intensity_q = tmp.row.par.out.intensity;
 #if !BLOOM_SMALL /* (else no tiles: the whole frame, from 0, 0) */
-    info->src_x = tmp.win_x;
-    info->src_y = tmp.win_y;
+    info->src_x = tmp.row.win_x;
+    info->src_y = tmp.row.win_y;
 #endif
-    info->src_w = tmp.w[0];
-    info->src_h = tmp.h[0];
+    info->src_w = tmp.gr.w[0];
+    info->src_h = tmp.gr.h[0];
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);
     if (bytes > SIZE_MAX)
         return BLOOM_E_TOO_BIG;
@@ -457,13 +462,13 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
     bloom_status_t st = bloom_validate(cfg);
     if (st != BLOOM_OK)
         return st;
-    const size_t head = (size_t)bloom_align8(sizeof(bloom_graph_t));
+    const size_t head = (size_t)bloom_align8(sizeof(bloom_t));
     if (ws_bytes < head + sizeof(bg_node_t))
         return BLOOM_E_WORKSPACE;
     /* Plan in place (no engine-sized stack frame), the nodes right after
      * the struct; a buffer found too small afterwards is refused, its first
      * bytes used as scratch. */
-    bloom_graph_t *g = (bloom_graph_t *)ws;
+    bloom_t *g = (bloom_t *)ws;
     const size_t room = (ws_bytes - head) / sizeof(bg_node_t);
     st = bloom_plan(g, cfg, (bg_node_t *)(void *)((uint8_t *)ws + head),
                     room < BG_MAX_NODES ? (int)room : BG_MAX_NODES);
@@ -506,8 +511,8 @@ bloom_status_t bloom_begin(bloom_t *b)
     for (int i = 0; i < BG_RING_COPIES * b->src_cap; i++)
         b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
     /* node slots keep their zero bit: a slot that holds zeros still does */
-    for (int i = 0; i < b->nnodes; i++) {
-        bg_node_t *n = &b->node[i];
+    for (int i = 0; i < b->gr.nnodes; i++) {
+        bg_node_t *n = &b->gr.node[i];
         n->next = 0;
 #if BLOOM_SCHED_TABLE
         n->put = 0;

@@ -9,16 +9,86 @@
 #include "bloom_graph.h"
 #include "bloom_presets.h"
 
-/* Plan g from cfg (checked): build the preset's graph into `nodes` (room
+/* How the scheduler gathers one input's rows (engine/; bloom_carve lays it
+ * out, one per input of every node, in the workspace): the ring read, its
+ * slots' row pointers and tags (twice over: see bg_node_t; a tile's input
+ * read from a column on gets its own view of the pointers, offset, when
+ * the slots stay), its slots and height; `add`, bytes still to add per row
+ * (that offset, for the caller's own source rows); and a cursor: the first
+ * row read by the last row made and its slot (rows only move forward, so
+ * no division per row). */
+typedef struct bg_gather {
+    const void *const *ring;
+    const int32_t *tags;
+    uint16_t cap, h;
+    uint16_t row, slot;
+    uint32_t add;
+} bg_gather_t;
+
+/* Each ring slot's tag (and source row pointer) is kept this many times:
+ * twice with the static schedule's gathers (bg_node_t), once without. */
+#define BG_RING_COPIES (BLOOM_SCHED_TABLE ? 2 : 1)
+#define BG_S_FREE 0xFE
+#define BG_S_PUSH 0xFF
+
+/* The engine (the public bloom_t): the configuration, the preset's graph
+ * and the row context its row functions see, the rings, the tile and the
+ * progress of the frame. It lives at the start of the caller's workspace
+ * (bloom_init), or on the stack while bloom_query plans. */
+struct bloom {
+    bloom_config_t cfg;
+    bg_graph_t gr; /* the preset's graph: levels, nodes, the output node */
+    bg_ctx_t row;  /* what row functions see (gr's nodes, the kernels, parameters) */
+    /* The window of the frame the graph works on (bloom_plan): the source
+     * rectangle from column row.win_x and row row.win_y of the frame,
+     * gr.w[0] x gr.h[0]. With a tile (row.tiled) the output is the
+     * window's columns tile_x0 .. tile_x1 - 1 and rows tile_y0 .. tile_y1 - 1
+     * (the tile): the output node writes out_row, the tile's part is
+     * copied out. */
+    int tile_x0, tile_x1, tile_y0, tile_y1;
+    uint8_t *out_row;
+    int out_rows; /* output rows given to the caller this frame */
+    /* source and aux rings: one slot per pushed row, the same for both;
+     * pointers and tags twice over as a node's (rowp, tag), the pointers
+     * the caller's rows or the copies' (BLOOM_FLAG_COPY_SOURCE) */
+    const void **src_ptr, **aux_ptr;
+    uint8_t *src_copy, *aux_copy;
+    int32_t *src_tag;
+    int src_cap;
+    size_t src_row_bytes, aux_row_bytes;
+    const uint8_t *aux_frame; /* bloom_set_aux */
+    ptrdiff_t aux_stride;
+    /* the nodes that read the source or aux rings (bloom_plan, builds with
+     * presets), for the push's check of the oldest source row still needed */
+    int8_t src_reader[BG_MAX_NODES];
+    int nsrc_readers;
+    /* progress */
+    int src_n;
+    int src_put; /* the source ring's slot for row src_n (src_n % src_cap) */
+    bool failed, dry;
+    int need_src, latency;
+    /* The static schedule (BLOOM_SCHED_TABLE; engine/bloom_sched.c): the
+     * dry run's firings in order, one byte each: a node index (make its
+     * next row; the output node: the next output row is due), BG_S_PUSH
+     * (the next source row must have been pushed) or BG_S_FREE (one more
+     * source row is read by no firing to come). sched_len bytes at sched
+     * (in the workspace; NULL while the dry run only counts them). */
+    uint8_t *sched;
+    int sched_len, sched_at;
+    int src_free; /* source rows no firing to come reads: push r needs r - src_cap < src_free */
+    int src_seen; /* BG_S_PUSH bytes the walk has passed */
+};
+
+/* Plan b from cfg (checked): build the preset's graph into `nodes` (room
  * for cap), dry run. BLOOM_E_WORKSPACE if the graph needs more nodes. */
-bloom_status_t bloom_plan(bloom_graph_t *g, const bloom_config_t *cfg, bg_node_t *nodes, int cap);
+bloom_status_t bloom_plan(bloom_t *b, const bloom_config_t *cfg, bg_node_t *nodes, int cap);
 /* Workspace bytes of the engine: the struct, its nodes, the rings; with
  * base NULL (the engine at base otherwise) only count.
  * per_level[k] (if not NULL, zeroed) gets the ring bytes of level k. */
-uint64_t bloom_carve(bloom_graph_t *g, uint8_t *base, size_t *per_level);
+uint64_t bloom_carve(bloom_t *b, uint8_t *base, size_t *per_level);
 /* The dry run: ring sizes, source rows, latency. */
-void bloom_dry_frame(bloom_graph_t *g);
-bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row);
-bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row);
+void bloom_dry_frame(bloom_t *b);
+bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row);
+bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
 
 #endif

@@ -25,22 +25,22 @@ int bloom_rows_out(const bloom_t *b)
  * tile's), and the frame rows the first of each is. */
 static int rows_total(const bloom_t *b)
 {
-    return b->h[0];
+    return b->gr.h[0];
 }
 static int out_total(const bloom_t *b)
 {
-    return bg_tiled(b) ? b->cfg.tile_h : b->h[0];
+    return bg_tiled(&b->row) ? b->cfg.tile_h : b->gr.h[0];
 }
 static int out_row0(const bloom_t *b)
 {
-    return bg_tiled(b) ? b->cfg.tile_y : 0;
+    return bg_tiled(&b->row) ? b->cfg.tile_y : 0;
 }
 
 bloom_status_t bloom_set_aux(bloom_t *b, const void *aux, ptrdiff_t aux_stride)
 {
     if (!b || !aux)
         return BLOOM_E_NULL;
-    if (!bg_aux_bpp(b))
+    if (!bg_aux_bpp(&b->row))
         return BLOOM_E_AUX;
     b->aux_frame = (const uint8_t *)aux;
     b->aux_stride = aux_stride;
@@ -100,12 +100,12 @@ bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
     if (!b || !dst_row)
         return BLOOM_E_NULL;
     /* a tile writes its columns of the row, and never in place */
-    const bool same = b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(b);
+    const bool same = b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(&b->row);
     const size_t obpp = (size_t)bloom_format_bpp(b->cfg.out_fmt);
-    const size_t out_bytes = (size_t)(bg_tiled(b) ? b->cfg.tile_w : b->cfg.width) * obpp;
-    const uint8_t *d = (const uint8_t *)dst_row + (bg_tiled(b) ? (size_t)b->cfg.tile_x * obpp : 0u);
+    const size_t out_bytes = (size_t)(bg_tiled(&b->row) ? b->cfg.tile_w : b->cfg.width) * obpp;
+    const uint8_t *d = (const uint8_t *)dst_row + (bg_tiled(&b->row) ? (size_t)b->cfg.tile_x * obpp : 0u);
     if (!b->src_copy && dst_overlaps(b->src_ptr, b->src_tag, b->src_cap, b->src_row_bytes, out_bytes, same,
-                                     b->node[b->out_node].next, d))
+                                     b->gr.node[b->gr.out_node].next, d))
         return BLOOM_E_ALIAS;
     return bloom_sched_pull(b, dst_row);
 }
@@ -129,7 +129,7 @@ static void span(const uint8_t *p, ptrdiff_t stride, int r0, int r1, uintptr_t *
 static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, const uint8_t *d, ptrdiff_t ds,
                            int r0, int r1)
 {
-    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(b)) || r1 <= r0)
+    if ((s == d && ss == ds && b->cfg.in_fmt == b->cfg.out_fmt && !bg_tiled(&b->row)) || r1 <= r0)
         return false;
 #if BLOOM_SMALL /* the size build: the same buffer in another format or stride only */
     (void)ds;
@@ -143,8 +143,8 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
      * source by the latency), up to the last row pushed. With a tile,
      * conservatively, every row of the tile. */
     const int held = b->src_copy ? r0 : imax(r0 - b->src_cap, 0);
-    span(s, ss, bg_win_y(b) + held, bg_win_y(b) + r1, &slo, &shi);
-    if (bg_tiled(b))
+    span(s, ss, bg_win_y(&b->row) + held, bg_win_y(&b->row) + r1, &slo, &shi);
+    if (bg_tiled(&b->row))
         span(d, ds, b->cfg.tile_y, b->cfg.tile_y + b->cfg.tile_h, &dlo, &dhi);
     else
         span(d, ds, imin(bloom_rows_out(b), r1 - 1), r1, &dlo, &dhi);
@@ -167,7 +167,7 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         return BLOOM_E_ALIAS;
     const uint8_t *aux = NULL;
     ptrdiff_t aux_stride = 0;
-    if (bg_aux_bpp(b)) {
+    if (bg_aux_bpp(&b->row)) {
         aux = b->aux_frame;
         aux_stride = b->aux_stride;
         if (!aux)
@@ -184,7 +184,7 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         const int r = bloom_rows_in(b);
         if (r == end)
             return BLOOM_OK;
-        const ptrdiff_t fr = (ptrdiff_t)bg_win_y(b) + r; /* the frame row */
+        const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
         st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */

@@ -29,23 +29,23 @@
 
 /* ---- rows -------------------------------------------------------------- */
 
-static int in_height(const bloom_graph_t *g, int from)
+static int in_height(const bloom_t *g, int from)
 {
-    return from < 0 ? g->h[0] : g->node[from].h;
+    return from < 0 ? g->gr.h[0] : g->gr.node[from].h;
 }
 
 /* The oldest row of `from` that a node still reads; FAR if none. The
  * source and aux rings share slots: a reader of either keeps both. */
-static int oldest_of(const bloom_graph_t *g, int from)
+static int oldest_of(const bloom_t *g, int from)
 {
     int o = FAR;
     const int hin = in_height(g, from);
     /* a node's readers come after it; the source's are listed (builds
      * with presets: their graphs are big) */
     const bool list = BLOOM_USE_GRAPH && from < 0;
-    const int nc = list ? g->nsrc_readers : g->nnodes;
+    const int nc = list ? g->nsrc_readers : g->gr.nnodes;
     for (int ci = (from < 0 ? 0 : from + 1); ci < nc; ci++) {
-        const bg_node_t *n = &g->node[list ? g->src_reader[ci] : ci];
+        const bg_node_t *n = &g->gr.node[list ? g->src_reader[ci] : ci];
         if (n->next >= n->h)
             continue;
         for (int i = 0; i < n->nin; i++)
@@ -57,7 +57,7 @@ static int oldest_of(const bloom_graph_t *g, int from)
 
 #if !BLOOM_SCHED_TABLE
 /* The source (or aux) row held in slot `slot` of the source ring. */
-static const void *src_slot(const bloom_graph_t *g, int from, int slot)
+static const void *src_slot(const bloom_t *g, int from, int slot)
 {
     if (!BLOOM_USE_GRAPH || from == BG_SRC) /* (only presets read an aux plane) */
         return g->src_copy ? g->src_copy + (size_t)slot * g->src_row_bytes : g->src_ptr[slot];
@@ -66,16 +66,16 @@ static const void *src_slot(const bloom_graph_t *g, int from, int slot)
 #endif
 
 /* The last row of input i that row r of node n reads. */
-static int input_top(const bloom_graph_t *g, const bg_node_t *n, int i, int r)
+static int input_top(const bloom_t *g, const bg_node_t *n, int i, int r)
 {
     const bg_input_t *in = &n->in[i];
     return clampi(bg_base(in->map, r) + in->hi, 0, in_height(g, in->node) - 1);
 }
 
-static bool ensure(bloom_graph_t *g, int ni, int j);
+static bool ensure(bloom_t *g, int ni, int j);
 
 /* Make sure every input row of node row r exists. */
-static bool ensure_inputs(bloom_graph_t *g, const bg_node_t *n, int r)
+static bool ensure_inputs(bloom_t *g, const bg_node_t *n, int r)
 {
     for (int i = 0; i < n->nin; i++)
         if (!ensure(g, n->in[i].node, input_top(g, n, i, r)))
@@ -90,12 +90,12 @@ static bool ensure_inputs(bloom_graph_t *g, const bg_node_t *n, int r)
  * the recursion of ensure() keeps small frames (the Cortex-M stack figure). */
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
-static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *dst)
+static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN] = {NULL, NULL, NULL};
     int used = 0;
-    bool all_zero = BLOOM_USE_SKIP && g->skip && n->z;
+    bool all_zero = BLOOM_USE_SKIP && g->row.skip && n->z;
 #if BLOOM_SCHED_TABLE
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
@@ -137,7 +137,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
         }
         if (!BLOOM_USE_SKIP)
             continue;
-        g->zin[i] = zm;
+        g->row.zin[i] = zm;
         if (ip->node != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
@@ -145,7 +145,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
         const int from = ip->node, hin = in_height(g, from), b = bg_base(ip->map, r);
-        const bg_node_t *src = from >= 0 ? &g->node[from] : NULL;
+        const bg_node_t *src = from >= 0 ? &g->gr.node[from] : NULL;
         const int cap = src ? src->cap : g->src_cap;
         const int32_t *tags = src ? src->tag : g->src_tag;
         /* the rows are consecutive (repeated at the edges): one division for
@@ -171,7 +171,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
         }
         if (!BLOOM_USE_SKIP)
             continue;
-        g->zin[i] = zm;
+        g->row.zin[i] = zm;
         if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
@@ -180,7 +180,7 @@ static BLOOM_NOINLINE int run_row(bloom_graph_t *g, bg_node_t *n, int r, void *d
         return ROW_SKIPPED;
     if (BLOOM_CHECK_RINGS && g->failed)
         return ROW_MADE; /* an input row was overwritten: nothing is made of it */
-    return !n->fn(g, n, r, in, dst) && BLOOM_USE_SKIP && g->skip ? ROW_ZEROS : ROW_MADE;
+    return !n->fn(&g->row, n, r, in, dst) && BLOOM_USE_SKIP && g->row.skip ? ROW_ZEROS : ROW_MADE;
 }
 
 /* Tag (or row pointer) v into slot s of a ring of cap slots: both copies
@@ -201,7 +201,7 @@ static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
 /* Node row r into its ring slot, tagged. A zero row leaves zeros in the
  * slot (a slot tagged zero holds zeros: if it did already, nothing is
  * written). */
-static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
+static void make_row(bloom_t *g, bg_node_t *n, int r)
 {
     const size_t len = (size_t)n->w * n->ch;
 #if BLOOM_SCHED_TABLE
@@ -224,7 +224,7 @@ static void make_row(bloom_graph_t *g, bg_node_t *n, int r)
 
 /* One byte of the static schedule: written when the table has its place
  * (bloom_init's second dry run), counted always (its size). */
-static void emit(bloom_graph_t *g, int byte)
+static void emit(bloom_t *g, int byte)
 {
 #if BLOOM_SCHED_TABLE
     if (g->sched)
@@ -238,10 +238,10 @@ static void emit(bloom_graph_t *g, int byte)
 
 /* Dry run: the source rows that no firing to come reads, one BG_S_FREE
  * byte each (the oldest row still read only moves forward). */
-static void emit_free(bloom_graph_t *g)
+static void emit_free(bloom_t *g)
 {
 #if BLOOM_SCHED_TABLE
-    const int o = imin(oldest_of(g, BG_SRC), g->h[0]);
+    const int o = imin(oldest_of(g, BG_SRC), g->gr.h[0]);
     for (; g->src_free < o; g->src_free++)
         emit(g, BG_S_FREE);
 #else
@@ -252,9 +252,9 @@ static void emit_free(bloom_graph_t *g)
 /* Node ni's next row, its inputs known to exist: sized and written down
  * (dry run) or made. A row overwritten while still needed is caught where
  * it is read (run_row compares the tags), so the write needs no check. */
-static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
+static BLOOM_NOINLINE void next_row(bloom_t *g, int ni)
 {
-    bg_node_t *n = &g->node[ni];
+    bg_node_t *n = &g->gr.node[ni];
     const int r = n->next;
     if (g->dry) {
         n->need = (uint16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
@@ -270,15 +270,15 @@ static BLOOM_NOINLINE void next_row(bloom_graph_t *g, int ni)
 /* Rows of node ni up to j (the source: pushed). The recursion runs down the
  * chain of nodes, one small frame per node (g, n, j, i live across the
  * call): the Cortex-M stack figure. */
-static bool ensure(bloom_graph_t *g, int ni, int j)
+static bool ensure(bloom_t *g, int ni, int j)
 {
     if (ni < 0)
         return j < g->src_n;
-    const bg_node_t *n = &g->node[ni];
+    const bg_node_t *n = &g->gr.node[ni];
     while (n->next <= j) {
         for (int i = 0; i < n->nin; i++) {
             const int from = n->in[i].node, top = input_top(g, n, i, n->next);
-            if (from < 0 ? top >= g->src_n : g->node[from].next <= top && !ensure(g, from, top))
+            if (from < 0 ? top >= g->src_n : g->gr.node[from].next <= top && !ensure(g, from, top))
                 return false; /* (a row already made needs no call) */
         }
         next_row(g, ni);
@@ -288,27 +288,27 @@ static bool ensure(bloom_graph_t *g, int ni, int j)
 
 /* ---- the dry run and the frame ---------------------------------------- */
 
-void bloom_dry_frame(bloom_graph_t *g)
+void bloom_dry_frame(bloom_t *g)
 {
-    bg_node_t *o = &g->node[g->out_node];
+    bg_node_t *o = &g->gr.node[g->gr.out_node];
 #if BLOOM_SCHED_TABLE /* (bloom_init runs it a second time, to write the table) */
-    for (int i = 0; i < g->nnodes; i++)
-        g->node[i].next = 0;
+    for (int i = 0; i < g->gr.nnodes; i++)
+        g->gr.node[i].next = 0;
     g->src_n = 0;
     g->src_free = 0;
     g->sched_len = 0;
 #endif
     g->dry = true;
     emit_free(g);
-    for (int y = 0; y < g->h[0]; y++) {
+    for (int y = 0; y < g->gr.h[0]; y++) {
         g->need_src = imax(g->need_src, y - imin(oldest_of(g, BG_SRC), y) + 1);
         emit(g, BG_S_PUSH);
         g->src_n = y + 1;
-        while (o->next < g->h[0]) {
+        while (o->next < g->gr.h[0]) {
             if (!ensure_inputs(g, o, o->next))
                 break;
             g->latency = imax(g->latency, y - o->next);
-            emit(g, g->out_node);
+            emit(g, g->gr.out_node);
             o->next++;
             emit_free(g);
         }
@@ -317,18 +317,18 @@ void bloom_dry_frame(bloom_graph_t *g)
 }
 
 #if BLOOM_SCHED_TABLE
-static bool walk_to_output(bloom_graph_t *g);
+static bool walk_to_output(bloom_t *g);
 #endif
 
-bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const void *aux_row)
+bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row)
 {
-    if (bg_aux_bpp(g) && !aux_row)
+    if (bg_aux_bpp(&g->row) && !aux_row)
         return BLOOM_E_AUX;
-    if (!bg_aux_bpp(g) && aux_row) /* a plane the preset does not read */
+    if (!bg_aux_bpp(&g->row) && aux_row) /* a plane the preset does not read */
         return BLOOM_E_AUX;
-    if (g->src_n >= g->h[0])
+    if (g->src_n >= g->gr.h[0])
         return BLOOM_E_STATE;
-    if (bg_tiled(g) && g->node[g->out_node].next >= g->tile_y1) {
+    if (bg_tiled(&g->row) && g->gr.node[g->gr.out_node].next >= g->tile_y1) {
         g->src_n++; /* the tile is out: the rest of the window's rows are not needed */
         return BLOOM_OK;
     }
@@ -351,21 +351,22 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
 #endif
         return BLOOM_E_BUSY;
     /* the window's columns of the frame row (win_x is 0 without a tile) */
-    src_row = (const uint8_t *)src_row + (size_t)bg_win_x(g) * (size_t)g->src_bpp;
-    if (bg_aux_bpp(g))
-        aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(g) * (size_t)bg_aux_bpp(g);
+    src_row = (const uint8_t *)src_row + (size_t)bg_win_x(&g->row) * (size_t)g->row.src_bpp;
+    if (bg_aux_bpp(&g->row))
+        aux_row = (const uint8_t *)aux_row + (size_t)bg_win_x(&g->row) * (size_t)bg_aux_bpp(&g->row);
     if (g->src_copy) { /* (the slots' pointers are the copies', set once) */
         memcpy(g->src_copy + (size_t)slot * g->src_row_bytes, src_row, g->src_row_bytes);
-        if (bg_aux_bpp(g))
+        if (bg_aux_bpp(&g->row))
             memcpy(g->aux_copy + (size_t)slot * g->aux_row_bytes, aux_row, g->aux_row_bytes);
     } else {
         put_ptr(g->src_ptr, slot, g->src_cap, src_row);
-        if (bg_aux_bpp(g))
+        if (bg_aux_bpp(&g->row))
             put_ptr(g->aux_ptr, slot, g->src_cap, aux_row);
     }
 #if BLOOM_USE_SKIP
     const bool dark =
-        g->dark_src && BLOOM_KERN_DARK(&g->kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->w[0], &g->dark);
+        g->row.dark_src &&
+        BLOOM_KERN_DARK(&g->row.kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark);
     put_tag(g->src_tag, slot, g->src_cap, r | (dark ? ZBIT : 0));
 #else
     put_tag(g->src_tag, slot, g->src_cap, r);
@@ -381,9 +382,9 @@ bloom_status_t bloom_sched_push(bloom_graph_t *g, const void *src_row, const voi
 /* Walk the schedule up to the output's next row: true when it is due (its
  * inputs made), false when the walk waits for a push. The tile's halo rows
  * above it are passed (their inputs are made, they are not). */
-static bool walk_to_output(bloom_graph_t *g)
+static bool walk_to_output(bloom_t *g)
 {
-    const bg_node_t *o = &g->node[g->out_node];
+    const bg_node_t *o = &g->gr.node[g->gr.out_node];
     const uint8_t *t = g->sched;
     int at = g->sched_at;
     for (; at < g->sched_len; at++) {
@@ -394,15 +395,15 @@ static bool walk_to_output(bloom_graph_t *g)
             if (g->src_seen == g->src_n)
                 break;
             g->src_seen++;
-        } else if (e != g->out_node) {
-            bg_node_t *n = &g->node[e];
+        } else if (e != g->gr.out_node) {
+            bg_node_t *n = &g->gr.node[e];
             make_row(g, n, n->next);
             n->next++;
-        } else if (!bg_tiled(g) || o->next >= g->tile_y0) {
+        } else if (!bg_tiled(&g->row) || o->next >= g->tile_y0) {
             g->sched_at = at;
             return true;
         } else {
-            g->node[g->out_node].next++;
+            g->gr.node[g->gr.out_node].next++;
         }
     }
     g->sched_at = at;
@@ -410,11 +411,11 @@ static bool walk_to_output(bloom_graph_t *g)
 }
 #endif
 
-bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
+bloom_status_t bloom_sched_pull(bloom_t *g, void *dst_row)
 {
-    bg_node_t *o = &g->node[g->out_node];
+    bg_node_t *o = &g->gr.node[g->gr.out_node];
 #if BLOOM_SCHED_TABLE
-    if (o->next >= g->h[0] || (bg_tiled(g) && o->next >= g->tile_y1))
+    if (o->next >= g->gr.h[0] || (bg_tiled(&g->row) && o->next >= g->tile_y1))
         return BLOOM_DONE;
     if (!walk_to_output(g) || g->failed)
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
@@ -422,17 +423,17 @@ bloom_status_t bloom_sched_pull(bloom_graph_t *g, void *dst_row)
     const int y = o->next;
 #else
 #if !BLOOM_SMALL
-    if (g->tiled) /* halo rows above the tile: their inputs are made, they are not */
+    if (g->row.tiled) /* halo rows above the tile: their inputs are made, they are not */
         while (o->next < g->tile_y0 && o->next < g->src_n && ensure_inputs(g, o, o->next))
             o->next++;
 #endif
     const int y = o->next;
-    if (y >= g->h[0] || (bg_tiled(g) && y >= g->tile_y1))
+    if (y >= g->gr.h[0] || (bg_tiled(&g->row) && y >= g->tile_y1))
         return BLOOM_DONE;
     if (y >= g->src_n || !ensure_inputs(g, o, y))
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
 #endif
-    if (!bg_tiled(g)) {
+    if (!bg_tiled(&g->row)) {
         run_row(g, o, y, dst_row);
     } else { /* the tile's columns of the window's row */
         const size_t bpp = (size_t)bloom_bpp(g->cfg.out_fmt);

@@ -6,7 +6,7 @@
 
 /* ---- construction ------------------------------------------------------ */
 
-void bg_levels(bloom_graph_t *g, int n)
+void bg_levels(bg_graph_t *g, int n)
 {
     int fw = g->frame_w, fh = g->frame_h;
     g->L = 1;
@@ -21,7 +21,7 @@ void bg_levels(bloom_graph_t *g, int n)
     }
 }
 
-int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
+int bg_node(bg_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
 {
     if (g->nnodes >= g->node_cap) {
         g->failed = true;
@@ -37,7 +37,7 @@ int bg_node(bloom_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
     return g->nnodes++;
 }
 
-void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
+void bg_input(bg_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
 {
     if (n < 0 || g->node[n].nin >= BG_MAX_IN) { /* no node (out of room), or too many inputs */
         g->failed = true;
@@ -63,18 +63,19 @@ void bg_input(bloom_graph_t *g, int n, int from, bg_map_t map, int lo, int hi)
 
 /* ---- helpers for row functions ---------------------------------------- */
 
-void bg_decode_row(const bloom_graph_t *g, const uint8_t *src, uint32_t *dst)
+void bg_decode_row(const bg_ctx_t *ctx, const uint8_t *src, uint32_t *dst)
 {
-    const int bpp = g->src_bpp;
-    for (int x = 0; x < g->w[0]; x++)
-        bloom_pixel_decode(g->out.in_fmt, g->out.linear, src + (size_t)x * (size_t)bpp, dst + 3 * x);
+    const int bpp = ctx->src_bpp;
+    for (int x = 0; x < ctx->w0; x++)
+        bloom_pixel_decode(ctx->par.out.in_fmt, ctx->par.out.linear, src + (size_t)x * (size_t)bpp,
+                           dst + 3 * x);
 }
 
 #if BLOOM_USE_GRAPH
-uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x)
+uint32_t bg_aux_q16(const bg_ctx_t *ctx, const void *row, int x)
 {
-    if (g->cfg.aux_fmt == BLOOM_AUX_U16) {
-        uint16_t c16; /* rows need not be 2-byte aligned */
+    if (ctx->aux_bpp == 2) { /* BLOOM_AUX_U16 */
+        uint16_t c16;        /* rows need not be 2-byte aligned */
         memcpy(&c16, (const uint8_t *)row + 2 * x, 2);
         const uint32_t c = c16;
         return c + ((c + 32768u) >> 16); /* c * 65536 / 65535, rounded: exact at 0 and 65535 */
@@ -86,9 +87,9 @@ uint32_t bg_aux_q16(const bloom_graph_t *g, const void *row, int x)
 /* The same code as a Q24 fraction of the plane's top code, rounded (the
  * attenuation factor: at Q16 a constant depth gave every pixel the same
  * rounding, up to 1.2e-5 of a bright sample). */
-uint32_t bg_aux_q24(const bloom_graph_t *g, const void *row, int x)
+uint32_t bg_aux_q24(const bg_ctx_t *ctx, const void *row, int x)
 {
-    if (g->cfg.aux_fmt == BLOOM_AUX_U16) {
+    if (ctx->aux_bpp == 2) { /* BLOOM_AUX_U16 */
         uint16_t c16;
         memcpy(&c16, (const uint8_t *)row + 2 * x, 2);
         const uint32_t c = c16; /* c 2^24 / 65535 = 256 c + 256 c / 65535 */

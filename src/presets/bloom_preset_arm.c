@@ -135,23 +135,24 @@ static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y,
 /* D_1 pixels xa .. xb-1 (in[] as fn_d1): P = Y * mask of source columns
  * 2xa-1 .. 2xb-2+2 (clamped), their column sums, dual down, knee. Returns
  * the OR of the pixels made. */
-static uint32_t d1_range(const bloom_graph_t *g, const bg_node_t *n, const void *const *const in[BG_MAX_IN],
+static uint32_t d1_range(const bg_ctx_t *ctx, const bg_node_t *n, const void *const *const in[BG_MAX_IN],
                          uint32_t *dst, int xa, int xb)
 {
-    const int w0 = bg_in_w(g, n, 0), ca = imax(2 * xa - 1, 0), cb = imin(2 * xb, w0 - 1), nc = cb - ca + 1;
-    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1), *y = bg_scratch(g, 2);
-    const bool u16 = g->aux_bpp == 2;
-    const size_t bpp = (size_t)g->src_bpp;
-    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
-    const bloom_format_t fmt = g->out.in_fmt;
-    if (!g->aux_bpp && !g->out.linear && (fmt == BLOOM_FMT_RGB888 || fmt == BLOOM_FMT_XRGB8888)) {
+    const int w0 = bg_in_w(ctx, n, 0), ca = imax(2 * xa - 1, 0), cb = imin(2 * xb, w0 - 1), nc = cb - ca + 1;
+    uint32_t *c4 = bg_scratch(ctx, 0), *c2 = bg_scratch(ctx, 1), *y = bg_scratch(ctx, 2);
+    const bool u16 = ctx->aux_bpp == 2;
+    const size_t bpp = (size_t)ctx->src_bpp;
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
+    const bloom_format_t fmt = ctx->par.out.in_fmt;
+    if (!ctx->aux_bpp && !ctx->par.out.linear && (fmt == BLOOM_FMT_RGB888 || fmt == BLOOM_FMT_XRGB8888)) {
         for (int i = 0; i < 4; i++) /* 8-bit sRGB, no mask: Y summed into the column sums */
             K->lum8((const uint8_t *)in[0][i] + (size_t)ca * bpp, c4 + 1 + ca, c2 + 1 + ca, nc,
                     fmt == BLOOM_FMT_XRGB8888, i);
     } else {
         for (int i = 0; i < 4; i++) {
-            lum_row(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][i] + (size_t)ca * bpp, y + ca, nc);
-            if (g->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
+            lum_row(ctx->par.out.in_fmt, ctx->par.out.linear, (const uint8_t *)in[0][i] + (size_t)ca * bpp,
+                    y + ca, nc);
+            if (ctx->aux_bpp) { /* P = (Y * mask + 2^23) >> 24, 64-bit: 2^28 * 2^24 */
                 const uint8_t *m = (const uint8_t *)in[1][i];
                 for (int x = ca; x <= cb; x++) {
                     const uint32_t q = aux_q24(m, x, u16);
@@ -177,7 +178,7 @@ static uint32_t d1_range(const bloom_graph_t *g, const bg_node_t *n, const void 
     if (cb == w0 - 1)
         pad(c4, w0), pad(c2, w0);
     K->down_h(c4 + 2 * xa, c2 + 2 * xa, dst + xa, xb - xa);
-    return knee1(dst + xa, xb - xa, &g->knee);
+    return knee1(dst + xa, xb - xa, &ctx->par.knee);
 }
 
 /* D_1 pixels per block of ARM_DB whose source columns 2x-1 .. 2x+2 (x in
@@ -188,46 +189,46 @@ static uint32_t d1_range(const bloom_graph_t *g, const bg_node_t *n, const void 
  * 2r-1 .. 2r+2. P = Y * mask per source pixel, dual down, knee; blocks of
  * dark source pixels are zeros without being computed. False when the row
  * came out all zero. */
-static bool fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     (void)r;
-    const int dw = n->w, w0 = bg_in_w(g, n, 0);
+    const int dw = n->w, w0 = bg_in_w(ctx, n, 0);
     uint32_t *d = (uint32_t *)dst;
-    if (!g->dark_src)
-        return d1_range(g, n, in, d, 0, dw) != 0;
-    const size_t bpp = (size_t)g->src_bpp;
-    const bloom_dark_fn dark_row = BLOOM_KERN_DARK(&g->kern);
+    if (!ctx->dark_src)
+        return d1_range(ctx, n, in, d, 0, dw) != 0;
+    const size_t bpp = (size_t)ctx->src_bpp;
+    const bloom_dark_fn dark_row = BLOOM_KERN_DARK(&ctx->kern);
     uint32_t any = 0;
     int run = 0; /* first pixel not written yet */
     for (int x = 0; x < dw; x += ARM_DB) {
         const int xe = imin(x + ARM_DB, dw), ca = imax(2 * x - 1, 0), cb = imin(2 * xe, w0 - 1);
         bool dark = true;
         for (int i = 0; i < 4 && dark; i++) /* a row tagged dark needs no test */
-            dark =
-                bg_in_zero(g, 0, i, i) ||
-                dark_row(g->out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1, &g->dark);
+            dark = bg_in_zero(ctx, 0, i, i) ||
+                   dark_row(ctx->par.out.in_fmt, (const uint8_t *)in[0][i] + (size_t)ca * bpp, cb - ca + 1,
+                            &ctx->dark);
         if (!dark)
             continue; /* computed with its run */
         if (run < x)
-            any |= d1_range(g, n, in, d, run, x);
+            any |= d1_range(ctx, n, in, d, run, x);
         memset(d + x, 0, (size_t)(xe - x) * sizeof *d);
         run = xe;
     }
     if (run < dw)
-        any |= d1_range(g, n, in, d, run, dw);
+        any |= d1_range(ctx, n, in, d, run, dw);
     return any != 0;
 }
 
 /* D_k, k >= 2. Input 0: D_k-1 rows 2r-1 .. 2r+2 (one channel). False when
  * the row came out all zero. */
-static bool fn_down(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_down(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     (void)r;
-    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
-    const int sw = bg_in_w(g, n, 0);
-    uint32_t *c4 = bg_scratch(g, 0), *c2 = bg_scratch(g, 1);
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
+    const int sw = bg_in_w(ctx, n, 0);
+    uint32_t *c4 = bg_scratch(ctx, 0), *c2 = bg_scratch(ctx, 1);
     K->down_v((const uint32_t *)in[0][0], (const uint32_t *)in[0][1], (const uint32_t *)in[0][2],
               (const uint32_t *)in[0][3], c4 + 1, c2 + 1, sw);
     pad(c4, sw);
@@ -271,23 +272,23 @@ static uint32_t up_out(const bloom_arm_kern_t *K, const uint32_t *a, const uint3
 
 /* U_k. Input 0: U_k+1 rows m-1 .. m+1 (BG_UP). False when the row came out
  * all zero. */
-static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_up(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
-    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
-    const int sw = bg_in_w(g, n, 0), np = imin(sw, (n->w + 1) / 2); /* (sw is more in a tile) */
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
+    const int sw = bg_in_w(ctx, n, 0), np = imin(sw, (n->w + 1) / 2); /* (sw is more in a tile) */
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    uint32_t *a = bg_scratch(g, 0), *v = bg_scratch(g, 1);
+    uint32_t *a = bg_scratch(ctx, 0), *v = bg_scratch(ctx, 1);
     up_av(K, u, r & 1, a, v, 0, imin(np, sw - 1), sw);
     return up_out(K, a, v, (uint32_t *)dst, 0, np, n->w, 0) != 0;
 }
 
 /* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
-static void tint_factors(const bloom_graph_t *g, uint32_t f[3])
+static void tint_factors(const bg_ctx_t *ctx, uint32_t f[3])
 {
     for (int c = 0; c < 3; c++)
-        f[c] = (uint32_t)(((uint64_t)g->out.intensity * g->cfg.p.tint[c] + 32768u) >> 16);
+        f[c] = (uint32_t)(((uint64_t)ctx->par.out.intensity * ctx->cfg->p.tint[c] + 32768u) >> 16);
 }
 
 static inline uint32_t sat32(uint64_t v)
@@ -304,41 +305,42 @@ static inline uint32_t sat32(uint64_t v)
  * of one format when they bound every P_c by BLOOM_KEEP8_H0 (B <= max U:
  * arm.md, skipping); so is a row whose U_1 rows are all zero. */
 #define ARM_CHUNK 64
-static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
-    const int w = n->w, sw = bg_in_w(g, n, 1);
+    const int w = n->w, sw = bg_in_w(ctx, n, 1);
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
-    const bool skip = g->skip;
-    if (skip && bg_in_zero(g, 1, 0, 2)) { /* B = 0: the source row (debug view: zeros) */
-        bloom_row_copy_c(src, out, w, &g->out);
+    const bool skip = ctx->skip;
+    if (skip && bg_in_zero(ctx, 1, 0, 2)) { /* B = 0: the source row (debug view: zeros) */
+        bloom_row_copy_c(src, out, w, &ctx->par.out);
         return true;
     }
-    const bloom_arm_kern_t *K = bloom_arm_kern(g->kern.isa);
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
-    uint32_t *a = bg_scratch(g, 0), *av = bg_scratch(g, 1), *b = bg_scratch(g, 2), *v = bg_scratch(g, 3);
-    const size_t ibpp = (size_t)g->src_bpp, obpp = (size_t)bloom_format_bpp(g->out.out_fmt);
+    uint32_t *a = bg_scratch(ctx, 0), *av = bg_scratch(ctx, 1), *b = bg_scratch(ctx, 2),
+             *v = bg_scratch(ctx, 3);
+    const size_t ibpp = (size_t)ctx->src_bpp, obpp = (size_t)bloom_format_bpp(ctx->par.out.out_fmt);
     uint32_t f[3];
-    tint_factors(g, f);
+    tint_factors(ctx, f);
     const uint64_t fmax = f[0] > f[1] ? (f[0] > f[2] ? f[0] : f[2]) : (f[1] > f[2] ? f[1] : f[2]);
-    const bool keep8 = !BLOOM_SMALL && skip && !g->out.debug && !g->out.linear &&
-                       g->out.in_fmt == g->out.out_fmt &&
-                       (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888);
+    const bool keep8 = !BLOOM_SMALL && skip && !ctx->par.out.debug && !ctx->par.out.linear &&
+                       ctx->par.out.in_fmt == ctx->par.out.out_fmt &&
+                       (ctx->par.out.in_fmt == BLOOM_FMT_RGB888 || ctx->par.out.in_fmt == BLOOM_FMT_XRGB8888);
     for (int x0 = 0; x0 < w; x0 += ARM_CHUNK) {
         const int cn = imin(ARM_CHUNK, w - x0), n0 = x0 >> 1, n1 = ((x0 + cn - 1) >> 1) + 1;
         const int c0 = imax(n0 - 1, 0), c1 = imin(n1, sw - 1);
         if (skip) {
             const uint64_t um = K->max3(u[0] + c0, u[1] + c0, u[2] + c0, c1 - c0 + 1);
             if (um == 0 || (keep8 && ((fmax * um + 32768u) >> 16) <= BLOOM_KEEP8_H0)) {
-                bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+                bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &ctx->par.out);
                 continue;
             }
         }
         up_av(K, u, r & 1, a, av, c0, c1, sw);
         if (!up_out(K, a, av, b, n0, n1, w, x0) && skip) {
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &ctx->par.out);
             continue;
         }
 #if !BLOOM_SMALL
@@ -347,10 +349,10 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
             continue;
         }
 #endif
-        if (g->out.debug)
+        if (ctx->par.out.debug)
             memset(v, 0, (size_t)cn * 3u * sizeof *v);
         else
-            bloom_decode_row(g->out.in_fmt, g->out.linear, src + (size_t)x0 * ibpp, v, cn);
+            bloom_decode_row(ctx->par.out.in_fmt, ctx->par.out.linear, src + (size_t)x0 * ibpp, v, cn);
         for (int x = 0; x < cn; x++) {
             const uint64_t bx = b[x];
             uint32_t *p = v + 3 * x;
@@ -358,7 +360,7 @@ static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
             p[1] = sat32(((f[1] * bx + 32768u) >> 16) + p[1]);
             p[2] = sat32(((f[2] * bx + 32768u) >> 16) + p[2]);
         }
-        bloom_encode_row(g->out.out_fmt, g->out.linear, v, out + (size_t)x0 * obpp, cn);
+        bloom_encode_row(ctx->par.out.out_fmt, ctx->par.out.linear, v, out + (size_t)x0 * obpp, cn);
     }
     return true;
 }
@@ -380,29 +382,29 @@ static bool map_zero(const uint8_t *map, int x0, int n, bool u16)
  * (S f + 2^23) >> 24. Where f = 0 (strength 0, or a chunk of zero map
  * codes) v = S: the source copied (bloom_row_copy_c), unless
  * BLOOM_FLAG_NO_SKIP (same bits). */
-static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
+static bool fn_out_baked(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
     (void)r;
     const int w = n->w;
-    uint32_t *v = bg_scratch(g, 0);
+    uint32_t *v = bg_scratch(ctx, 0);
     const uint8_t *map = (const uint8_t *)in[1][0];
-    const bool u16 = g->aux_bpp == 2;
-    const uint64_t strength = g->cfg.p.strength, one = g->out.debug ? 0u : 1u << 24;
-    const size_t obpp = (size_t)bloom_format_bpp(g->out.out_fmt), ibpp = (size_t)g->src_bpp;
+    const bool u16 = ctx->aux_bpp == 2;
+    const uint64_t strength = ctx->cfg->p.strength, one = ctx->par.out.debug ? 0u : 1u << 24;
+    const size_t obpp = (size_t)bloom_format_bpp(ctx->par.out.out_fmt), ibpp = (size_t)ctx->src_bpp;
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
-    if (g->skip && strength == 0) { /* f = 0: v = S (debug view: 0) */
-        bloom_row_copy_c(src, out, w, &g->out);
+    if (ctx->skip && strength == 0) { /* f = 0: v = S (debug view: 0) */
+        bloom_row_copy_c(src, out, w, &ctx->par.out);
         return true;
     }
     for (int x0 = 0; x0 < w; x0 += 256) { /* chunks of 256 pixels stay in the cache */
         const int cn = imin(256, w - x0);
-        if (g->skip && map_zero(map, x0, cn, u16)) {
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &g->out);
+        if (ctx->skip && map_zero(map, x0, cn, u16)) {
+            bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &ctx->par.out);
             continue;
         }
-        bloom_decode_row(g->out.in_fmt, g->out.linear, src + (size_t)x0 * ibpp, v, cn);
+        bloom_decode_row(ctx->par.out.in_fmt, ctx->par.out.linear, src + (size_t)x0 * ibpp, v, cn);
         for (int x = 0; x < cn; x++) {
             const uint64_t f = ((uint64_t)aux_q24(map, x0 + x, u16) * strength + 32768u) >> 16;
             const uint64_t m = one + f;
@@ -411,7 +413,7 @@ static bool fn_out_baked(const bloom_graph_t *g, const bg_node_t *n, int r,
             p[1] = sat32((p[1] * m + (1u << 23)) >> 24);
             p[2] = sat32((p[2] * m + (1u << 23)) >> 24);
         }
-        bloom_encode_row(g->out.out_fmt, g->out.linear, v, out + (size_t)x0 * obpp, cn);
+        bloom_encode_row(ctx->par.out.out_fmt, ctx->par.out.linear, v, out + (size_t)x0 * obpp, cn);
     }
     return true;
 }
@@ -444,25 +446,25 @@ static bloom_status_t validate(const bloom_config_t *cfg)
  * ARM_CHUNK (bloom) and 256 (baked) pixels. */
 #define ARM_SCRATCH_MIN (3u * 256u + 16u)
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     const int L = g->L;
     const size_t one = (size_t)g->w[0] + 16u;
-    g->scratch_len = one > ARM_SCRATCH_MIN ? one : ARM_SCRATCH_MIN;
-    if (g->cfg.flags & BLOOM_FLAG_BAKED) {
+    par->scratch_len = one > ARM_SCRATCH_MIN ? one : ARM_SCRATCH_MIN;
+    if (g->cfg->flags & BLOOM_FLAG_BAKED) {
         const int o = bg_node(g, fn_out_baked, g->w[0], g->h[0], 3, 0);
         bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
         bg_input(g, o, BG_AUX, BG_SAME, 0, 0);
         g->out_node = o;
-        g->scratch_rows = 1;
+        par->scratch_rows = 1;
         return BLOOM_OK;
     }
     /* every node but the output is zero-preserving, and a source pixel with
      * no channel above the knee's t - k makes zeros of D_1 (arm.md, skipping) */
-    g->dark_cut = bg_knee_cut(g);
+    par->dark_cut = bg_knee_cut(par);
     int d = bg_node(g, fn_d1, g->w[1], g->h[1], 1, 1);
     bg_input(g, d, BG_SRC, BG_DOWN, -1, 2);
-    if (g->aux_bpp)
+    if (g->cfg->aux_fmt != BLOOM_AUX_NONE)
         bg_input(g, d, BG_AUX, BG_DOWN, -1, 2);
     bg_zero(g, d);
     for (int k = 2; k <= L; k++) {
@@ -482,9 +484,9 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, u, BG_UP, -1, 1);
     g->out_node = o;
-    g->scratch_rows = 4;
+    par->scratch_rows = 4;
     if (!BLOOM_SMALL)
-        g->views = true; /* every row function reads its widths by bg_in_w */
+        par->views = true; /* every row function reads its widths by bg_in_w */
     return BLOOM_OK;
 }
 

@@ -1,6 +1,6 @@
 /* AVX2 twins of the arm preset's row kernels (bloom_preset_arm.h; x86-64
  * with GCC or clang), the set the engine's AVX2 kernels go with
- * (g->kern.isa, chosen at bloom_init from the CPU). The vertical halves
+ * (ctx->kern.isa, chosen at bloom_init from the CPU). The vertical halves
  * and the up filter's horizontal half on 8 lanes, the same arithmetic as
  * the SSE2 twins (bloom_preset_arm_sse2.c: the up sums split as 64 h + l,
  * exact in 32-bit lanes); the down filter's horizontal half is the SSE2

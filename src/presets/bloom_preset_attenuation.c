@@ -26,26 +26,27 @@ static inline uint32_t factor(uint32_t q24_sum, uint32_t a, uint32_t fmin)
 /* The four depth codes under half-resolution pixel x, as the sum of their
  * Q24 values (bg_aux_q24 each: for U8, c 2^24 / 255 rounded is 65793 c +
  * [c >= 128], so the sum is 65793 (sum of c) + the count of c >= 128). */
-static inline uint32_t depth_sum(const bloom_graph_t *g, const void *r0, const void *r1, int x0, int x1)
+static inline uint32_t depth_sum(const bg_ctx_t *ctx, const void *r0, const void *r1, int x0, int x1)
 {
-    if (g->aux_bpp == 1) {
+    if (ctx->aux_bpp == 1) {
         const uint8_t *a = (const uint8_t *)r0, *b = (const uint8_t *)r1;
         const uint32_t c0 = a[x0], c1 = a[x1], c2 = b[x0], c3 = b[x1];
         return 65793u * (c0 + c1 + c2 + c3) + (c0 >> 7) + (c1 >> 7) + (c2 >> 7) + (c3 >> 7);
     }
-    return bg_aux_q24(g, r0, x0) + bg_aux_q24(g, r0, x1) + bg_aux_q24(g, r1, x0) + bg_aux_q24(g, r1, x1);
+    return bg_aux_q24(ctx, r0, x0) + bg_aux_q24(ctx, r0, x1) + bg_aux_q24(ctx, r1, x0) +
+           bg_aux_q24(ctx, r1, x1);
 }
 
-static bool d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
-                     const void *const *const in[BG_MAX_IN], void *dst)
+static bool d1_atten(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
 {
     uint32_t *row = (uint32_t *)dst;
-    if (!bg_fn_d1(g, n, r, in, dst))
+    if (!bg_fn_d1(ctx, n, r, in, dst))
         return false; /* zero times the factor */
-    const uint32_t a = g->cfg.p.attenuation, fmin = g->cfg.p.max_reduction << 8;
+    const uint32_t a = ctx->cfg->p.attenuation, fmin = ctx->cfg->p.max_reduction << 8;
     if (a == 0)
-        return true;                 /* the factor is exactly 1 */
-    const int w0 = bg_in_w(g, n, 1); /* the aux plane's columns from 2 xa on */
+        return true;                   /* the factor is exactly 1 */
+    const int w0 = bg_in_w(ctx, n, 1); /* the aux plane's columns from 2 xa on */
     for (int x = 0; x < n->w; x++) {
         uint32_t *p = row + 3 * x;
         if (x + 4 <= n->w && (x & 3) == 0) { /* four zero pixels stay zero: most of a dark scene */
@@ -60,7 +61,7 @@ static bool d1_atten(const bloom_graph_t *g, const bg_node_t *n, int r,
         if (!(p[0] | p[1] | p[2]))
             continue;
         const int x0 = 2 * x, x1 = 2 * x + 1 < w0 ? 2 * x + 1 : w0 - 1;
-        const uint32_t f = factor(depth_sum(g, in[1][0], in[1][1], x0, x1), a, fmin);
+        const uint32_t f = factor(depth_sum(ctx, in[1][0], in[1][1], x0, x1), a, fmin);
         if (f == 1u << 24)
             continue;
         for (int c = 0; c < 3; c++)
@@ -87,13 +88,13 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     bg_build_out_add(g, bg_build_updown(g, d1_atten, true));
     if (!BLOOM_SMALL)
-        g->views = true; /* the stages and d1_atten read their widths by bg_in_w */
+        par->views = true; /* the stages and d1_atten read their widths by bg_in_w */
     /* the factor is at most 1: what the knee zeroes stays zero */
-    g->dark_cut = bg_knee_cut(g);
+    par->dark_cut = bg_knee_cut(par);
     return BLOOM_OK;
 }
 

@@ -92,7 +92,7 @@ static const uint32_t cod_natural[BLOOM_MAX_LEVELS][BLOOM_MAX_LEVELS] = {
  * horizontal passes need no clamping: column j of a padded row p is
  * p[3 * (j + 2) + ch], j = -2 .. n + 2, 3 (n + 5) words <= the scratch
  * row's 3 w0 + 16 (cod_pad_edges). The row kernels (bloom_preset_cod.h,
- * bloom_preset_cod_kern.c) and their SIMD twins are picked by g->kern.isa. */
+ * bloom_preset_cod_kern.c) and their SIMD twins are picked by ctx->kern.isa. */
 #define PAD COD_PAD
 
 /* Vertical box sums of six rows (2y-2 .. 2y+3): top = rows 0..3, centre =
@@ -142,16 +142,17 @@ static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict 
  * channel (each <= 16 M < 2^32), the Karis weights and average
  * (cod_karis_c), then the knee. RGB888 sRGB rows are decoded and summed in
  * one pass (cod_vsum6_c: no six decodes and six accumulations). */
-static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
-                     const void *const *const in[BG_MAX_IN], void *dst)
+static bool d1_karis(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
 {
     (void)r;
-    const int w0 = bg_in_w(g, n, 0), nw = 3 * w0;
+    const int w0 = bg_in_w(ctx, n, 0), nw = 3 * w0;
     cod_kernels_t k;
-    cod_kernels(g->kern.isa, &k);
-    uint32_t *dec = bg_scratch(g, 0), *vt = bg_scratch(g, 1), *vc = bg_scratch(g, 2), *vb = bg_scratch(g, 3);
+    cod_kernels(ctx->kern.isa, &k);
+    uint32_t *dec = bg_scratch(ctx, 0), *vt = bg_scratch(ctx, 1), *vc = bg_scratch(ctx, 2),
+             *vb = bg_scratch(ctx, 3);
 #if BLOOM_USE_RGB888
-    if (g->out.in_fmt == BLOOM_FMT_RGB888 && !g->out.linear) {
+    if (ctx->par.out.in_fmt == BLOOM_FMT_RGB888 && !ctx->par.out.linear) {
         const uint8_t *const s[6] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                      (const uint8_t *)in[0][2], (const uint8_t *)in[0][3],
                                      (const uint8_t *)in[0][4], (const uint8_t *)in[0][5]};
@@ -160,7 +161,7 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
 #endif
         for (int j = 0; j < 6; j++) {
             if (j == 0 || in[0][j] != in[0][j - 1])
-                k.dec(g->out.in_fmt, g->out.linear, (const uint8_t *)in[0][j], dec, w0);
+                k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, (const uint8_t *)in[0][j], dec, w0);
             vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
         }
     cod_pad_edges(vt, w0);
@@ -168,23 +169,23 @@ static bool d1_karis(const bloom_graph_t *g, const bg_node_t *n, int r,
     cod_pad_edges(vb, w0);
     uint32_t *o = (uint32_t *)dst;
     const uint32_t any = k.karis(vt, vc, vb, o, n->w);
-    if (g->knee.t != 0) /* threshold 0: the knee is the identity */
-        return bloom_row_knee_c(o, n->w, &g->knee);
+    if (ctx->par.knee.t != 0) /* threshold 0: the knee is the identity */
+        return bloom_row_knee_c(o, n->w, &ctx->par.knee);
     return any != 0;
 }
 
 /* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1 (cod_down13_c). */
-static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool d_13(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                  void *dst)
 {
     (void)r;
-    const int sw = bg_in_w(g, n, 0);
+    const int sw = bg_in_w(ctx, n, 0);
     cod_kernels_t k;
-    cod_kernels(g->kern.isa, &k);
+    cod_kernels(ctx->kern.isa, &k);
     const uint32_t *const rows[6] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                      (const uint32_t *)in[0][2], (const uint32_t *)in[0][3],
                                      (const uint32_t *)in[0][4], (const uint32_t *)in[0][5]};
-    return k.down13(rows, bg_scratch(g, 0), bg_scratch(g, 1), (uint32_t *)dst, n->w, sw) != 0;
+    return k.down13(rows, bg_scratch(ctx, 0), bg_scratch(ctx, 1), (uint32_t *)dst, n->w, sw) != 0;
 }
 
 /* U_k. Input 0: D_k row r; input 1: U_(k+1) rows m-2 .. m+2. k[0] = c_k.
@@ -193,17 +194,17 @@ static bool d_13(const bloom_graph_t *g, const bg_node_t *n, int r, const void *
  * same with a = 2^24. The tent: cod_blend_c (T4, the exact 2-D tent sum,
  * 256 x the mean, per axis weights (1, 5, 7, 3) / 16 for x = 2m over
  * m-2 .. m+1 and (3, 7, 5, 1) / 16 for x = 2m + 1 over m-1 .. m+2). */
-static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool u_blend(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = bg_in_w(g, n, 1), w = n->w, odd = r & 1;
+    const int sw = bg_in_w(ctx, n, 1), w = n->w, odd = r & 1;
     const uint32_t *dk = (const uint32_t *)in[0][0];
     uint32_t *o = (uint32_t *)dst;
     const uint32_t c = n->k[0];
-    const uint32_t a = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
+    const uint32_t a = (ctx->cfg->flags & BLOOM_FLAG_ADDITIVE) ? 65536u << 8 : (65536u - c) << 8;
     const size_t ns = (size_t)w * 3u;
-    if (bg_in_zero(g, 1, odd, odd + 3)) { /* T4 = 0: U = (a D + 2^23) >> 24 */
-        if (bg_in_zero(g, 0, 0, 0)) {
+    if (bg_in_zero(ctx, 1, odd, odd + 3)) { /* T4 = 0: U = (a D + 2^23) >> 24 */
+        if (bg_in_zero(ctx, 0, 0, 0)) {
             memset(o, 0, ns * sizeof *o);
             return false;
         }
@@ -217,10 +218,10 @@ static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
         return any != 0;
     }
     cod_kernels_t k;
-    cod_kernels(g->kern.isa, &k);
+    cod_kernels(ctx->kern.isa, &k);
     const uint32_t *const u[4] = {(const uint32_t *)in[1][odd], (const uint32_t *)in[1][odd + 1],
                                   (const uint32_t *)in[1][odd + 2], (const uint32_t *)in[1][odd + 3]};
-    k.blend(u, odd, dk, o, w, sw, a, c, bg_scratch(g, 0));
+    k.blend(u, odd, dk, o, w, sw, a, c, bg_scratch(ctx, 0));
     return true;
 }
 
@@ -228,37 +229,37 @@ static bool u_blend(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
  * k[0] = c_0, k[1 + ch] = f_ch = round(c_0 tint_ch / 65536);
  * v = (a S 256 + f T4 + 2^23) >> 24 with a = 65536 - c_0 (energy-conserving),
  * 65536 (additive) or 0 (debug view), clamped to 2^32 - 1, encoded. */
-static bool out_cod(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool out_cod(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
-    const int sw = bg_in_w(g, n, 1), w = n->w, odd = r & 1;
+    const int sw = bg_in_w(ctx, n, 1), w = n->w, odd = r & 1;
     const uint8_t *src = (const uint8_t *)in[0][0];
-    uint32_t *s = bg_scratch(g, 2), *o = bg_scratch(g, 3);
-    const bool add = (g->cfg.flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = g->out.debug;
+    uint32_t *s = bg_scratch(ctx, 2), *o = bg_scratch(ctx, 3);
+    const bool add = (ctx->cfg->flags & BLOOM_FLAG_ADDITIVE) != 0, dbg = ctx->par.out.debug;
     const uint32_t a = dbg ? 0u : (add ? 65536u : 65536u - n->k[0]) << 8;
     cod_kernels_t k;
-    cod_kernels(g->kern.isa, &k);
-    if (bg_in_zero(g, 1, odd, odd + 3)) {
+    cod_kernels(ctx->kern.isa, &k);
+    if (bg_in_zero(ctx, 1, odd, odd + 3)) {
         /* T4 = 0: v = (a S + 2^23) >> 24, which is S for a = 2^24 and 0 in the
          * debug view (a = 0): the row copied (bloom_row_copy_c encodes zeros
          * in the debug view); also where the source row is dark with cut 0
          * (S = 0, so v = 0 = S) */
-        if (a == 0u || a == 1u << 24 || (g->dark_cut == 0u && bg_in_zero(g, 0, 0, 0))) {
-            bloom_row_copy_c(src, (uint8_t *)dst, w, &g->out);
+        if (a == 0u || a == 1u << 24 || (ctx->par.dark_cut == 0u && bg_in_zero(ctx, 0, 0, 0))) {
+            bloom_row_copy_c(src, (uint8_t *)dst, w, &ctx->par.out);
             return true;
         }
-        k.dec(g->out.in_fmt, g->out.linear, src, s, w);
+        k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, src, s, w);
         for (size_t i = 0; i < (size_t)w * 3u; i++)
             s[i] = (uint32_t)(((uint64_t)a * s[i] + (1u << 23)) >> 24);
-        k.enc(g->out.out_fmt, g->out.linear, s, (uint8_t *)dst, w);
+        k.enc(ctx->par.out.out_fmt, ctx->par.out.linear, s, (uint8_t *)dst, w);
         return true;
     }
     const uint32_t f[3] = {n->k[1], n->k[2], n->k[3]};
     const uint32_t *const u[4] = {(const uint32_t *)in[1][odd], (const uint32_t *)in[1][odd + 1],
                                   (const uint32_t *)in[1][odd + 2], (const uint32_t *)in[1][odd + 3]};
-    k.dec(g->out.in_fmt, g->out.linear, src, s, w);
-    k.mix(u, odd, s, o, w, sw, a, f, bg_scratch(g, 0));
-    k.enc(g->out.out_fmt, g->out.linear, o, (uint8_t *)dst, w);
+    k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, src, s, w);
+    k.mix(u, odd, s, o, w, sw, a, f, bg_scratch(ctx, 0));
+    k.enc(ctx->par.out.out_fmt, ctx->par.out.linear, o, (uint8_t *)dst, w);
     return true;
 }
 
@@ -302,7 +303,7 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     const int L = g->L;
     int D[BLOOM_MAX_LEVELS + 1];
@@ -310,7 +311,7 @@ static bloom_status_t build(bloom_graph_t *g)
      * the knee's cut t - k (0: black only, at Bevy's threshold 0) makes
      * zeros through the Karis 13-tap and the knee; the 13-tap and the
      * blends of zero rows are zero. */
-    g->dark_cut = bg_knee_cut(g);
+    par->dark_cut = bg_knee_cut(par);
     D[1] = bg_node(g, d1_karis, g->w[1], g->h[1], 3, 1);
     bg_input(g, D[1], BG_SRC, BG_DOWN, -2, 3);
     bg_zero(g, D[1]);
@@ -342,22 +343,22 @@ static bloom_status_t build(bloom_graph_t *g)
         bg_input(g, u, U, BG_UP, -2, 2);
         bg_zero(g, u);
         if (u >= 0)
-            g->node[u].k[0] = g->cfg.p.level_weight[k];
+            g->node[u].k[0] = g->cfg->p.level_weight[k];
         U = u;
     }
     const int o = bg_node(g, out_cod, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, U, BG_UP, -2, 2);
     if (o >= 0) {
-        const uint32_t c0 = g->cfg.p.level_weight[0];
+        const uint32_t c0 = g->cfg->p.level_weight[0];
         g->node[o].k[0] = c0;
         for (int ch = 0; ch < 3; ch++)
-            g->node[o].k[1 + ch] = (uint32_t)(((uint64_t)c0 * g->cfg.p.tint[ch] + 32768u) >> 16);
+            g->node[o].k[1 + ch] = (uint32_t)(((uint64_t)c0 * g->cfg->p.tint[ch] + 32768u) >> 16);
     }
     g->out_node = o;
-    g->scratch_rows = 4; /* d1_karis's decoded row and column sums, out_cod's rows */
+    par->scratch_rows = 4; /* d1_karis's decoded row and column sums, out_cod's rows */
     if (!BLOOM_SMALL)
-        g->views = true; /* every row function reads its widths by bg_in_w */
+        par->views = true; /* every row function reads its widths by bg_in_w */
     return BLOOM_OK;
 }
 

@@ -2,7 +2,7 @@
  * AVX2 twins (bloom_preset_cod_avx2.c: level 1 and the 13-tap;
  * bloom_preset_cod_avx2_up.c: the blends, decode and encode), the same
  * bits, and NEON twins of the 13-tap and the blends
- * (bloom_preset_cod_neon.c); the preset picks them by g->kern.isa
+ * (bloom_preset_cod_neon.c); the preset picks them by ctx->kern.isa
  * (cod_kernels; the SSE2 set and the rest of the NEON set are C). Samples are interleaved R, G, B uint32_t.
  * Padded rows: column j (-2 .. n + 2) of a row of n pixels at p[3 (j + 2)
  * + ch], the edge columns repeated (cod_pad_edges). */

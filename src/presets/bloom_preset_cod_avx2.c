@@ -1,7 +1,7 @@
 /* AVX2 twins of the cod preset's level-1 and down-pass kernels
  * (bloom_preset_cod.h; the up pass and output: _avx2_up.c), compiled
  * for AVX2 by a target pragma (the rest of the core stays baseline
- * x86-64), picked when the engine's kernel set is AVX2 (g->kern.isa). Same
+ * x86-64), picked when the engine's kernel set is AVX2 (ctx->kern.isa). Same
  * bits as the C kernels (tests/test_simd_cod.c); the bounds each twin
  * relies on are tested on every chunk, which goes to the C kernel when
  * they fail (sim/docs/presets/cod.md, "SIMD twins"). */

@@ -1,7 +1,7 @@
 /* AVX2 twins of the cod preset's up-pass and output kernels
  * (bloom_preset_cod.h): the tent blends of the up pass and of the output,
  * the RGB888 decode and encode. Compiled for AVX2 by a target pragma,
- * picked when the engine's kernel set is AVX2 (g->kern.isa); same bits as
+ * picked when the engine's kernel set is AVX2 (ctx->kern.isa); same bits as
  * the C kernels (tests/test_simd_cod.c). The level-1 and down-pass twins:
  * bloom_preset_cod_avx2.c. */
 #include "bloom_preset_cod.h"

@@ -96,14 +96,14 @@ static inline bool bright(const uint8_t *b, int x, int bpp)
  * samples at most t is at most t, and then Lx <= Tx: "Zero rows" in
  * sim/docs/presets/gamedev.md), the others boxed and thresholded in runs.
  * The test's bytes go to scratch row 0 (w0 * bpp + 20 bytes <= 12 w0 + 64). */
-static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t *const s[4], uint32_t *d,
-                      int w, int w0)
+static bool d1_blocks(const bg_ctx_t *ctx, const gd_kern_t *k, const uint8_t *const s[4], uint32_t *d, int w,
+                      int w0)
 {
-    const int bpp = g->src_bpp;
-    uint8_t *b = (uint8_t *)bg_scratch(g, 0);
+    const int bpp = ctx->src_bpp;
+    uint8_t *b = (uint8_t *)bg_scratch(ctx, 0);
     memset(b, 0, 4);
     b += 4;
-    k->bright(s, b, w0 * bpp, g->dark.c8);
+    k->bright(s, b, w0 * bpp, ctx->dark.c8);
     memset(b + w0 * bpp, 0, 16);
     bool any = false;
     for (int x = 0; x < w;) {
@@ -116,8 +116,8 @@ static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t 
         while (x < w && bright(b, x, bpp))
             x++;
         if (x > xa) {
-            g->kern.box_src(s, g->out.in_fmt, g->out.linear, d, xa, x, w0); /* C or AVX2 */
-            any |= threshold_row(d + 3 * xa, x - xa, g->knee.t);
+            ctx->kern.box_src(s, ctx->par.out.in_fmt, ctx->par.out.linear, d, xa, x, w0); /* C or AVX2 */
+            any |= threshold_row(d + 3 * xa, x - xa, ctx->par.knee.t);
         }
     }
     return any;
@@ -126,20 +126,21 @@ static bool d1_blocks(const bloom_graph_t *g, const gd_kern_t *k, const uint8_t 
 
 /* Input 0: source rows 2r-1 .. 2r+2 (BG_DOWN). False when the row came out
  * all zero (the engine then tags it zero). */
-static bool gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
 #if !BLOOM_SMALL
-    const gd_kern_t *k = gd_kern_for(g->kern.isa);
-    if (g->dark_src && k->bright &&
-        (g->out.in_fmt == BLOOM_FMT_RGB888 || g->out.in_fmt == BLOOM_FMT_XRGB8888))
-        return d1_blocks(g, k, s, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
+    const gd_kern_t *k = gd_kern_for(ctx->kern.isa);
+    if (ctx->dark_src && k->bright &&
+        (ctx->par.out.in_fmt == BLOOM_FMT_RGB888 || ctx->par.out.in_fmt == BLOOM_FMT_XRGB8888))
+        return d1_blocks(ctx, k, s, (uint32_t *)dst, n->w, bg_in_w(ctx, n, 0));
 #endif
-    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
-    return threshold_row((uint32_t *)dst, n->w, g->knee.t);
+    bloom_row_box_src_c(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w,
+                        bg_in_w(ctx, n, 0));
+    return threshold_row((uint32_t *)dst, n->w, ctx->par.knee.t);
 }
 
 /* ---- the Gaussian ----------------------------------------------------------- */
@@ -150,24 +151,24 @@ static bool gd_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
  * 24) and the tent of three zero rows is 0, so the node is zero-preserving
  * (bg_zero); with D_k's rows zero the row is the tent alone, with U_k+1's
  * the Gaussian alone. */
-static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_up(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     const int di = n->nin - 1;
     const void *const *d = in[di];
     uint32_t *out = (uint32_t *)dst;
-    const bool dz = bg_in_zero(g, di, 0, 8), uz = n->nin == 1 || bg_in_zero(g, 0, 0, 2);
+    const bool dz = bg_in_zero(ctx, di, 0, 8), uz = n->nin == 1 || bg_in_zero(ctx, 0, 0, 2);
     if (dz && uz) { /* not run when the engine skips: all zero */
         memset(out, 0, (size_t)n->w * 3u * sizeof *out);
         return false;
     }
     if (!dz) {
-        const gd_kern_t *k = gd_kern_for(g->kern.isa);
+        const gd_kern_t *k = gd_kern_for(ctx->kern.isa);
         const uint32_t *const rows[9] = {
             (const uint32_t *)d[0], (const uint32_t *)d[1], (const uint32_t *)d[2],
             (const uint32_t *)d[3], (const uint32_t *)d[4], (const uint32_t *)d[5],
             (const uint32_t *)d[6], (const uint32_t *)d[7], (const uint32_t *)d[8]};
-        uint32_t *v = bg_scratch(g, 0);
+        uint32_t *v = bg_scratch(ctx, 0);
         k->gauss_v(rows, v, 3 * n->w);
         gd_gauss_h_row(k, v, out, n->w);
     }
@@ -177,7 +178,7 @@ static bool gd_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void 
         /* the engine's tent, C or its SIMD twin (same bits), picked once at
          * bloom_init: picking it per row ran CPUID per row (a VM exit each
          * under virtualisation: 12x the default's time at 1080p) */
-        g->kern.tent(u, r & 1, dz ? NULL : out, out, 0, n->w, bg_in_w(g, n, 0));
+        ctx->kern.tent(u, r & 1, dz ? NULL : out, out, 0, n->w, bg_in_w(ctx, n, 0));
     }
     return true;
 }
@@ -249,14 +250,14 @@ static uint32_t tonemap_q16(uint64_t c)
  * with bloom decodes the source into that row, set when the table is
  * built. No memory beyond the two scratch rows the preset had. */
 #define GD_ZT_MARK 0x67645a54u
-#define GD_ZT_AT(g) (bg_scratch((g), 1)[(g)->scratch_len - 1u])
+#define GD_ZT_AT(ctx) (bg_scratch((ctx), 1)[(ctx)->par.scratch_len - 1u])
 
 /* The output of a decoded sample S at output class cls: 8, 6 or 5 (codes
  * by the gamma or linear thresholds), 16 (RGBQ16: the tone-mapped Q16). */
-static uint32_t out_value(const bloom_graph_t *g, uint32_t S, int cls)
+static uint32_t out_value(const bg_ctx_t *ctx, uint32_t S, int cls)
 {
-    const bool lin = g->out.linear;
-    if (g->out.debug)
+    const bool lin = ctx->par.out.linear;
+    if (ctx->par.out.debug)
         S = 0;
     if (cls == 16)
         return tonemap_q16(S);
@@ -273,56 +274,56 @@ static uint32_t out_value(const bloom_graph_t *g, uint32_t S, int cls)
 /* The tables of channels R, G, B into tab[0..2], built in scratch row 1
  * when it has room; NULL tab[0] when not (RGBQ16 input, or a row too short:
  * the caller takes the general path). */
-static void zero_tables(const bloom_graph_t *g, const uint32_t *tab[3])
+static void zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
 {
-    const bloom_format_t in = g->out.in_fmt, of = g->out.out_fmt;
+    const bloom_format_t in = ctx->par.out.in_fmt, of = ctx->par.out.out_fmt;
     const int ocls = of == BLOOM_FMT_RGBQ16 ? 16 : of == BLOOM_FMT_RGB565 ? 5 : 8;
     const int gcls = of == BLOOM_FMT_RGB565 ? 6 : ocls;
     const bool in8 = in == BLOOM_FMT_RGB888 || in == BLOOM_FMT_XRGB8888;
     const size_t size = in8 ? (gcls != ocls ? 512u : 256u) : 96u;
-    uint32_t *t = bg_scratch(g, 1);
+    uint32_t *t = bg_scratch(ctx, 1);
     tab[0] = NULL;
-    if ((!in8 && in != BLOOM_FMT_RGB565) || size + 1u > g->scratch_len)
+    if ((!in8 && in != BLOOM_FMT_RGB565) || size + 1u > ctx->par.scratch_len)
         return;
     const uint32_t *tg = in8 && gcls == ocls ? t : t + (in8 ? 256 : 32);
     tab[0] = tab[2] = t;
     tab[1] = tg;
-    if (GD_ZT_AT(g) == GD_ZT_MARK)
+    if (GD_ZT_AT(ctx) == GD_ZT_MARK)
         return;
     uint32_t o[3];
     if (in8) {
         for (uint32_t c = 0; c < 256; c++) {
-            bloom_dec3(c, c, c, o, g->out.linear);
-            t[c] = out_value(g, o[0], ocls);
+            bloom_dec3(c, c, c, o, ctx->par.out.linear);
+            t[c] = out_value(ctx, o[0], ocls);
             if (tg != t)
-                t[256 + c] = out_value(g, o[1], gcls);
+                t[256 + c] = out_value(ctx, o[1], gcls);
         }
     } else {
         for (uint32_t c = 0; c < 64; c++) {
             const uint32_t wd = ((c & 31u) << 11) | (c << 5);
             const uint8_t px[2] = {(uint8_t)wd, (uint8_t)(wd >> 8)};
-            bloom_dec_rgb565(px, o, g->out.linear);
+            bloom_dec_rgb565(px, o, ctx->par.out.linear);
             if (c < 32)
-                t[c] = out_value(g, o[0], ocls);
-            t[32 + c] = out_value(g, o[1], gcls);
+                t[c] = out_value(ctx, o[0], ocls);
+            t[32 + c] = out_value(ctx, o[1], gcls);
         }
     }
-    GD_ZT_AT(g) = GD_ZT_MARK;
+    GD_ZT_AT(ctx) = GD_ZT_MARK;
 }
 
 /* The output row from the tables: each pixel read whole before it is
  * written (in place: same format, same place). False when there are no
  * tables. */
-static bool zero_row(const bloom_graph_t *g, const uint8_t *s, uint8_t *d, int w)
+static bool zero_row(const bg_ctx_t *ctx, const uint8_t *s, uint8_t *d, int w)
 {
     const uint32_t *tab[3];
-    zero_tables(g, tab);
+    zero_tables(ctx, tab);
     if (!tab[0])
         return false;
-    const bloom_format_t in = g->out.in_fmt, of = g->out.out_fmt;
+    const bloom_format_t in = ctx->par.out.in_fmt, of = ctx->par.out.out_fmt;
     const uint32_t *t0 = tab[0], *t1 = tab[1], *t2 = tab[2];
     if (in == BLOOM_FMT_RGB888 && of == BLOOM_FMT_RGB888) {
-        gd_kern_for(g->kern.isa)->lut8(s, t0, d, 3 * w);
+        gd_kern_for(ctx->kern.isa)->lut8(s, t0, d, 3 * w);
         return true;
     }
     const int ib = bloom_format_bpp(in), ob = bloom_format_bpp(of);
@@ -367,39 +368,39 @@ static bool zero_row(const bloom_graph_t *g, const uint8_t *s, uint8_t *d, int w
  * input: decoded by the tone kernel on the fly), then per sample c = S +
  * ((strength * B + 2^15) >> 16) (u64: B < 3 * 2^28, strength <= 2^20) and
  * the code by the thresholds. */
-static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool gd_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     const int w = n->w;
     const uint8_t *src = (const uint8_t *)in[1][0];
-    uint32_t *bl = bg_scratch(g, 0), *sv = bg_scratch(g, 1);
-    const uint32_t s = g->cfg.p.strength;
-    const bool zero = bg_in_zero(g, 0, 0, 2);
+    uint32_t *bl = bg_scratch(ctx, 0), *sv = bg_scratch(ctx, 1);
+    const uint32_t s = ctx->cfg->p.strength;
+    const bool zero = bg_in_zero(ctx, 0, 0, 2);
     if (r == 0) /* a new frame: no table is trusted (an earlier engine's, or none) */
-        GD_ZT_AT(g) = 0;
-    if (zero && zero_row(g, src, (uint8_t *)dst, w))
+        GD_ZT_AT(ctx) = 0;
+    if (zero && zero_row(ctx, src, (uint8_t *)dst, w))
         return true;
     if (zero)
         memset(bl, 0, (size_t)w * 3u * sizeof *bl);
     else
-        g->kern.tent(u, r & 1, NULL, bl, 0, w, bg_in_w(g, n, 0)); /* picked at bloom_init */
-    const bool lin = g->out.linear;
+        ctx->kern.tent(u, r & 1, NULL, bl, 0, w, bg_in_w(ctx, n, 0)); /* picked at bloom_init */
+    const bool lin = ctx->par.out.linear;
     uint8_t *p = (uint8_t *)dst;
 #if !BLOOM_SMALL
-    if (g->out.out_fmt == BLOOM_FMT_RGB888 || g->out.out_fmt == BLOOM_FMT_XRGB8888) {
-        const bool fused = g->out.in_fmt == BLOOM_FMT_RGB888 && !lin && !g->out.debug;
+    if (ctx->par.out.out_fmt == BLOOM_FMT_RGB888 || ctx->par.out.out_fmt == BLOOM_FMT_XRGB8888) {
+        const bool fused = ctx->par.out.in_fmt == BLOOM_FMT_RGB888 && !lin && !ctx->par.out.debug;
         if (!fused) {
-            GD_ZT_AT(g) = 0; /* sv is the zero tables' row */
-            if (g->out.debug)
+            GD_ZT_AT(ctx) = 0; /* sv is the zero tables' row */
+            if (ctx->par.out.debug)
                 memset(sv, 0, (size_t)w * 3u * sizeof *sv);
             else
-                bloom_decode_row(g->out.in_fmt, lin, src, sv, w);
+                bloom_decode_row(ctx->par.out.in_fmt, lin, src, sv, w);
         }
-        const bool xrgb = g->out.out_fmt == BLOOM_FMT_XRGB8888;
+        const bool xrgb = ctx->par.out.out_fmt == BLOOM_FMT_XRGB8888;
         uint8_t *codes = xrgb ? (uint8_t *)bl : p;
-        gd_kern_for(g->kern.isa)
+        gd_kern_for(ctx->kern.isa)
             ->tone8(bl, sv, fused ? src : NULL, bloom_srgb_dec8, codes, 3 * w, s,
                     lin ? bloom_gd_lin8 : bloom_gd_gamma8, lin ? GD_TABLE(lin8) : GD_TABLE(gamma8));
         if (xrgb)
@@ -412,12 +413,12 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
         return true;
     }
 #endif
-    GD_ZT_AT(g) = 0;
-    if (g->out.debug)
+    GD_ZT_AT(ctx) = 0;
+    if (ctx->par.out.debug)
         memset(sv, 0, (size_t)w * 3u * sizeof *sv);
     else
-        bloom_decode_row(g->out.in_fmt, lin, src, sv, w);
-    if (g->out.out_fmt == BLOOM_FMT_RGBQ16) {
+        bloom_decode_row(ctx->par.out.in_fmt, lin, src, sv, w);
+    if (ctx->par.out.out_fmt == BLOOM_FMT_RGBQ16) {
         for (int x = 0; x < w; x++, p += 12) {
             uint32_t q[3];
             for (int ch = 0; ch < 3; ch++)
@@ -433,7 +434,7 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     const gd_bk_t b6 = lin ? GD_TABLE(lin6) : GD_TABLE(gamma6);
     const gd_bk_t b5 = lin ? GD_TABLE(lin5) : GD_TABLE(gamma5);
     /* codes in place of the composite, in bl */
-    if (g->out.out_fmt == BLOOM_FMT_RGB565) {
+    if (ctx->par.out.out_fmt == BLOOM_FMT_RGB565) {
         for (int x = 0; x < w; x++) {
             uint32_t *c = bl + 3 * x;
             const uint32_t *sx = sv + 3 * x;
@@ -448,7 +449,7 @@ static bool gd_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void
     }
     for (int i = 0; i < 3 * w; i++)
         bl[i] = code_of(t8, b8, 128, to_q20(((s * (uint64_t)bl[i] + 32768u) >> 16) + sv[i]));
-    if (g->out.out_fmt == BLOOM_FMT_XRGB8888) {
+    if (ctx->par.out.out_fmt == BLOOM_FMT_XRGB8888) {
         for (int x = 0; x < w; x++, p += 4) {
             p[0] = (uint8_t)bl[3 * x + 2];
             p[1] = (uint8_t)bl[3 * x + 1];
@@ -483,17 +484,17 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     bg_levels(g, GD_LEVELS);
     const int L = g->L;
-    g->knee.k = 0;                        /* no soft knee: bloom_query reports knee_q = 0 */
-    g->out.intensity = g->cfg.p.strength; /* ... and intensity_q = the strength (linear Q16.16) */
+    par->knee.k = 0;                         /* no soft knee: bloom_query reports knee_q = 0 */
+    par->out.intensity = g->cfg->p.strength; /* ... and intensity_q = the strength (linear Q16.16) */
     int D[GD_LEVELS + 1];
     /* a source pixel with no channel above t is zero after the box and the
      * threshold (sim/docs/presets/gamedev.md, "Zero rows"); every node but
      * the output is zero-preserving */
-    g->dark_cut = g->knee.t;
+    par->dark_cut = par->knee.t;
     D[1] = bg_node(g, gd_d1, g->w[1], g->h[1], 3, 1);
     bg_input(g, D[1], BG_SRC, BG_DOWN, -1, 2);
     bg_zero(g, D[1]);
@@ -522,9 +523,9 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, U, BG_UP, -1, 1);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     g->out_node = o;
-    g->scratch_rows = 2; /* the Gaussian's vertical pass, the output's bloom row */
+    par->scratch_rows = 2; /* the Gaussian's vertical pass, the output's bloom row */
     if (!BLOOM_SMALL)
-        g->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
+        par->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
     return BLOOM_OK;
 }
 

@@ -18,13 +18,13 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     bg_build_out_add(g, bg_build_updown(g, bg_fn_d1, false));
     if (!BLOOM_SMALL)
-        g->views = true; /* the stages read their widths by bg_in_w */
+        par->views = true; /* the stages read their widths by bg_in_w */
     if (BLOOM_USE_SKIP)
-        g->dark_cut = bg_knee_cut(g); /* a source row with nothing above t - k makes zeros */
+        par->dark_cut = bg_knee_cut(par); /* a source row with nothing above t - k makes zeros */
     return BLOOM_OK;
 }
 

@@ -25,7 +25,7 @@
  * skip H through a 16-row window, Q, the passes and the tent; an output
  * row with B = 0 is the source copied. The passes' sums and the screen run
  * in the kernels of bloom_preset_xna.h (SSE2/AVX2/NEON twins by
- * g->kern.isa); the output row takes the default's flat tents and fused
+ * ctx->kern.isa); the output row takes the default's flat tents and fused
  * encoder with the screen as an addend. */
 #include "bloom_preset_xna.h"
 #include "bloom_pixel.h"
@@ -48,17 +48,18 @@
  * are dark the row is not computed and holds zeros instead of its values
  * (<= T). Every quarter row that reads such a row is dark, so it is zero
  * whatever H holds (xna.md, "Skipping"). */
-static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_half(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
 #if BLOOM_SMALL
-    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0));
+    bloom_row_box_src_c(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w,
+                        bg_in_w(ctx, n, 0));
 #else
-    g->kern.box_src(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, 0, n->w,
-                    bg_in_w(g, n, 0)); /* C or AVX2 */
+    ctx->kern.box_src(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, 0, n->w,
+                      bg_in_w(ctx, n, 0)); /* C or AVX2 */
 #endif
     return true;
 }
@@ -67,20 +68,20 @@ static bool fn_half(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
  * the clamp to 1.0 with SATURATE). Input 0: H rows base-1 .. base+2. A
  * zero-tagged H row among them (skipped: its window was dark) means the
  * row is dark, so zero; false when the row came out all zero. */
-static bool fn_quarter(const bloom_graph_t *g, const bg_node_t *n, int r,
-                       const void *const *const in[BG_MAX_IN], void *dst)
+static bool fn_quarter(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                       void *dst)
 {
     (void)r;
     const int cnt = 3 * n->w;
     uint32_t *row = (uint32_t *)dst;
-    if (g->zin[0] != 0) {
+    if (ctx->zin[0] != 0) {
         memset(row, 0, (size_t)cnt * sizeof *row);
         return false;
     }
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    g->kern.box(s, row, n->w, bg_in_w(g, n, 0)); /* C or SIMD, same bits */
-    const uint32_t t = g->knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
+    ctx->kern.box(s, row, n->w, bg_in_w(ctx, n, 0)); /* C or SIMD, same bits */
+    const uint32_t t = ctx->par.knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
     uint32_t any = 0;
     for (int i = 0; i < cnt; i++) {
         uint32_t v = row[i] > t ? row[i] - t : 0u;
@@ -146,13 +147,13 @@ void xna_kernels(bloom_isa_t isa, xna_kawase_fn *kawase, xna_screen_fn *screen)
  * two of them (all four zero: a zero row). k[1]: XNA_FIRST/LAST/SAT;
  * k[2], k[3]: low and high word of the range-restore factor f (Q24, up to
  * 2^40). */
-static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
-                      const void *const *const in[BG_MAX_IN], void *dst)
+static bool fn_kawase(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                      void *dst)
 {
     (void)r;
     const int i = (int)n->k[0], w = n->w, cnt = 3 * w;
     uint32_t *row = (uint32_t *)dst;
-    if (bg_in_zero(g, 0, 0, 1) && bg_in_zero(g, 0, 2 * i + 1, 2 * i + 2)) {
+    if (bg_in_zero(ctx, 0, 0, 1) && bg_in_zero(ctx, 0, 2 * i + 1, 2 * i + 2)) {
         memset(row, 0, (size_t)cnt * sizeof *row);
         return false;
     }
@@ -163,8 +164,8 @@ static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
     const bool restore = (flags & XNA_FIRST) && f != 1u << 24;
     xna_kawase_fn kawase;
     xna_screen_fn screen;
-    xna_kernels(g->kern.isa, &kawase, &screen);
-    kawase(rows, bg_scratch(g, 0), row, w, i, !restore);
+    xna_kernels(ctx->kern.isa, &kawase, &screen);
+    kawase(rows, bg_scratch(ctx, 0), row, w, i, !restore);
     if (restore) {
         for (int j = 0; j < cnt; j++) {
             /* sum f / 2^28 with f <= 2^40: the sum split at bit 16 keeps both
@@ -175,8 +176,8 @@ static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
             row[j] = v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)v;
         }
     }
-    if ((flags & XNA_LAST) && g->out.intensity != 65536u) {
-        const uint64_t I = g->out.intensity;
+    if ((flags & XNA_LAST) && ctx->par.out.intensity != 65536u) {
+        const uint64_t I = ctx->par.out.intensity;
         for (int j = 0; j < cnt; j++) {
             const uint64_t v = ((uint64_t)row[j] * I + 32768u) >> 16; /* < 2^28 * 2^24 */
             row[j] = v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)v;
@@ -191,12 +192,12 @@ static bool fn_kawase(const bloom_graph_t *g, const bg_node_t *n, int r,
 /* Half resolution, the way back: tent of the last pass (input 0: rows
  * m-1 .. m+1, BG_UP), nothing added (zero-preserving: the tent of zeros is
  * zero). */
-static bool fn_up(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_up(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                   void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    g->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, bg_in_w(g, n, 0));
+    ctx->kern.tent(u, r & 1, NULL, (uint32_t *)dst, 0, n->w, bg_in_w(ctx, n, 0));
     return true;
 }
 
@@ -229,16 +230,16 @@ static BLOOM_ALWAYS_INLINE void gather_s(const uint8_t *s, uint32_t *se, uint32_
 
 /* The output row through the flat tent kernels (their 32-bit sums are exact:
  * every sample is at most LIN_MAX < 2^29) and the fused encoder of the
- * default's fast path (g->kern.eo: out = enc(S + P)), with P the screen as
+ * default's fast path (ctx->kern.eo: out = enc(S + P)), with P the screen as
  * an addend (xna_screen_fn): enc(S + P) = enc(b + S (1 - b)). Per chunk of
  * level-1 columns: V, the even and odd columns e, od of B, then P in place
  * of B (the debug view: B itself). RGB888 and XRGB8888 input, 8/6/5-bit
  * sRGB output (bloom_encode_eo_ok); B = 0 on a chunk: the source copied. */
-static void out_fast(const bloom_graph_t *g, const uint32_t *const u[3], int odd, const uint8_t *src,
+static void out_fast(const bg_ctx_t *ctx, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw)
 {
-    const bloom_out_t *o = &g->out;
-    const bloom_kernels_t *k = &g->kern;
+    const bloom_out_t *o = &ctx->par.out;
+    const bloom_kernels_t *k = &ctx->kern;
     const bool x8 = o->in_fmt == BLOOM_FMT_XRGB8888;
     const size_t ibpp = x8 ? 4u : 3u, obpp = (size_t)bloom_format_bpp(o->out_fmt);
     const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
@@ -286,31 +287,31 @@ static void out_fast(const bloom_graph_t *g, const uint32_t *const u[3], int odd
  * bloom rows m-1 .. m+1 (BG_UP). B = tent; screen combine; encode. All
  * three bloom rows zero: B = 0, out = b + S (1 - b) = S exactly (debug
  * view: 0), which is bloom_row_copy_c. */
-static bool fn_out(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
                                   (const uint32_t *)in[1][2]};
     const uint8_t *src = (const uint8_t *)in[0][0];
     uint8_t *out = (uint8_t *)dst;
-    const bloom_out_t *o = &g->out;
+    const bloom_out_t *o = &ctx->par.out;
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
-    const int w = n->w, sw = bg_in_w(g, n, 1);
-    if (bg_in_zero(g, 1, 0, 2)) {
+    const int w = n->w, sw = bg_in_w(ctx, n, 1);
+    if (bg_in_zero(ctx, 1, 0, 2)) {
         bloom_row_copy_c(src, out, w, o);
         return true;
     }
 #if !BLOOM_SMALL
-    if (g->kern.vtent && (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_XRGB8888) &&
+    if (ctx->kern.vtent && (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_XRGB8888) &&
         bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        out_fast(g, u, r & 1, src, out, w, sw);
+        out_fast(ctx, u, r & 1, src, out, w, sw);
         return true;
     }
 #endif
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
         const int cnt = imin(BLOOM_OUT_CHUNK, w - x0);
-        g->kern.tent(u, r & 1, NULL, bl, x0, cnt, sw);
+        ctx->kern.tent(u, r & 1, NULL, bl, x0, cnt, sw);
         if (!o->debug) {
             /* the source row is read before the encoded row is written: dst may alias src */
             bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, cnt);
@@ -346,10 +347,10 @@ static bloom_status_t validate(const bloom_config_t *cfg)
     return BLOOM_OK;
 }
 
-static bloom_status_t build(bloom_graph_t *g)
+static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
-    const int P = g->cfg.p.passes;
-    const uint32_t sat = (g->cfg.flags & BLOOM_FLAG_SATURATE) ? XNA_SAT : 0u;
+    const int P = g->cfg->p.passes;
+    const uint32_t sat = (g->cfg->flags & BLOOM_FLAG_SATURATE) ? XNA_SAT : 0u;
     /* always half and quarter (ceil sizes; a 1-pixel side stays 1) */
     g->L = 2;
     for (int k = 1; k <= 2; k++) {
@@ -358,7 +359,7 @@ static bloom_status_t build(bloom_graph_t *g)
     }
     /* range restore 1 / (1 - t), t = threshold / 2^16 < 1: f = round(2^40 / d) (Q24),
      * d = 2^16 - threshold; f <= 2^40, the quotient can pass 32 bits: two divisions */
-    const uint32_t d = BLOOM_ONE - g->cfg.threshold;
+    const uint32_t d = BLOOM_ONE - g->cfg->threshold;
     const uint32_t qh = 256u / d, rh = 256u % d; /* 2^40 = 256 * 2^32, divided in two steps */
     const uint32_t ql = bloom_div_u64_u32((uint64_t)rh << 32, d); /* no 64-bit divide on Cortex-M */
     const uint64_t fr = ((uint64_t)rh << 32) - (uint64_t)ql * d;
@@ -367,10 +368,10 @@ static bloom_status_t build(bloom_graph_t *g)
     /* zero rows (xna.md, "Skipping"): a source pixel with no channel above T
      * is dark; H skips where its 16-row window is dark, Q where any H row it
      * reads was skipped; the passes and the tent are zero-preserving */
-    g->dark_cut = g->knee.t;
+    par->dark_cut = par->knee.t;
     const int hn = bg_node(g, fn_half, g->w[1], g->h[1], 3, 1);
     bg_input(g, hn, BG_SRC, BG_DOWN, -1, 2);
-    if (!(g->cfg.flags & BLOOM_FLAG_COPY_SOURCE)) {
+    if (!(g->cfg->flags & BLOOM_FLAG_COPY_SOURCE)) {
         /* the window keeps 6 more source rows: pointers here, but with
          * COPY_SOURCE 6 copied rows (34 KB at 1080p): there H is always made */
         bg_input(g, hn, BG_SRC, BG_DOWN, -7, 8);
@@ -402,9 +403,9 @@ static bloom_status_t build(bloom_graph_t *g)
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
     bg_input(g, o, up, BG_UP, -1, 1);
     g->out_node = o;
-    g->scratch_rows = 1; /* fn_kawase's column sums */
+    par->scratch_rows = 1; /* fn_kawase's column sums */
     if (!BLOOM_SMALL)
-        g->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
+        par->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
     return BLOOM_OK;
 }
 

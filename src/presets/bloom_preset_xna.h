@@ -1,6 +1,6 @@
 /* The xna preset's own row kernels (bloom_preset_xna.c) and their SSE2,
  * AVX2 and NEON twins (bloom_preset_xna_sse2.c, _avx2.c, _neon.c), the
- * same bits; the preset picks them by g->kern.isa. */
+ * same bits; the preset picks them by ctx->kern.isa. */
 #ifndef BLOOM_PRESET_XNA_H
 #define BLOOM_PRESET_XNA_H
 

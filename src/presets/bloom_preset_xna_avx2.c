@@ -1,6 +1,6 @@
 /* AVX2 twins of the xna preset's kernels (bloom_preset_xna.h), compiled
  * for AVX2 by a target pragma (the rest of the core stays baseline
- * x86-64), picked when the engine's kernel set is AVX2 (g->kern.isa:
+ * x86-64), picked when the engine's kernel set is AVX2 (ctx->kern.isa:
  * bloom_cpu_avx2, not BLOOM_FLAG_NO_AVX2 or NO_SIMD). Same bits as
  * xna_kawase_c and xna_screen_c (tests/test_simd_xna.c). */
 #include "bloom_preset_xna.h"

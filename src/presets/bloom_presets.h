@@ -6,14 +6,16 @@
 #include "bloom_graph.h"
 
 /* Preset hooks: defaults, parameter checks, graph construction. build()
- * sets g->L, sizes, the nodes, g->out_node and (to let dark source rows be
- * skipped) g->dark_cut; g->cfg, g->knee, g->out and the level sizes of the
- * common rule (bg_levels) are set before. */
+ * makes the graph: g->L and the sizes (the common rule's, bg_levels, are
+ * set before from g->cfg), the nodes and g->out_node; and returns in *par
+ * what its recipe changes of the parameters the engine filled in (knee,
+ * intensity, scratch rows) and what lets the engine skip work (dark_cut,
+ * views). It never sees the engine. */
 typedef struct {
     const char *name;
     void (*defaults)(bloom_config_t *cfg);
     bloom_status_t (*validate)(const bloom_config_t *cfg);
-    bloom_status_t (*build)(bloom_graph_t *g);
+    bloom_status_t (*build)(bg_graph_t *g, bg_params_t *par);
 } bloom_preset_ops_t;
 
 extern const bloom_preset_ops_t bloom_preset_unity;

@@ -9,30 +9,30 @@
 
 /* Input 0: source rows base-1 .. base+2 (BG_DOWN). Box down, then the knee;
  * false when the row came out all zero. */
-bool bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
               void *dst)
 {
     (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
 #if BLOOM_SMALL
-    bloom_row_box_src_c(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, g->w[0]);
-    return bloom_row_knee_c((uint32_t *)dst, n->w, &g->knee);
+    bloom_row_box_src_c(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w, ctx->w0);
+    return bloom_row_knee_c((uint32_t *)dst, n->w, &ctx->par.knee);
 #else
     /* the same (the SIMD kernels skip the box where the knee zeroes anyway) */
-    return g->kern.d1(s, g->out.in_fmt, g->out.linear, (uint32_t *)dst, n->w, bg_in_w(g, n, 0), &g->knee,
-                      &g->dark);
+    return ctx->kern.d1(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w,
+                        bg_in_w(ctx, n, 0), &ctx->par.knee, &ctx->dark);
 #endif
 }
 
 /* Input 0: node rows base-1 .. base+2 (BG_DOWN), 3 channels. Box down. */
-bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_box(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                void *dst)
 {
     (void)r;
     const uint32_t *const s[4] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2], (const uint32_t *)in[0][3]};
-    g->kern.box(s, (uint32_t *)dst, n->w, bg_node_in_w(g, n, 0));
+    ctx->kern.box(s, (uint32_t *)dst, n->w, bg_node_in_w(ctx, n, 0));
     return true;
 }
 
@@ -40,18 +40,18 @@ bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *co
  * level's row (BG_SAME 0..0). dst = in1 + tent(in0): the tent alone where
  * in1 is zero, a copy of in1 where the rows below are (both zero: the node
  * is zero-preserving, never run). */
-bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_add_tent(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst)
 {
     const uint32_t *d = (const uint32_t *)in[1][0];
-    if (bg_in_zero(g, 0, 0, 2)) {
+    if (bg_in_zero(ctx, 0, 0, 2)) {
         memcpy(dst, d, (size_t)n->w * 3u * sizeof *d);
         return true;
     }
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    g->kern.tent(u, r & 1, bg_in_zero(g, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w,
-                 bg_node_in_w(g, n, 0));
+    ctx->kern.tent(u, r & 1, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint32_t *)dst, 0, n->w,
+                   bg_node_in_w(ctx, n, 0));
     return true;
 }
 
@@ -59,25 +59,25 @@ bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const voi
  * m-1 .. m+1 (BG_UP); input 1: the source row (BG_SAME 0..0).
  * out = S + I * tent(in0), encoded (bloom_row_out_c); where in0 is all
  * zero, B = 0: the source row copied (bloom_row_copy_c). */
-bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
     const uint8_t *src = (const uint8_t *)in[1][0];
-    const int sw = bg_node_in_w(g, n, 0);
+    const int sw = bg_node_in_w(ctx, n, 0);
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
-    if (bg_in_zero(g, 0, 0, 2))
-        bloom_row_copy_c(src, (uint8_t *)dst, n->w, &g->out);
-    else if (bloom_kernels_simd(&g->kern))
-        bloom_row_out_k(&g->kern, u, r & 1, src, (uint8_t *)dst, n->w, sw, &g->out);
+    if (bg_in_zero(ctx, 0, 0, 2))
+        bloom_row_copy_c(src, (uint8_t *)dst, n->w, &ctx->par.out);
+    else if (bloom_kernels_simd(&ctx->kern))
+        bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     else
-        bloom_row_out_c(u, r & 1, src, (uint8_t *)dst, n->w, sw, &g->out);
+        bloom_row_out_c(u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     return true;
 }
 
 /* A zero-preserving node of level k (w, h of the level, 3 channels) made by
  * fn from rows 2r-1 .. 2r+2 of `from`, and with aux from aux rows 2r .. 2r+1. */
-static int down_node(bloom_graph_t *g, bg_row_fn fn, int k, int from, bool aux)
+static int down_node(bg_graph_t *g, bg_row_fn fn, int k, int from, bool aux)
 {
     const int n = bg_node(g, fn, g->w[k], g->h[k], 3, k);
     bg_input(g, n, from, BG_DOWN, -1, 2);
@@ -87,7 +87,7 @@ static int down_node(bloom_graph_t *g, bg_row_fn fn, int k, int from, bool aux)
     return n;
 }
 
-int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
+int bg_build_updown(bg_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
 {
     const int L = g->L;
     int D[BLOOM_MAX_LEVELS + 1];

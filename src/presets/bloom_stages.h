@@ -5,24 +5,24 @@
 
 #include "bloom_presets.h"
 
-bool bg_fn_d1(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
               void *dst);
-bool bg_fn_box(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_box(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                void *dst);
-bool bg_fn_add_tent(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_add_tent(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                     void *dst);
-bool bg_fn_out_add(const bloom_graph_t *g, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst);
 
 /* The default pipeline's down and up chains with d1_fn making level 1
  * (input 0: source rows 2r-1 .. 2r+2; input 1 with d1_aux: aux rows
  * 2r .. 2r+1), every node zero-preserving. Returns the node of U_1 (D_1
  * when L = 1). */
-int bg_build_updown(bloom_graph_t *g, bg_row_fn d1_fn, bool d1_aux);
+int bg_build_updown(bg_graph_t *g, bg_row_fn d1_fn, bool d1_aux);
 /* The output node S + I * tent(U_1) reading node u1; sets g->out_node.
  * (Inline: the default's build hook is its only caller in a default-only
  * build, the Cortex-M flash figure.) */
-static inline int bg_build_out_add(bloom_graph_t *g, int u1)
+static inline int bg_build_out_add(bg_graph_t *g, int u1)
 {
     const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, u1, BG_UP, -1, 1);

@@ -56,5 +56,6 @@ RUN_MAKE="make -s -f tests/selftest/stand.mk SB=$sb" sh tests/run.sh "$sb" good 
 st3=$?
 expect "good ones only: exit 0, closing line 0 failed" \
     '[ "$st3" -eq 0 ] && tail -n 1 "$out3" | grep -qx "[0-9]* passed, 0 failed, 0 skipped"' "$out3"
+expect "check_layout.sh catches planted breaks, no false ones" 'B=$B sh tests/selftest/check_layout_selftest.sh >"$sb/layout.out" 2>&1' "$sb/layout.out"
 echo "$pass passed, $fail failed, 0 skipped"
 [ "$fail" -eq 0 ]
