@@ -65,6 +65,8 @@ done
 # its non-static functions and variables, and its statics, macros, types
 # and tags are its own (they shadow any other module's name in it). The
 # names of include/*.h are API (listed first: known before src is read).
+# Not told apart: a member declaration, parameter or local of a lower
+# module named like a higher module's symbol counts as a use (rename it).
 awkprog='
 BEGIN {
     n = split(mods, M, " "); for (i = 1; i <= n; i++) rank[M[i]] = i; rank["base"] = 0

@@ -9,21 +9,26 @@
 #include "bloom_graph.h"
 #include "bloom_presets.h"
 
-/* How the scheduler gathers one input's rows (engine/; bloom_carve lays it
- * out, one per input of every node, in the workspace): the ring read, its
- * slots' row pointers and tags (twice over: see bg_node_t; a tile's input
- * read from a column on gets its own view of the pointers, offset, when
- * the slots stay), its slots and height; `add`, bytes still to add per row
- * (that offset, for the caller's own source rows); and a cursor: the first
- * row read by the last row made and its slot (rows only move forward, so
- * no division per row). */
-typedef struct bg_gather {
-    const void *const *ring;
-    const int32_t *tags;
-    uint16_t cap, h;
-    uint16_t row, slot;
-    uint32_t add;
-} bg_gather_t;
+/* Size, depth, parameters, formats, flags, preset and aux plane of cfg
+ * (bloom_params.c): BLOOM_OK or the most specific refusal. */
+bloom_status_t bloom_validate(const bloom_config_t *cfg);
+
+/* Workspace carving (bloom.c) is counted in 64 bits so that a
+ * configuration too big for a 32-bit address space is refused, not
+ * wrapped: n rounded up to a multiple of 8. */
+static inline uint64_t bloom_align8(uint64_t n)
+{
+    return (n + 7u) & ~(uint64_t)7u;
+}
+
+/* Ring tags hold the row number; this bit marks a row known to be all zero
+ * (or, in the source ring, a dark row). Rows are < 2^30. */
+#define BLOOM_TAG_ZERO 0x40000000
+
+static inline int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
 
 /* Each ring slot's tag (and source row pointer) is kept this many times:
  * twice with the static schedule's gathers (bg_node_t), once without. */

@@ -76,6 +76,23 @@ typedef struct {
     int8_t lo, hi;
 } bg_input_t;
 
+/* How the scheduler gathers one input's rows (engine/ fills it in: bloom_carve
+ * lays it out, one per input of every node, in the workspace, beside the
+ * node's ring): the ring read, its
+ * slots' row pointers and tags (twice over: see bg_node_t; a tile's input
+ * read from a column on gets its own view of the pointers, offset, when
+ * the slots stay), its slots and height; `add`, bytes still to add per row
+ * (that offset, for the caller's own source rows); and a cursor: the first
+ * row read by the last row made and its slot (rows only move forward, so
+ * no division per row). */
+typedef struct {
+    const void *const *ring;
+    const int32_t *tags;
+    uint16_t cap, h;
+    uint16_t row, slot;
+    uint32_t add;
+} bg_gather_t;
+
 struct bg_node {
     bg_row_fn fn;
     int w, h;     /* size */
@@ -85,7 +102,7 @@ struct bg_node {
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
     bg_input_t in[BG_MAX_IN];
 #if BLOOM_SCHED_TABLE
-    struct bg_gather *gat; /* nin of them: the scheduler's (engine/bloom_engine.h) */
+    bg_gather_t *gat; /* nin of them: the scheduler's (bloom_carve) */
 #endif
     uint32_t k[4]; /* the row function's constants */
     /* ring (not for the output node): cap rows at buf; each slot's row

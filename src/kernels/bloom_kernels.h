@@ -1,11 +1,49 @@
 /* The row kernels (kernels/): box, knee, tent, composite, the fused output
  * path and their SSE2/AVX2/NEON twins, bit-identical to the C ones, and the
- * set an engine picks at bloom_init. They use the base (bloom_internal.h)
+ * set an engine picks at bloom_init, with the rounding rules and the knee
+ * and output parameters they apply. They use the base (bloom_internal.h)
  * and the pixel formats (pixel/), nothing above them. */
 #ifndef BLOOM_KERNELS_H
 #define BLOOM_KERNELS_H
 
-#include "bloom_internal.h"
+#include "bloom_pixel.h"
+
+/* Rounding without bias (sim/docs/fixed-point.md, "Rounding without
+ * bias"). A rounding point whose ties are frequent (a shift of a sum of
+ * integers) either rounds half to even, or is paired with one that rounds
+ * half the other way: rounding every tie up adds +1/32 LSB per box and
+ * +1/16 per tent pass on average, which the up chain sums.
+ *   box:  sum / 16, half to even;
+ *   tent: vertical pass (x + 4) >> 3 (half up), horizontal pass
+ *         (x + 3) >> 3 (half down): the two ties cancel. */
+#define BLOOM_BOX_RND(sum) (((sum) + 7u + (((sum) >> 4) & 1u)) >> 4)
+#define BLOOM_VT_RND 4u
+#define BLOOM_HT_RND 3u
+/* The knee's epsilons of bloom-model.md in internal units:
+ * soft = x^2 / (4K + 0.00004) is formed as 2x^2 / (8K + KNEE_E8), with
+ * KNEE_E8 = round(0.00008 * 2^F); max(b, 0.00001) is b above
+ * 2^F / 100000 (10.49 at F = 20) and makes the factor num * KNEE_TINY_F
+ * below it (2^24 / (2^F / 100000), an integer for F <= 20). The factor
+ * is Q24 (KNEE_FBITS): at Q16 its step was 8 internal LSB on a sample of
+ * 0.5, and near the knee's lower edge, where most factors are small,
+ * rounding it to the nearest step came out low on average. */
+#define BLOOM_KNEE_E8 ((uint32_t)(((1ull << (BLOOM_LIN_BITS + 3)) + 50000u) / 100000u))
+#define BLOOM_KNEE_FBITS 24
+#define BLOOM_KNEE_TINY_F (100000u << (BLOOM_KNEE_FBITS - BLOOM_LIN_BITS))
+/* b * 100000 < 2^F <=> b < ceil(2^F / 100000) (never an integer) */
+#define BLOOM_KNEE_TINY_B ((uint32_t)(((1ull << BLOOM_LIN_BITS) + 99999u) / 100000u))
+
+/* Knee parameters, Q12.20 (sim/docs/fixed-point.md step 3). */
+typedef struct {
+    uint32_t t, k;
+} bloom_knee_t;
+
+/* How the output kernel turns B into pixels. */
+typedef struct {
+    bloom_format_t in_fmt, out_fmt;
+    bool linear, debug;
+    uint32_t intensity; /* I_q, Q16.16 */
+} bloom_out_t;
 
 /* Row kernels. Samples are interleaved R, G, B uint32_t (Q16.16).
  * Samples are Q12.20. bloom_row_box: 4x4 box down of four source rows s[0..3] (width sw) into

@@ -1,7 +1,7 @@
 /* Integer helpers: a 64-by-32 division that needs no runtime library, and
  * the sRGB curve for the intensity parameter (setup only, correctly
  * rounded by an exact multi-word comparison). */
-#include "bloom_internal.h"
+#include "bloom_pixel.h"
 
 uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d)
 {

@@ -1,12 +1,63 @@
-/* Decoding one pixel of each format to Q12.20 samples, inline, so that the
- * row loops of bloom_pixel.c and bloom_row.c specialize per format and
- * curve (`lin` is a constant at every call site). */
+/* The pixel formats (pixel/): the sRGB tables, the fixed-point helpers the
+ * curves need, pixel access, and decoding one pixel of each format to
+ * Q12.20 samples, inline, so that the row loops of bloom_pixel.c and
+ * bloom_row.c specialize per format and curve (`lin` is a constant at every
+ * call site). */
 #ifndef BLOOM_PIXEL_H
 #define BLOOM_PIXEL_H
 
 #include <string.h>
 
 #include "bloom_internal.h"
+
+/* The largest internal sample: the API's largest linear value (decoding
+ * clamps RGBQ16 words to it). */
+#define BLOOM_LIN_MAX (BLOOM_MAX_LINEAR << BLOOM_Q16_SHIFT) /* 2^28 - 16 at 20 bits */
+
+/* Internal -> Q16.16, round half to even (the value was rounded before:
+ * half up here would put every tie on the same side). */
+static inline uint32_t bloom_lin_to_q16(uint32_t v)
+{
+#if BLOOM_Q16_SHIFT == 0
+    return v;
+#else
+    const uint32_t q = v >> BLOOM_Q16_SHIFT, r = v & ((1u << BLOOM_Q16_SHIFT) - 1u);
+    const uint32_t h = 1u << (BLOOM_Q16_SHIFT - 1);
+    return q + (uint32_t)(r > h || (r == h && (q & 1u)));
+#endif
+}
+
+extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
+extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];
+extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bkt5[513];
+
+/* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
+ * source row with no channel above them is dark. */
+typedef struct {
+    uint32_t c8, c6, c5, q16;
+} bloom_dark_t;
+
+/* floor(n / d) where the quotient is known to fit in 32 bits: a native
+ * divide on 64-bit hosts (inline: the knee calls it twice a pixel), the
+ * shift-subtract loop elsewhere (no __aeabi_uldivmod on Cortex-M). */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+static inline uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d)
+{
+    return (uint32_t)(n / d);
+}
+#else
+uint32_t bloom_div_u64_u32(uint64_t n, uint32_t d);
+#endif
+/* The portable shift-subtract loop behind it (tested against '/'). */
+uint32_t bloom_div_u64_u32_loop(uint64_t n, uint32_t d);
+/* srgb_to_linear of a gamma-space Q16.16 value, integer only. */
+uint32_t bloom_srgb_to_linear_q16(uint32_t i);
+
+/* Pixel access (bloom_pixel.c). */
+void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
+/* Whether no channel of the n pixels exceeds the dark codes. */
+bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
 
 #if defined(__GNUC__) && !BLOOM_SMALL
 #define BLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
