@@ -269,13 +269,15 @@ const char *bloom_status_str(bloom_status_t st);
  * w*(2^L + 100) + 12*2^L; the source ring holds fewer than 4*2^L + 8 rows
  * (pointers, or copies). With the static schedule (BLOOM_SCHED_TABLE, all
  * but the size build) each ring slot's row pointer and tag are kept twice
- * over (under 64*2^L more bytes) and its table takes a byte per row made
- * and two per source row (under 6*h). Computed in unsigned long long: a configuration
+ * over (under 64*2^L more bytes), each node input has its gather (under
+ * 96 more bytes a level) and its table takes a byte per row made and two
+ * per source row (under 6*h). Computed in unsigned long long: a configuration
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
     (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + 100u) +                                       \
-     ((BLOOM_SCHED_TABLE ? 128ull : 64ull) << (levels)) + 64ull * (unsigned long long)(levels) +             \
+     ((BLOOM_SCHED_TABLE ? 128ull : 64ull) << (levels)) +                                                    \
+     (BLOOM_SCHED_TABLE ? 160ull : 64ull) * (unsigned long long)(levels) +                                   \
      (BLOOM_SCHED_TABLE ? 6ull * (unsigned long long)(h) : 0ull) +                                           \
      ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]

@@ -46,10 +46,18 @@ once=$(awk -F'\t' '$1 == 5 && $2 == 256 { print $3 }' "$summary")
 if [ "${again%% *}" = "${once%% *}" ]; then repeat="identical (${once%% *} instructions both times)"
 else repeat="DIFFERENT: ${once%% *} then ${again%% *} instructions"; fi
 t_all=$(($(date +%s) - t_all))
-# the scheduler's instructions (its file's functions) untiled and in 4 strips
+# the scheduler's instructions untiled and in 4 strips: every function of
+# bloom_sched.c, with the helpers inlined into it (callgrind files their
+# lines under the header they come from), and no threshold (the default 99 %
+# leaves the small functions out)
 sched_of() {
-    callgrind_annotate --auto=no "$1" 2>/dev/null |
-        awk '/bloom_sched\.c:/ { gsub(",", "", $1); n += $1 } END { print n + 0 }'
+    callgrind_annotate --auto=no --threshold=100 "$1" 2>/dev/null | awk '
+        /^ *[0-9,]+ .*:/ {
+            n = $1; gsub(",", "", n); f = $0; sub(/^[^)]*\) +/, "", f); sub(/ \[.*$/, "", f)
+            file = f; sub(/:.*/, "", file); fn = f; sub(/^[^:]*:/, "", fn)
+            cnt[fn] += n; if (file ~ /bloom_sched\.c$/) mine[fn] = 1
+        }
+        END { for (fn in mine) t += cnt[fn]; print t + 0 }'
 }
 sched_u=$(sched_of "$dir/l5.s0.out")
 sched_t=$(sched_of "$dir/l5.s480.out")
@@ -76,7 +84,8 @@ four=$(awk -F'\t' '$1 == 5 && $2 == 480 { split($3, a, " "); t = a[1] } $1 == 5 
 eight=$(awk -F'\t' '$1 == 5 && $2 == 256 { split($3, a, " "); t = a[1] } $1 == 5 && $2 == 0 { split($3, a, " "); u = a[1] }
     END { printf "%.1f", 100 * (t / u - 1) }' "$summary")
 t256=$(awk -F'\t' '$1 == 5 && $2 == 256 { split($3, a, " "); print a[10] }' "$summary")
-# issue 20's targets: 4 strips <= 8 %, 8 strips <= 25 %, the scheduler untiled <= 2196440 / 3
+# issue 20's targets: 4 strips <= 8 %, 8 strips <= 25 %, the scheduler untiled <= 2723952 / 3
+# (the scheduler before the static schedule, 692335b^, counted as sched_of does)
 met() { awk -v v="$1" -v t="$2" 'BEGIN { print (v <= t ? "met" : "**missed**") }'; }
 
 # A figure of bloom_info's strip table: levels strip column (3 = strips,
@@ -175,10 +184,11 @@ at most 8 %: $(met "$four" 8)); eight strips of 256 columns **${eight} %**
 (target at most 25 %: $(met "$eight" 25)). Of the extra of four strips, the
 scheduler (\`src/engine/bloom_sched.c\`: every strip walks its static schedule,
 one byte per row made, and gathers each row's inputs) takes $sched_x
-instructions ($sched_u untiled, $sched_t over the four strips: callgrind's
-per-file totals of these runs; before the static schedule 2196440 untiled and
-11052765 over four strips; the target, at most a third of 2196440 untiled:
-$(met "$sched_u" 732147)); the rest is the down chain over the halo and the
+instructions ($sched_u untiled, $sched_t over the four strips: every
+function of the file with what is inlined into it, no callgrind threshold;
+before the static schedule, counted the same way, 2723952 untiled and
+12031093 over four strips; the target, at most a third of 2723952 untiled:
+$(met "$sched_u" 908984)); the rest is the down chain over the halo and the
 kernels' per-row edges.
 
 Run time of this page: $t_all s under callgrind.

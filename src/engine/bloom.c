@@ -327,6 +327,12 @@ static uint64_t lay_out_gathers(bloom_t *g, uint8_t *base, uint64_t off, int cap
             ga->cap = (uint16_t)c;
             ga->h = (uint16_t)(f ? f->h : g->gr.h[0]);
             ga->add = view ? 0u : step; /* (the cursor: bloom_begin) */
+            ga->zb = c > BG_ZB_CAP ? NULL : f ? &g->gr.node[in->node].zb : &g->src_zb;
+            ga->lo = in->lo;
+            ga->hi = in->hi;
+            ga->sh = (uint8_t)(in->map == BG_DOWN ? 0 : in->map == BG_SAME ? 1 : 2);
+            ga->zmask = (2u << (in->hi - in->lo)) - 1u;
+            ga->zfull = in->node == BG_AUX ? 0u : ga->zmask;
             for (int s = 0; view && s < 2 * c; s++)
                 view[s] = (const uint8_t *)ga->ring[s] + step;
             if (view)
@@ -510,6 +516,9 @@ bloom_status_t bloom_begin(bloom_t *b)
      * the zero bit (were it read, it would not pass for a dark row) */
     for (int i = 0; i < BG_RING_COPIES * b->src_cap; i++)
         b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
+#if BLOOM_SCHED_TABLE
+    b->src_zb = 0;
+#endif
     /* node slots keep their zero bit: a slot that holds zeros still does */
     for (int i = 0; i < b->gr.nnodes; i++) {
         bg_node_t *n = &b->gr.node[i];
@@ -519,8 +528,16 @@ bloom_status_t bloom_begin(bloom_t *b)
         for (int j = 0; j < n->nin; j++)
             n->gat[j].row = n->gat[j].slot = 0; /* row 0 is in slot 0 */
 #endif
-        for (int s = 0; s < BG_RING_COPIES * n->cap; s++)
+#if BLOOM_SCHED_TABLE
+        n->zb = 0;
+#endif
+        for (int s = 0; s < BG_RING_COPIES * n->cap; s++) {
             n->tag[s] = (n->tag[s] & BLOOM_TAG_ZERO) | 0x3FFFFFFF;
+#if BLOOM_SCHED_TABLE
+            if (s < 64)
+                n->zb |= (uint64_t)((uint32_t)n->tag[s] >> 30 & 1u) << s;
+#endif
+        }
     }
     return BLOOM_OK;
 }

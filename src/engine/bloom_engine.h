@@ -59,6 +59,9 @@ struct bloom {
     const void **src_ptr, **aux_ptr;
     uint8_t *src_copy, *aux_copy;
     int32_t *src_tag;
+#if BLOOM_SCHED_TABLE
+    uint64_t src_zb; /* the source ring's zero bitmap (bg_gather_t) */
+#endif
     int src_cap;
     size_t src_row_bytes, aux_row_bytes;
     const uint8_t *aux_frame; /* bloom_set_aux */

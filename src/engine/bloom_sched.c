@@ -93,19 +93,21 @@ enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
-    const void *const *in[BG_MAX_IN] = {NULL, NULL, NULL};
+    const void *const *in[BG_MAX_IN]; /* (the row function reads in[0 .. nin - 1]) */
     int used = 0;
     bool all_zero = BLOOM_USE_SKIP && g->row.skip && n->z;
 #if BLOOM_SCHED_TABLE
-    for (int i = 0; i < n->nin; i++) {
-        const bg_input_t *ip = &n->in[i];
-        bg_gather_t *ga = &n->gat[i];
+    const int nin = n->nin;
+    bg_gather_t *ga = n->gat;
+    uint32_t *zin = g->row.zin;
+    for (int i = 0; i < nin; i++, ga++) {
         const int hin = ga->h, cap = ga->cap;
         /* rings keep their slots' row pointers and tags twice over: any
          * run of consecutive slots is one array, wrap-around included */
         const int32_t *tags = ga->tags;
         const void *const *ring = ga->ring;
-        const int b = bg_base(ip->map, r), lo = b + ip->lo, hi = b + ip->hi;
+        /* base(r) = 2r >> sh: 2r (BG_DOWN), r (BG_SAME), r >> 1 (BG_UP) */
+        const int b = (2 * r) >> ga->sh, lo = b + ga->lo, hi = b + ga->hi;
         /* the first row read moves the slot cursor: readers' rows only go
          * forward, so no division; the rows are consecutive slots from it */
         const int first = clampi(lo, 0, hin - 1), last = clampi(hi, 0, hin - 1);
@@ -123,7 +125,9 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         uint32_t zm = 0;
         if (lo == first && hi == last && !ga->add) { /* the slots' own pointers: nothing to gather */
             in[i] = ring;
-            if (BLOOM_USE_SKIP)
+            if (BLOOM_USE_SKIP && ga->zb)
+                zm = (uint32_t)(*ga->zb >> slot) & ga->zmask;
+            else if (BLOOM_USE_SKIP)
                 for (int k = 0; k <= hi - lo; k++)
                     zm |= ((uint32_t)tags[k] >> 30 & 1u) << k;
         } else { /* edge rows repeated, or a tile's column offset added */
@@ -137,8 +141,8 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         }
         if (!BLOOM_USE_SKIP)
             continue;
-        g->row.zin[i] = zm;
-        if (ip->node != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
+        zin[i] = zm;
+        if ((zm & ga->zfull) != ga->zfull)
             all_zero = false;
     }
 #else /* the size build: no cursors, no doubled rings, no aux plane, no tiles */
@@ -185,12 +189,23 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 
 /* Tag (or row pointer) v into slot s of a ring of cap slots: both copies
  * with the static schedule's doubled rings, the one otherwise. */
-static inline void put_tag(int32_t *tags, int s, int cap, int32_t v)
+static inline void put_tag(int32_t *tags, uint64_t *zb, int s, int cap, int32_t v)
 {
     tags[s] = v;
     if (BLOOM_SCHED_TABLE)
         tags[s + cap] = v;
+    if (BLOOM_SCHED_TABLE && cap <= BG_ZB_CAP) { /* the zero bit in the bitmap too (both copies) */
+        const uint64_t m = (1ull << s) | (1ull << (s + cap));
+        *zb = (v & ZBIT) ? *zb | m : *zb & ~m;
+    }
 }
+#if BLOOM_SCHED_TABLE
+#define NODE_ZB(n) (&(n)->zb)
+#define SRC_ZB(g) (&(g)->src_zb)
+#else
+#define NODE_ZB(n) NULL
+#define SRC_ZB(g) NULL
+#endif
 static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
 {
     ptrs[s] = v;
@@ -201,7 +216,7 @@ static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
 /* Node row r into its ring slot, tagged. A zero row leaves zeros in the
  * slot (a slot tagged zero holds zeros: if it did already, nothing is
  * written). */
-static void make_row(bloom_t *g, bg_node_t *n, int r)
+static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
 {
     const size_t len = (size_t)n->w * n->ch;
 #if BLOOM_SCHED_TABLE
@@ -212,14 +227,12 @@ static void make_row(bloom_t *g, bg_node_t *n, int r)
     const int s = r % n->cap;
     uint32_t *dst = n->buf + (size_t)s * len;
 #endif
+    /* (tagged after the row is made: no row function reads its own node) */
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
-    put_tag(n->tag, s, n->cap, r);
     const int made = run_row(g, n, r, dst);
-    if (!BLOOM_USE_SKIP || made == ROW_MADE)
-        return;
-    if (made == ROW_SKIPPED && !had_zeros)
+    if (BLOOM_USE_SKIP && made == ROW_SKIPPED && !had_zeros)
         memset(dst, 0, len * sizeof *dst);
-    put_tag(n->tag, s, n->cap, r | ZBIT);
+    put_tag(n->tag, NODE_ZB(n), s, n->cap, BLOOM_USE_SKIP && made != ROW_MADE ? r | ZBIT : r);
 }
 
 /* One byte of the static schedule: written when the table has its place
@@ -367,9 +380,9 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     const bool dark =
         g->row.dark_src &&
         BLOOM_KERN_DARK(&g->row.kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark);
-    put_tag(g->src_tag, slot, g->src_cap, r | (dark ? ZBIT : 0));
+    put_tag(g->src_tag, SRC_ZB(g), slot, g->src_cap, r | (dark ? ZBIT : 0));
 #else
-    put_tag(g->src_tag, slot, g->src_cap, r);
+    put_tag(g->src_tag, SRC_ZB(g), slot, g->src_cap, r);
 #endif
 #if BLOOM_SCHED_TABLE
     g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
@@ -384,26 +397,29 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
  * above it are passed (their inputs are made, they are not). */
 static bool walk_to_output(bloom_t *g)
 {
-    const bg_node_t *o = &g->gr.node[g->gr.out_node];
+    /* the output node is the last (bloom_plan checks it): a byte below it
+     * is a node row, the commonest */
+    bg_node_t *node = g->gr.node, *o = &node[g->gr.out_node];
+    const int out = g->gr.out_node;
     const uint8_t *t = g->sched;
     int at = g->sched_at;
     for (; at < g->sched_len; at++) {
         const int e = t[at];
-        if (e == BG_S_FREE) {
+        if (e < out) {
+            make_row(g, &node[e], node[e].next);
+            node[e].next++;
+        } else if (e == out) {
+            if (!bg_tiled(&g->row) || o->next >= g->tile_y0) {
+                g->sched_at = at;
+                return true;
+            }
+            o->next++;
+        } else if (e == BG_S_FREE) {
             g->src_free++;
-        } else if (e == BG_S_PUSH) {
+        } else { /* BG_S_PUSH */
             if (g->src_seen == g->src_n)
                 break;
             g->src_seen++;
-        } else if (e != g->gr.out_node) {
-            bg_node_t *n = &g->gr.node[e];
-            make_row(g, n, n->next);
-            n->next++;
-        } else if (!bg_tiled(&g->row) || o->next >= g->tile_y0) {
-            g->sched_at = at;
-            return true;
-        } else {
-            g->gr.node[g->gr.out_node].next++;
         }
     }
     g->sched_at = at;

@@ -84,14 +84,23 @@ typedef struct {
  * the slots stay), its slots and height; `add`, bytes still to add per row
  * (that offset, for the caller's own source rows); and a cursor: the first
  * row read by the last row made and its slot (rows only move forward, so
- * no division per row). */
+ * no division per row). Which rows read are zero come from the ring's
+ * bitmap zb (bit s: slot s holds a zero row, twice over as the tags) when
+ * the ring has at most BG_ZB_CAP slots, else from the tags; zmask has a bit
+ * per row read, zfull those that must be zero for the reader to be
+ * skipped (none for the aux plane: a factor). */
 typedef struct {
     const void *const *ring;
     const int32_t *tags;
+    const uint64_t *zb;
     uint16_t cap, h;
     uint16_t row, slot;
+    int8_t lo, hi; /* the input's rows base(r) + lo .. base(r) + hi (bg_input_t) */
+    uint8_t sh;    /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
     uint32_t add;
+    uint32_t zmask, zfull;
 } bg_gather_t;
+#define BG_ZB_CAP 32
 
 struct bg_node {
     bg_row_fn fn;
@@ -119,7 +128,8 @@ struct bg_node {
                       (unsigned: Thumb-2 loads them in 16-bit instructions) */
     int next;      /* next row to compute */
 #if BLOOM_SCHED_TABLE
-    int put; /* its ring slot (next % cap, kept as a cursor) */
+    int put;     /* its ring slot (next % cap, kept as a cursor) */
+    uint64_t zb; /* zero bitmap of the ring (bg_gather_t), cap <= BG_ZB_CAP */
 #endif
     /* Columns xa .. xa + w - 1 of the level (at the node's resolution) are
      * made: all of them (xa = 0) but in a tile's window, where a node makes

@@ -1,20 +1,19 @@
 /* AVX2 twins of the arm preset's row kernels (bloom_preset_arm.h; x86-64
  * with GCC or clang), the set the engine's AVX2 kernels go with
- * (ctx->kern.isa, chosen at bloom_init from the CPU). The vertical halves
- * and the up filter's horizontal half on 8 lanes, the same arithmetic as
- * the SSE2 twins (bloom_preset_arm_sse2.c: the up sums split as 64 h + l,
- * exact in 32-bit lanes); the down filter's horizontal half is the SSE2
- * one (its deinterleave does not pay on 8 lanes). Every function after the
- * target pragma is compiled for AVX2: the file needs no special flags. */
+ * (ctx->kern.isa, chosen at bloom_init from the CPU). The vertical halves,
+ * the up filter's horizontal half and the column maximum are
+ * bloom_preset_arm_simd.h on 8 lanes, the body of the SSE2 and NEON twins
+ * too (the up sums split as 64 h + l, exact in 32-bit lanes); the down
+ * filter's horizontal half is the SSE2 one (its deinterleave does not pay
+ * on 8 lanes); the 8-bit luminance and output by table gathers. Every
+ * function after the target pragma is compiled for AVX2: the file needs no
+ * special flags. */
 #include "bloom_preset_arm.h"
 #include "bloom_pixel.h"
 
 #if BLOOM_USE_ARM && defined(BLOOM_SIMD_AVX2)
 
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
-
-#define LD(p) LD8(p)
-#define ST(p, v) ST8(p, v)
 
 static inline uint32_t or_lanes(__m256i v)
 {
@@ -24,40 +23,13 @@ static inline uint32_t or_lanes(__m256i v)
     return (uint32_t)_mm_cvtsi128_si32(x);
 }
 
-static void down_v_avx2(const uint32_t *s0, const uint32_t *s1, const uint32_t *s2, const uint32_t *s3,
-                        uint32_t *c4, uint32_t *c2, int n)
-{
-    int i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const __m256i mid = _mm256_add_epi32(LD(s1 + i), LD(s2 + i));
-        ST(c2 + i, mid);
-        ST(c4 + i, _mm256_add_epi32(mid, _mm256_add_epi32(LD(s0 + i), LD(s3 + i))));
-    }
-    if (i < n)
-        bloom_arm_kern_sse2.down_v(s0 + i, s1 + i, s2 + i, s3 + i, c4 + i, c2 + i, n - i);
-}
-
 static uint32_t down_h_avx2(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int n)
 {
     return bloom_arm_kern_sse2.down_h(c4, c2, dst, n);
 }
 
-static void up_v_avx2(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, uint32_t *a, uint32_t *v,
-                      int n)
-{
-    int i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const __m256i p = LD(u0 + i), m = LD(u1 + i), q = LD(u2 + i);
-        const __m256i m3 = _mm256_add_epi32(_mm256_slli_epi32(m, 1), m);
-        ST(a + i, _mm256_add_epi32(p, m3));
-        ST(v + i, _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(p, 1), p),
-                                   _mm256_add_epi32(_mm256_slli_epi32(m, 2), q)));
-    }
-    if (i < n)
-        bloom_arm_kern_sse2.up_v(u0 + i, u1 + i, u2 + i, a + i, v + i, n - i);
-}
-
 #define X3(x) _mm256_add_epi32(_mm256_slli_epi32((x), 1), (x))
+#define X4(x) _mm256_slli_epi32((x), 2)
 #define X11(x) _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32((x), 3), _mm256_slli_epi32((x), 1)), (x))
 #define X28(x) _mm256_sub_epi32(_mm256_slli_epi32((x), 5), _mm256_slli_epi32((x), 2))
 
@@ -69,57 +41,66 @@ static inline __m256i div3(__m256i q)
     return _mm256_or_si256(e, _mm256_slli_epi64(o, 32));
 }
 
-static uint32_t up_h_avx2(const uint32_t *a, const uint32_t *v, uint32_t *dst, int np)
+static inline uint32_t max_lanes(__m256i m)
 {
-    const __m256i m63 = _mm256_set1_epi32(63), k96 = _mm256_set1_epi32(96);
-    __m256i any = _mm256_setzero_si256();
-    int i = 0;
-    for (; i + 8 <= np; i += 8) { /* reads a, v [i .. i + 9] */
-        const __m256i a0 = LD(a + i), a1 = LD(a + i + 1), a2 = LD(a + i + 2);
-        const __m256i v0 = LD(v + i), v1 = LD(v + i + 1), v2 = LD(v + i + 2);
-        const __m256i ah0 = _mm256_srli_epi32(a0, 6), ah1 = _mm256_srli_epi32(a1, 6);
-        const __m256i ah2 = _mm256_srli_epi32(a2, 6), vh0 = _mm256_srli_epi32(v0, 6);
-        const __m256i vh1 = _mm256_srli_epi32(v1, 6), vh2 = _mm256_srli_epi32(v2, 6);
-        const __m256i al0 = _mm256_and_si256(a0, m63), al1 = _mm256_and_si256(a1, m63);
-        const __m256i al2 = _mm256_and_si256(a2, m63), vl0 = _mm256_and_si256(v0, m63);
-        const __m256i vl1 = _mm256_and_si256(v1, m63), vl2 = _mm256_and_si256(v2, m63);
-        const __m256i h1 = _mm256_add_epi32(X28(ah1), X3(vh1)), l1 = _mm256_add_epi32(X28(al1), X3(vl1));
-        const __m256i he = _mm256_add_epi32(_mm256_add_epi32(h1, X11(ah0)), _mm256_add_epi32(ah2, vh0));
-        const __m256i le = _mm256_add_epi32(_mm256_add_epi32(l1, X11(al0)),
-                                            _mm256_add_epi32(al2, _mm256_add_epi32(vl0, k96)));
-        const __m256i ho = _mm256_add_epi32(_mm256_add_epi32(h1, X11(ah2)), _mm256_add_epi32(ah0, vh2));
-        const __m256i lo = _mm256_add_epi32(_mm256_add_epi32(l1, X11(al2)),
-                                            _mm256_add_epi32(al0, _mm256_add_epi32(vl2, k96)));
-        const __m256i e = div3(_mm256_add_epi32(he, _mm256_srli_epi32(le, 6)));
-        const __m256i o = div3(_mm256_add_epi32(ho, _mm256_srli_epi32(lo, 6)));
-        const __m256i p = _mm256_unpacklo_epi32(e, o), q = _mm256_unpackhi_epi32(e, o);
-        ST(dst + 2 * i, _mm256_permute2x128_si256(p, q, 0x20));
-        ST(dst + 2 * i + 8, _mm256_permute2x128_si256(p, q, 0x31));
-        any = _mm256_or_si256(any, _mm256_or_si256(e, o));
-    }
-    uint32_t r = or_lanes(any);
-    if (i < np)
-        r |= bloom_arm_kern_sse2.up_h(a + i, v + i, dst + 2 * i, np - i);
-    return r;
-}
-
-static uint32_t max3_avx2(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int n)
-{
-    if (n < 8)
-        return bloom_arm_kern_c.max3(u0, u1, u2, n);
-    __m256i m = _mm256_setzero_si256();
-    for (int i = 0;; i += 8) {
-        if (i + 8 > n) /* the last 8 again */
-            i = n - 8;
-        m = _mm256_max_epu32(m, _mm256_max_epu32(LD(u0 + i), _mm256_max_epu32(LD(u1 + i), LD(u2 + i))));
-        if (i + 8 >= n)
-            break;
-    }
     __m128i x = _mm_max_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256(m, 1));
     x = _mm_max_epu32(x, _mm_shuffle_epi32(x, _MM_SHUFFLE(1, 0, 3, 2)));
     x = _mm_max_epu32(x, _mm_shuffle_epi32(x, _MM_SHUFFLE(2, 3, 0, 1)));
     return (uint32_t)_mm_cvtsi128_si32(x);
 }
+
+/* e0 o0 e1 o1 .. e7 o7 at p (the unpacks work within 128-bit halves) */
+static inline void st2(uint32_t *p, __m256i e, __m256i o)
+{
+    const __m256i lo = _mm256_unpacklo_epi32(e, o), hi = _mm256_unpackhi_epi32(e, o);
+    ST8(p, _mm256_permute2x128_si256(lo, hi, 0x20));
+    ST8(p + 8, _mm256_permute2x128_si256(lo, hi, 0x31));
+}
+
+/* down_v, up_v, up_h, max3: bloom_preset_arm_simd.h on 8 lanes (no LD2V:
+ * down_h is the SSE2 one above); the tails to the SSE2 twins */
+#define VT __m256i
+#define W 8
+#define LDV LD8
+#define STV ST8
+#define ADDV _mm256_add_epi32
+#define ANDV _mm256_and_si256
+#define ORV _mm256_or_si256
+#define SHLV _mm256_slli_epi32
+#define SHRV _mm256_srli_epi32
+#define DUPV(c) _mm256_set1_epi32((int)(c))
+/* the even and odd sums share 28 x1 + 3 y1 */
+#define MLAV(a, x, k) _mm256_add_epi32((a), X##k(x))
+#define SUM5(x0, x1, x2, y0, y1)                                                                             \
+    _mm256_add_epi32(_mm256_add_epi32(_mm256_add_epi32(X28(x1), X3(y1)), X11(x0)),                           \
+                     _mm256_add_epi32((x2), (y0)))
+#define DIV3 div3
+#define MAXV _mm256_max_epu32
+#define MAX_LANES max_lanes
+#define OR_LANES or_lanes
+#define ST2V st2
+#define ARM_TAIL bloom_arm_kern_sse2
+#define ARM_FN(f) f##_avx2
+#include "bloom_preset_arm_simd.h"
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef ANDV
+#undef ORV
+#undef SHLV
+#undef SHRV
+#undef DUPV
+#undef MLAV
+#undef SUM5
+#undef DIV3
+#undef MAXV
+#undef MAX_LANES
+#undef OR_LANES
+#undef ST2V
+#undef ARM_TAIL
+#undef ARM_FN
 
 /* The codes of 8 pixels at s, one per 32-bit lane, channels R, G, B:
  * XRGB8888 (B G R X) by shifts; RGB888 from the 24 bytes (two 16-byte
@@ -129,7 +110,7 @@ static inline void codes8(const uint8_t *s, bool x4, __m256i c[3])
 {
     const __m256i ff = _mm256_set1_epi32(0xFF);
     if (x4) {
-        const __m256i px = LD(s);
+        const __m256i px = LD8(s);
         c[0] = _mm256_and_si256(_mm256_srli_epi32(px, 16), ff);
         c[1] = _mm256_and_si256(_mm256_srli_epi32(px, 8), ff);
         c[2] = _mm256_and_si256(px, ff);
@@ -183,13 +164,13 @@ static void lum8_avx2(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool 
             d[k] = gather(bloom_srgb_dec8, c[k]);
         const __m256i y = lum_vec(d);
         if (i == 0) {
-            ST(c4 + x, y);
+            ST8(c4 + x, y);
         } else {
-            ST(c4 + x, _mm256_add_epi32(LD(c4 + x), y));
+            ST8(c4 + x, _mm256_add_epi32(LD8(c4 + x), y));
             if (i == 1)
-                ST(c2 + x, y);
+                ST8(c2 + x, y);
             else if (i == 2)
-                ST(c2 + x, _mm256_add_epi32(LD(c2 + x), y));
+                ST8(c2 + x, _mm256_add_epi32(LD8(c2 + x), y));
         }
     }
     if (x < n)
@@ -242,7 +223,7 @@ static void out8_avx2(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
     const size_t step = x4 ? 32u : 24u;
     int x = 0;
     for (; x + 8 <= n; x += 8, src += step, dst += step) {
-        const __m256i bv = LD(b + x);
+        const __m256i bv = LD8(b + x);
         __m256i code[3], p[3], keep = _mm256_set1_epi32(-1);
         codes8(src, x4, code);
         for (int c = 0; c < 3; c++) {
@@ -258,7 +239,7 @@ static void out8_avx2(const uint8_t *src, const uint32_t *b, const uint32_t f[3]
             const __m256i px =
                 _mm256_or_si256(_mm256_or_si256(_mm256_slli_epi32(o[0], 16), _mm256_slli_epi32(o[1], 8)),
                                 _mm256_or_si256(o[2], _mm256_set1_epi32((int)0xFF000000u)));
-            ST(dst, px);
+            ST8(dst, px);
             continue;
         }
         if (same && src == dst)

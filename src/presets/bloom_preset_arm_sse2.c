@@ -1,6 +1,6 @@
 /* SSE2 twins of the arm preset's row kernels (bloom_preset_arm.h; x86-64,
- * where SSE2 is baseline). Same bits as the C kernels
- * (bloom_preset_arm_kern.c):
+ * where SSE2 is baseline): bloom_preset_arm_simd.h on 4 lanes, with the
+ * operations below. Same bits as the C kernels (bloom_preset_arm_kern.c):
  *   - the down sums stay below 2^32 as in C (and wrap like C's uint32_t);
  *   - the up filter's sums S <= 192M, which C forms in 64 bits, are formed
  *     exactly in 32-bit lanes by splitting every input t as 64 h + l
@@ -13,13 +13,6 @@
 #if BLOOM_USE_ARM && defined(BLOOM_SIMD_SSE2)
 #include "bloom_simd4.h"
 
-#define LD(p) LD4(p)
-#define ST(p, v) ST4(p, v)
-#define EVENS(p, q)                                                                                          \
-    _mm_castps_si128(_mm_shuffle_ps(_mm_castsi128_ps(p), _mm_castsi128_ps(q), _MM_SHUFFLE(2, 0, 2, 0)))
-#define ODDS(p, q)                                                                                           \
-    _mm_castps_si128(_mm_shuffle_ps(_mm_castsi128_ps(p), _mm_castsi128_ps(q), _MM_SHUFFLE(3, 1, 3, 1)))
-
 static inline uint32_t or_lanes(__m128i v)
 {
     v = _mm_or_si128(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(1, 0, 3, 2)));
@@ -27,59 +20,21 @@ static inline uint32_t or_lanes(__m128i v)
     return (uint32_t)_mm_cvtsi128_si32(v);
 }
 
-static void down_v_sse2(const uint32_t *s0, const uint32_t *s1, const uint32_t *s2, const uint32_t *s3,
-                        uint32_t *c4, uint32_t *c2, int n)
+/* The even and the odd words of p[0 .. 7] (the deinterleave of NEON's
+ * vld2q_u32). */
+typedef struct {
+    __m128i val[2];
+} arm_m128x2_t;
+static inline arm_m128x2_t ld2(const uint32_t *p)
 {
-    int i = 0;
-    for (; i + 4 <= n; i += 4) {
-        const __m128i mid = _mm_add_epi32(LD(s1 + i), LD(s2 + i));
-        ST(c2 + i, mid);
-        ST(c4 + i, _mm_add_epi32(mid, _mm_add_epi32(LD(s0 + i), LD(s3 + i))));
-    }
-    if (i < n)
-        bloom_arm_kern_c.down_v(s0 + i, s1 + i, s2 + i, s3 + i, c4 + i, c2 + i, n - i);
-}
-
-static uint32_t down_h_sse2(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int n)
-{
-    const __m128i k7 = _mm_set1_epi32(7), k1 = _mm_set1_epi32(1);
-    __m128i any = _mm_setzero_si128();
-    int x = 0;
-    for (; x + 4 <= n; x += 4) { /* reads c4, c2 [2x .. 2x + 9] */
-        const uint32_t *a = c4 + 2 * x, *b = c2 + 2 * x;
-        const __m128i a0 = LD(a), a4 = LD(a + 4), a2 = LD(a + 2), a6 = LD(a + 6);
-        const __m128i s16 = _mm_add_epi32(_mm_add_epi32(EVENS(a0, a4), ODDS(a0, a4)),
-                                          _mm_add_epi32(EVENS(a2, a6), ODDS(a2, a6)));
-        const __m128i b0 = LD(b), b4 = LD(b + 4), b2 = LD(b + 2), b6 = LD(b + 6);
-        const __m128i cc = _mm_add_epi32(ODDS(b0, b4), EVENS(b2, b6));
-        const __m128i y = _mm_add_epi32(_mm_srli_epi32(s16, 1), _mm_slli_epi32(cc, 1));
-        const __m128i t = _mm_and_si128(_mm_or_si128(_mm_srli_epi32(y, 4), s16), k1);
-        const __m128i d = _mm_srli_epi32(_mm_add_epi32(_mm_add_epi32(y, k7), t), 4);
-        ST(dst + x, d);
-        any = _mm_or_si128(any, d);
-    }
-    uint32_t r = or_lanes(any);
-    if (x < n)
-        r |= bloom_arm_kern_c.down_h(c4 + 2 * x, c2 + 2 * x, dst + x, n - x);
+    const __m128 lo = _mm_castsi128_ps(LD4(p)), hi = _mm_castsi128_ps(LD4(p + 4));
+    const arm_m128x2_t r = {{_mm_castps_si128(_mm_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))),
+                             _mm_castps_si128(_mm_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1)))}};
     return r;
 }
 
-static void up_v_sse2(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, uint32_t *a, uint32_t *v,
-                      int n)
-{
-    int i = 0;
-    for (; i + 4 <= n; i += 4) {
-        const __m128i p = LD(u0 + i), m = LD(u1 + i), q = LD(u2 + i);
-        const __m128i m3 = _mm_add_epi32(_mm_slli_epi32(m, 1), m);
-        ST(a + i, _mm_add_epi32(p, m3));
-        ST(v + i,
-           _mm_add_epi32(_mm_add_epi32(_mm_slli_epi32(p, 1), p), _mm_add_epi32(_mm_slli_epi32(m, 2), q)));
-    }
-    if (i < n)
-        bloom_arm_kern_c.up_v(u0 + i, u1 + i, u2 + i, a + i, v + i, n - i);
-}
-
 #define X3(x) _mm_add_epi32(_mm_slli_epi32((x), 1), (x))
+#define X4(x) _mm_slli_epi32((x), 2)
 #define X11(x) _mm_add_epi32(_mm_add_epi32(_mm_slli_epi32((x), 3), _mm_slli_epi32((x), 1)), (x))
 #define X28(x) _mm_sub_epi32(_mm_slli_epi32((x), 5), _mm_slli_epi32((x), 2))
 
@@ -92,39 +47,6 @@ static inline __m128i div3(__m128i q)
     return _mm_or_si128(e, _mm_slli_epi64(o, 32));
 }
 
-static uint32_t up_h_sse2(const uint32_t *a, const uint32_t *v, uint32_t *dst, int np)
-{
-    const __m128i m63 = _mm_set1_epi32(63), k96 = _mm_set1_epi32(96);
-    __m128i any = _mm_setzero_si128();
-    int i = 0;
-    for (; i + 4 <= np; i += 4) { /* reads a, v [i .. i + 5] */
-        const __m128i a0 = LD(a + i), a1 = LD(a + i + 1), a2 = LD(a + i + 2);
-        const __m128i v0 = LD(v + i), v1 = LD(v + i + 1), v2 = LD(v + i + 2);
-        const __m128i ah0 = _mm_srli_epi32(a0, 6), ah1 = _mm_srli_epi32(a1, 6), ah2 = _mm_srli_epi32(a2, 6);
-        const __m128i vh0 = _mm_srli_epi32(v0, 6), vh1 = _mm_srli_epi32(v1, 6), vh2 = _mm_srli_epi32(v2, 6);
-        const __m128i al0 = _mm_and_si128(a0, m63), al1 = _mm_and_si128(a1, m63),
-                      al2 = _mm_and_si128(a2, m63);
-        const __m128i vl0 = _mm_and_si128(v0, m63), vl1 = _mm_and_si128(v1, m63),
-                      vl2 = _mm_and_si128(v2, m63);
-        const __m128i h1 = _mm_add_epi32(X28(ah1), X3(vh1)), l1 = _mm_add_epi32(X28(al1), X3(vl1));
-        const __m128i he = _mm_add_epi32(_mm_add_epi32(h1, X11(ah0)), _mm_add_epi32(ah2, vh0));
-        const __m128i le =
-            _mm_add_epi32(_mm_add_epi32(l1, X11(al0)), _mm_add_epi32(al2, _mm_add_epi32(vl0, k96)));
-        const __m128i ho = _mm_add_epi32(_mm_add_epi32(h1, X11(ah2)), _mm_add_epi32(ah0, vh2));
-        const __m128i lo =
-            _mm_add_epi32(_mm_add_epi32(l1, X11(al2)), _mm_add_epi32(al0, _mm_add_epi32(vl2, k96)));
-        const __m128i e = div3(_mm_add_epi32(he, _mm_srli_epi32(le, 6)));
-        const __m128i o = div3(_mm_add_epi32(ho, _mm_srli_epi32(lo, 6)));
-        ST(dst + 2 * i, _mm_unpacklo_epi32(e, o));
-        ST(dst + 2 * i + 4, _mm_unpackhi_epi32(e, o));
-        any = _mm_or_si128(any, _mm_or_si128(e, o));
-    }
-    uint32_t r = or_lanes(any);
-    if (i < np)
-        r |= bloom_arm_kern_c.up_h(a + i, v + i, dst + 2 * i, np - i);
-    return r;
-}
-
 /* The samples are <= M < 2^31: the signed compare orders them. */
 static inline __m128i max_s(__m128i a, __m128i b)
 {
@@ -132,22 +54,66 @@ static inline __m128i max_s(__m128i a, __m128i b)
     return _mm_or_si128(_mm_and_si128(gt, a), _mm_andnot_si128(gt, b));
 }
 
-static uint32_t max3_sse2(const uint32_t *u0, const uint32_t *u1, const uint32_t *u2, int n)
+static inline uint32_t max_lanes(__m128i m)
 {
-    if (n < 4)
-        return bloom_arm_kern_c.max3(u0, u1, u2, n);
-    __m128i m = _mm_setzero_si128();
-    for (int i = 0;; i += 4) {
-        if (i + 4 > n) /* the last 4 again */
-            i = n - 4;
-        m = max_s(m, max_s(LD(u0 + i), max_s(LD(u1 + i), LD(u2 + i))));
-        if (i + 4 >= n)
-            break;
-    }
     m = max_s(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
     m = max_s(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(2, 3, 0, 1)));
     return (uint32_t)_mm_cvtsi128_si32(m);
 }
+
+/* e0 o0 e1 o1 .. e3 o3 at p */
+static inline void st2(uint32_t *p, __m128i e, __m128i o)
+{
+    ST4(p, _mm_unpacklo_epi32(e, o));
+    ST4(p + 4, _mm_unpackhi_epi32(e, o));
+}
+
+/* down_v, down_h, up_v, up_h, max3: bloom_preset_arm_simd.h on 4 lanes */
+#define VT __m128i
+#define W 4
+#define LDV LD4
+#define STV ST4
+#define ADDV _mm_add_epi32
+#define ANDV _mm_and_si128
+#define ORV _mm_or_si128
+#define SHLV _mm_slli_epi32
+#define SHRV _mm_srli_epi32
+#define DUPV(c) _mm_set1_epi32((int)(c))
+/* the even and odd sums share 28 x1 + 3 y1 */
+#define MLAV(a, x, k) _mm_add_epi32((a), X##k(x))
+#define SUM5(x0, x1, x2, y0, y1)                                                                             \
+    _mm_add_epi32(_mm_add_epi32(_mm_add_epi32(X28(x1), X3(y1)), X11(x0)), _mm_add_epi32((x2), (y0)))
+#define DIV3 div3
+#define MAXV max_s
+#define MAX_LANES max_lanes
+#define OR_LANES or_lanes
+#define ST2V st2
+#define VT2 arm_m128x2_t
+#define LD2V ld2
+#define ARM_TAIL bloom_arm_kern_c
+#define ARM_FN(f) f##_sse2
+#include "bloom_preset_arm_simd.h"
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef ANDV
+#undef ORV
+#undef SHLV
+#undef SHRV
+#undef DUPV
+#undef MLAV
+#undef SUM5
+#undef DIV3
+#undef MAXV
+#undef MAX_LANES
+#undef OR_LANES
+#undef ST2V
+#undef VT2
+#undef LD2V
+#undef ARM_TAIL
+#undef ARM_FN
 
 static void lum8_sse2(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i)
 {

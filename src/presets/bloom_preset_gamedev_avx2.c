@@ -8,6 +8,8 @@
  *   gauss_v, gauss_h  the 9-tap passes of gd_gauss_*_c on 8 lanes: pairs in
  *                     32-bit lanes, products and sums in 64-bit lanes
  *                     (VPMULUDQ, even lanes and odd lanes shifted down)
+ *   (these three: bloom_preset_gamedev_simd.h on 8 lanes, the body of the
+ *   SSE2 and NEON twins too)
  *
  *   lut8              the per-code table of rows without bloom, 32 bytes at
  *                     a time with no gather: the table as 16 rows of 16
@@ -49,49 +51,34 @@ static inline __m256i gauss8(__m256i c, __m256i p1, __m256i p2, __m256i p3, __m2
     return _mm256_blend_epi32(_mm256_srli_epi64(e, GQ), _mm256_slli_epi64(o, 32 - GQ), 0xAA);
 }
 
-void gd_bright_avx2(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c)
-{
-    const __m256i cv = _mm256_set1_epi8((char)(c > 255u ? 255u : c));
-    int i = 0;
-    for (; i + 32 <= n; i += 32) {
-        const __m256i m = _mm256_max_epu8(_mm256_max_epu8(LD8(s[0] + i), LD8(s[1] + i)),
-                                          _mm256_max_epu8(LD8(s[2] + i), LD8(s[3] + i)));
-        ST8(b + i, _mm256_subs_epu8(m, cv));
-    }
-    if (i < n) {
-        const uint8_t *const t[4] = {s[0] + i, s[1] + i, s[2] + i, s[3] + i};
-        gd_bright_c(t, b + i, n - i, c);
-    }
-}
-
-void gd_gauss_v_avx2(const uint32_t *const a[9], uint32_t *dst, int m)
-{
-    const uint32_t *a0 = a[0], *a1 = a[1], *a2 = a[2], *a3 = a[3], *a4 = a[4], *a5 = a[5], *a6 = a[6],
-                   *a7 = a[7], *a8 = a[8];
-    int i = 0;
-    for (; i + 8 <= m; i += 8)
-        ST8(dst + i,
-            gauss8(LD8(a4 + i), _mm256_add_epi32(LD8(a3 + i), LD8(a5 + i)),
-                   _mm256_add_epi32(LD8(a2 + i), LD8(a6 + i)), _mm256_add_epi32(LD8(a1 + i), LD8(a7 + i)),
-                   _mm256_add_epi32(LD8(a0 + i), LD8(a8 + i))));
-    if (i < m) {
-        const uint32_t *const t[9] = {a0 + i, a1 + i, a2 + i, a3 + i, a4 + i, a5 + i, a6 + i, a7 + i, a8 + i};
-        gd_gauss_v_c(t, dst + i, m - i);
-    }
-}
-
-void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1)
-{
-    int i = i0;
-    for (; i + 8 <= i1; i += 8) {
-        const uint32_t *p = v + i;
-        ST8(dst + i,
-            gauss8(LD8(p), _mm256_add_epi32(LD8(p - 3), LD8(p + 3)), _mm256_add_epi32(LD8(p - 6), LD8(p + 6)),
-                   _mm256_add_epi32(LD8(p - 9), LD8(p + 9)), _mm256_add_epi32(LD8(p - 12), LD8(p + 12))));
-    }
-    if (i < i1)
-        gd_gauss_h_c(v, dst, i, i1);
-}
+/* gd_bright, gd_gauss_v, gd_gauss_h: bloom_preset_gamedev_simd.h on 8 lanes */
+#define VT __m256i
+#define VB __m256i
+#define W 8
+#define LDV LD8
+#define STV ST8
+#define LDB LD8
+#define STB ST8
+#define ADDV _mm256_add_epi32
+#define GAUSSV gauss8
+#define DUPB(c) _mm256_set1_epi8((char)(c))
+#define MAXB _mm256_max_epu8
+#define SUBSB _mm256_subs_epu8
+#define GD_FN(f) f##_avx2
+#include "bloom_preset_gamedev_simd.h"
+#undef VT
+#undef VB
+#undef W
+#undef LDV
+#undef STV
+#undef LDB
+#undef STB
+#undef ADDV
+#undef GAUSSV
+#undef DUPB
+#undef MAXB
+#undef SUBSB
+#undef GD_FN
 
 void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
 {
