@@ -1,8 +1,9 @@
-/* The arm preset's own row kernels (bloom_preset_arm.c) and their SIMD
- * twins (bloom_preset_arm_sse2.c, _avx2.c, _neon.c), bit-identical to the
- * C ones (tests/test_simd_arm.c), picked by the engine's instruction set
- * (ctx->kern.isa). One-channel rows of Q12.20 samples <= M = 2^28 - 16
- * (sim/docs/presets/arm.md, overflow). */
+/* The arm preset's own row kernels (bloom_preset_arm_kern.c) and their SIMD
+ * twins (bloom_preset_arm_sse2.c, _avx2.c, _neon.c; the ones that differ
+ * only in lane width written once, bloom_preset_arm_simd.h), bit-identical
+ * to the C ones (tests/test_simd_arm.c), picked by the engine's
+ * instruction set (ctx->kern.isa). One-channel rows of Q12.20 samples
+ * <= M = 2^28 - 16 (sim/docs/presets/arm.md, overflow). */
 #ifndef BLOOM_PRESET_ARM_H
 #define BLOOM_PRESET_ARM_H
 

@@ -3,11 +3,11 @@
  * (ctx->kern.isa, chosen at bloom_init from the CPU). The vertical halves,
  * the up filter's horizontal half and the column maximum are
  * bloom_preset_arm_simd.h on 8 lanes, the body of the SSE2 and NEON twins
- * too (the up sums split as 64 h + l, exact in 32-bit lanes); the down
- * filter's horizontal half is the SSE2 one (its deinterleave does not pay
- * on 8 lanes); the 8-bit luminance and output by table gathers. Every
- * function after the target pragma is compiled for AVX2: the file needs no
- * special flags. */
+ * too (the up sums split as 64 h + l, exact in 32-bit lanes), their tails
+ * to the SSE2 twins; the down filter's horizontal half is the SSE2 one
+ * (its deinterleave does not pay on 8 lanes); the 8-bit luminance and
+ * output by table gathers. Every function after the target pragma is
+ * compiled for AVX2: the file needs no special flags. */
 #include "bloom_preset_arm.h"
 #include "bloom_pixel.h"
 

@@ -1,8 +1,9 @@
 /* NEON twins of the arm preset's row kernels (bloom_preset_arm.h;
  * aarch64): bloom_preset_arm_simd.h on 4 lanes, with the operations below.
- * Same bits as the C kernels (bloom_preset_arm_kern.c), the same
- * arithmetic as the SSE2 twins (bloom_preset_arm_sse2.c: the up sums split
- * as 64 h + l, exact in 32-bit lanes; q / 3 by a 32 x 32 -> 64 multiply).
+ * Same bits as the C kernels (bloom_preset_arm_kern.c; the template says
+ * why): q / 3 by a 32 x 32 -> 64 multiply (UMULL), the multiply-adds by
+ * MLA, the deinterleave and interleave of the horizontal halves by LD2 and
+ * ST2. The 8-bit luminance and output stay C (table reads).
  * Empty on other targets. */
 #include "bloom_preset_arm.h"
 

@@ -1,8 +1,7 @@
-/* The arm preset's vertical halves, the up filter's horizontal half, the
- * column maximum and (where the includer has a deinterleaving load) the
- * down filter's horizontal half on W lanes, written once for the SSE2,
- * AVX2 and NEON twins (bloom_preset_arm_{sse2,avx2,neon}.c define these
- * and include this file; nothing else does):
+/* The arm preset's down_v, up_v, up_h, max3 and (where the includer has a
+ * deinterleaving load) down_h (bloom_preset_arm.h) on W lanes, written
+ * once for the SSE2, AVX2 and NEON twins (bloom_preset_arm_{sse2,avx2,
+ * neon}.c define these and include this file; nothing else does):
  *   VT            a vector of W uint32_t lanes, wrapping like uint32_t
  *   W             its lanes
  *   LDV(p), STV(p, v)  W words, unaligned
@@ -26,9 +25,10 @@
  * S <= 192 M, which C forms in 64 bits, are formed exactly in 32-bit
  * lanes by splitting every input t as 64 h + l (l < 64): S + 96 =
  * 64 Sh + (Sl + 96), so q = (S + 96) >> 6 = Sh + ((Sl + 96) >> 6), with
- * Sh <= 3 M < 2^30 and Sl + 96 < 2^12, and DIV3 is C's q / 3 of
- * bloom_arm_div192; the maximum is a maximum. Rows shorter than W go to
- * the C kernels, the tails to ARM_TAIL. */
+ * Sh <= 3 M < 2^30 and Sl + 96 < 2^12, and DIV3 is the q / 3 of C's
+ * bloom_arm_div192; every sample is <= M < 2^31, so MAXV may compare
+ * signed (SSE2). max3 of fewer than W columns goes to the C kernel, every
+ * other tail to ARM_TAIL. */
 
 static void ARM_FN(down_v)(const uint32_t *s0, const uint32_t *s1, const uint32_t *s2, const uint32_t *s3,
                            uint32_t *c4, uint32_t *c2, int n)

@@ -1,12 +1,9 @@
 /* SSE2 twins of the arm preset's row kernels (bloom_preset_arm.h; x86-64,
  * where SSE2 is baseline): bloom_preset_arm_simd.h on 4 lanes, with the
- * operations below. Same bits as the C kernels (bloom_preset_arm_kern.c):
- *   - the down sums stay below 2^32 as in C (and wrap like C's uint32_t);
- *   - the up filter's sums S <= 192M, which C forms in 64 bits, are formed
- *     exactly in 32-bit lanes by splitting every input t as 64 h + l
- *     (l < 64): S + 96 = 64 Sh + (Sl + 96), so q = (S + 96) >> 6 =
- *     Sh + ((Sl + 96) >> 6), with Sh <= 3M < 2^30 and Sl + 96 < 2^12;
- *     q / 3 = (q * 0xAAAAAAAB) >> 33 by pmuludq (32 x 32 -> 64), as in C.
+ * operations below. Same bits as the C kernels (bloom_preset_arm_kern.c;
+ * the template says why): q / 3 = (q * 0xAAAAAAAB) >> 33 by pmuludq
+ * (32 x 32 -> 64), as in C; the maximum by a signed compare (samples
+ * <= M < 2^31). The 8-bit luminance and output stay C (table reads).
  * Empty on other targets. */
 #include "bloom_preset_arm.h"
 

@@ -1,8 +1,9 @@
 /* The gamedev preset's row kernels (sim/docs/presets/gamedev.md, "Kernels"):
  * the 9-tap Gaussian's two passes and the 8-bit tone curve, in C
- * (bloom_preset_gamedev.c) and as SSE2 / AVX2 / NEON twins with the same
- * bits (bloom_preset_gamedev_{sse2,avx2,neon}.c), picked by the engine's
- * instruction set (ctx->kern.isa, chosen once at bloom_init). */
+ * (bloom_preset_gamedev_kern.c) and as SSE2 / AVX2 / NEON twins with the
+ * same bits (bloom_preset_gamedev_{sse2,avx2,neon}.c; the Gaussian and the
+ * dark-block test written once, bloom_preset_gamedev_simd.h), picked by
+ * the engine's instruction set (ctx->kern.isa, chosen once at bloom_init). */
 #ifndef BLOOM_PRESET_GAMEDEV_K_H
 #define BLOOM_PRESET_GAMEDEV_K_H
 
