@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include <poll.h>
+#include <signal.h>
 
 #include <linux/fb.h>
 
@@ -49,6 +50,9 @@ typedef struct {
     long frames;                /* --frames N, 0 = until a signal */
     int buffers;                /* --buffers N, 2..CAM_MAX_BUFFERS (default 4) */
     int timeout_ms;             /* --timeout MS for poll (default 2000) */
+    long reconnect_s;           /* --reconnect S: how long to try to get a lost device back (0: off) */
+    int latest;                 /* --latest on|off (default on) */
+    int debounce_ms;            /* --debounce MS for --gpio-button (default 30) */
     int threads;                /* --threads N, 0 (default): the online CPUs; 1: the row path */
     enum cam_mode mode;         /* --mode bloom|off|bloom-only */
     int stats;                  /* --stats */
@@ -107,16 +111,31 @@ typedef struct {
 } cam_place_t;
 void cam_place(int fw, int fh, int sw, int sh, cam_place_t *p);
 
+/* Exit statuses of bloom_cam (port/linux/README.md): a stop signal or the
+ * frames asked for, 0; what a persistent failure was otherwise. */
+enum {
+    CAM_EXIT_OK = 0,
+    CAM_EXIT_FAULT = 1,  /* anything else: --record, memory, the engine at run time */
+    CAM_EXIT_CONFIG = 2, /* the options, or what they ask of the devices (a format, a GPIO line) */
+    CAM_EXIT_DEVICE = 3, /* the camera was lost and did not come back (--reconnect) */
+    CAM_EXIT_DISPLAY = 4 /* the framebuffer could not be opened or shown */
+};
+
 /* ---- capture (v4l2.c) ------------------------------------------------------ */
 typedef struct {
     void *start;
     size_t length;
 } cam_vbuf_t;
 
-/* The system calls capture goes through: ioctl(2) and poll(2) unless a test
- * puts a scripted fake here (test_host.c); cam_v4l2_open sets the defaults. */
+/* The system calls capture goes through: ioctl(2) and ppoll(2) unless a
+ * test puts a scripted fake here (test_host.c); cam_v4l2_open sets the
+ * defaults. The wait takes the signal mask to wait with (NULL: the
+ * current one): the stop signals are blocked outside the wait and let
+ * through only inside it, so one that comes between the loop's look at its
+ * flag and the wait ends the wait (EINTR) instead of being lost until the
+ * timeout. */
 typedef int (*cam_ioctl_fn)(int fd, unsigned long req, void *arg);
-typedef int (*cam_poll_fn)(struct pollfd *fds, nfds_t nfds, int timeout_ms);
+typedef int (*cam_poll_fn)(struct pollfd *fds, nfds_t nfds, int timeout_ms, const sigset_t *mask);
 
 typedef struct {
     int fd;
@@ -127,20 +146,41 @@ typedef struct {
     cam_vbuf_t bufs[CAM_MAX_BUFFERS];
     int nbufs, streaming;
     char card[32], driver[16];
+    const sigset_t *wait_mask; /* the signal mask inside the wait (NULL: the current one) */
+    int lost;                  /* after a -1: CAM_LOST_* (what kind of fault) */
+    int quiet;                 /* keep messages in msg only (a reconnection's attempts) */
+    char msg[200];             /* the last message */
 } cam_v4l2_t;
+
+/* What a fault was (cam_v4l2_t.lost): the device stopped delivering
+ * (timeout), went away or failed (ENODEV, EIO, POLLERR, ...), or refuses
+ * what was asked of it (a configuration: no reconnection mends it). */
+enum { CAM_LOST_NONE = 0, CAM_LOST_TIMEOUT, CAM_LOST_DEVICE, CAM_LOST_CONFIG };
+/* A frame that came but cannot be shown (cam_frame_t.bad): requeued and
+ * counted, never fatal. */
+enum { CAM_BAD_NONE = 0, CAM_BAD_FLAGGED, CAM_BAD_SHORT };
 
 typedef struct {
     int index;
     uint32_t sequence, bytesused;
     const uint8_t *data;
+    int bad; /* CAM_BAD_* (cam_v4l2_dequeue returned 2) */
 } cam_frame_t;
 
-/* Each returns 0, or -1 after printing "bloom_cam: CALL: reason". */
+/* Each returns 0, or -1 after printing "bloom_cam: CALL: reason" (and
+ * c->lost says what kind). */
 int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int nbufs);
 int cam_v4l2_start(cam_v4l2_t *c);
 /* Wait for and dequeue one frame: 0 got one, 1 interrupted by a signal
- * (nothing dequeued), -1 fault (message printed). */
+ * (nothing dequeued), 2 a bad frame (flagged V4L2_BUF_FLAG_ERROR or
+ * short: f->bad says which, f->sequence its number; already requeued, no
+ * message), -1 fault (message printed, c->lost says what kind). */
 int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready, cam_frame_t *f);
+/* The newest frame ready (--latest): while another buffer is already
+ * done, *f is requeued and that one taken instead, without waiting. Adds
+ * the frames passed over to *skipped and the bad ones to bad[CAM_BAD_*].
+ * 0, or -1 on a fault (as cam_v4l2_dequeue; *f is then requeued already). */
+int cam_v4l2_latest(cam_v4l2_t *c, cam_frame_t *f, long *skipped, long bad[3]);
 int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
 void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
 /* ioctl(2), retried while it fails with EINTR. */
@@ -170,11 +210,17 @@ void cam_fb_close(cam_fb_t *fb);         /* restore pan and var, unmap, close */
 typedef struct cam_gpio cam_gpio_t;
 extern const int cam_gpio_available; /* 0 when built without libgpiod */
 /* Request the lines (either spec may be unset): 0, or -1 after a message. */
-int cam_gpio_open(cam_gpio_t **g, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button);
+int cam_gpio_open(cam_gpio_t **g, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button,
+                  int debounce_ms);
 void cam_gpio_frame(cam_gpio_t *g, int high);
 int cam_gpio_button_fd(cam_gpio_t *g); /* -1 without a button */
-/* Read the pending edge events; returns how many presses (falling edges). */
+/* Read the pending edge events; returns how many presses (falling edges
+ * at least the debounce time after the last press counted). */
 int cam_gpio_button_presses(cam_gpio_t *g);
+/* Whether an edge at t_ns (nanoseconds, one clock) counts as a press:
+ * the first does, then only one at least ms after the last counted;
+ * *last_ns is the last counted (start it at INT64_MIN). Pure. */
+int cam_debounce(int64_t *last_ns, int64_t t_ns, int ms);
 void cam_gpio_close(cam_gpio_t *g);
 
 /* ---- whole frames on threads (cam_mt.c) ------------------------------------

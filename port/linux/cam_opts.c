@@ -34,9 +34,18 @@ void cam_usage(void *stream)
           "  --baked               arm: the baked bloom map (--aux) instead of the pyramid\n"
           "  --radius PX           cod: levels for a glow of about PX pixels (not --levels)\n"
           "  --mode M              bloom | off | bloom-only: what to show first (default bloom)\n"
-          "  --frames N            stop after N frames (default: until SIGINT/SIGTERM)\n"
+          "  --frames N            stop after N frames (default: until a stop signal:\n"
+          "                        INT, TERM, HUP, QUIT, or PIPE from --record\n"
           "  --buffers N           capture buffers, 2..16 (default 4)\n"
-          "  --timeout MS          longest wait for a frame (default 2000)\n"
+          "  --timeout MS          longest wait for a frame (default 2000): then the device\n"
+          "                        counts as lost\n"
+          "  --reconnect S|off     a lost device (stalled, unplugged, failing) is closed and\n"
+          "                        opened again, backing off, for up to S seconds\n"
+          "                        (default 30); off: a lost device ends the run\n"
+          "  --latest on|off       show the newest frame ready, skipping older ones\n"
+          "                        (default on: latency stays one frame)\n"
+          "  --debounce MS         presses of --gpio-button closer than MS count once\n"
+          "                        (default 30; 0: every falling edge)\n"
           "  --threads N           N strips of each frame on N threads, 0..64 (0, default: the\n"
           "                        online CPUs); 1: row by row as the camera delivers them\n"
           "                        (lowest latency and memory); more: whole frames, the same\n"
@@ -142,13 +151,12 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
     return 0;
 }
 
-static const char *const with_value[] = {"--device",        "--fb",          "--size",    "--format",
-                                         "--levels",        "--threshold",   "--knee",    "--intensity",
-                                         "--mode",          "--frames",      "--buffers", "--timeout",
-                                         "--gpio-frame",    "--gpio-button", "--record",  "--dump-fb",
-                                         "--preset",        "--strength",    "--passes",  "--attenuation",
-                                         "--max-reduction", "--aux",         "--tint",    "--weights",
-                                         "--radius",        "--threads",     NULL};
+static const char *const with_value[] = {
+    "--device",     "--fb",          "--size",          "--format",  "--levels",   "--threshold",
+    "--knee",       "--intensity",   "--mode",          "--frames",  "--buffers",  "--timeout",
+    "--gpio-frame", "--gpio-button", "--record",        "--dump-fb", "--preset",   "--strength",
+    "--passes",     "--attenuation", "--max-reduction", "--aux",     "--tint",     "--weights",
+    "--radius",     "--threads",     "--reconnect",     "--latest",  "--debounce", NULL};
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -263,6 +271,9 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     o->intensity = d.intensity;
     o->buffers = 4;
     o->timeout_ms = 2000;
+    o->reconnect_s = 30;
+    o->latest = 1;
+    o->debounce_ms = 30;
     o->mode = CAM_MODE_BLOOM;
     o->preset = BLOOM_PRESET_UNITY;
     unsigned given = 0;
@@ -402,6 +413,23 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             if (parse_long(v, 1, 3600000L, &l))
                 return fail(err, errlen, "--timeout: '%s' is not 1..3600000 ms", v);
             o->timeout_ms = (int)l;
+        } else if (!strcmp(name, "--reconnect")) {
+            if (!strcmp(v, "off"))
+                o->reconnect_s = 0;
+            else if (!strcmp(v, "on"))
+                o->reconnect_s = 30;
+            else if (parse_long(v, 1, 86400L * 365, &l))
+                return fail(err, errlen, "--reconnect: '%s' is not off, on or 1..31536000 seconds", v);
+            else
+                o->reconnect_s = l;
+        } else if (!strcmp(name, "--latest")) {
+            if (strcmp(v, "on") && strcmp(v, "off"))
+                return fail(err, errlen, "--latest: '%s' is not on or off", v);
+            o->latest = !strcmp(v, "on");
+        } else if (!strcmp(name, "--debounce")) {
+            if (parse_long(v, 0, 10000L, &l))
+                return fail(err, errlen, "--debounce: '%s' is not 0..10000 ms", v);
+            o->debounce_ms = (int)l;
         } else if (!strcmp(name, "--threads")) {
             if (parse_long(v, 0, BLOOM_MT_MAX_THREADS, &l))
                 return fail(err, errlen, "--threads: '%s' is not 0..%d (0: the online CPUs)", v,

@@ -5,18 +5,29 @@
  * the life of the process and released by cam_gpio_close.
  * Built without libgpiod (CAM_NO_GPIOD) the options are refused. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cam.h"
 
+int cam_debounce(int64_t *last_ns, int64_t t_ns, int ms)
+{
+    if (*last_ns != INT64_MIN && t_ns - *last_ns < (int64_t)ms * 1000000)
+        return 0; /* a bounce of the last press (or of its release) */
+    *last_ns = t_ns;
+    return 1;
+}
+
 #ifdef CAM_NO_GPIOD
 
 const int cam_gpio_available = 0;
 
-int cam_gpio_open(cam_gpio_t **g, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button)
+int cam_gpio_open(cam_gpio_t **g, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button,
+                  int debounce_ms)
 {
+    (void)debounce_ms;
     *g = NULL;
     if (frame->set || button->set) {
         fprintf(stderr, "%s: GPIO: built without libgpiod\n", CAM_PROG);
@@ -54,6 +65,8 @@ struct cam_gpio {
     struct gpiod_chip *frame_chip, *button_chip;
     struct gpiod_line *frame, *button;
     int frame_high;
+    int debounce_ms;
+    int64_t last_press_ns;
 };
 
 static struct gpiod_line *find_line(struct gpiod_chip **chip, const cam_gpio_spec_t *s, const char *opt)
@@ -83,7 +96,8 @@ static struct gpiod_line *find_line(struct gpiod_chip **chip, const cam_gpio_spe
     return l;
 }
 
-int cam_gpio_open(cam_gpio_t **out, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button)
+int cam_gpio_open(cam_gpio_t **out, const cam_gpio_spec_t *frame, const cam_gpio_spec_t *button,
+                  int debounce_ms)
 {
     *out = NULL;
     if (!frame->set && !button->set)
@@ -94,6 +108,11 @@ int cam_gpio_open(cam_gpio_t **out, const cam_gpio_spec_t *frame, const cam_gpio
         return -1;
     }
     *out = g;
+    /* libgpiod 1.x (Debian bookworm) asks the kernel for no debounce (its
+     * v1 line requests have no such attribute): presses are debounced here,
+     * on the kernel's event timestamps */
+    g->debounce_ms = debounce_ms;
+    g->last_press_ns = INT64_MIN;
     if (frame->set) {
         g->frame = find_line(&g->frame_chip, frame, "--gpio-frame");
         if (!g->frame)
@@ -148,7 +167,10 @@ int cam_gpio_button_presses(cam_gpio_t *g)
         if (n <= 0)
             break;
         for (int i = 0; i < n; i++)
-            presses += ev[i].event_type == GPIOD_LINE_EVENT_FALLING_EDGE;
+            if (ev[i].event_type == GPIOD_LINE_EVENT_FALLING_EDGE)
+                presses +=
+                    cam_debounce(&g->last_press_ns, (int64_t)ev[i].ts.tv_sec * 1000000000 + ev[i].ts.tv_nsec,
+                                 g->debounce_ms);
     }
     return presses;
 }

@@ -6,6 +6,7 @@
  * pan, requeue. With --threads N > 1 the frame goes whole through a pool of
  * strip engines instead (cam_mt.c). All memory is taken before the first
  * frame. */
+#define _GNU_SOURCE /* ppoll(2), in glibc beside POSIX 2008 */
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -226,37 +227,126 @@ static int process(cam_t *c, enum cam_mode mode, const uint8_t *data, uint8_t *p
     return pull_rows(c, b, page);
 }
 
-static void stats_line(const char *what, long frames, long dropped, double t0, double t1, double proc_sum,
+/* What the run went through, for --stats and the summary. */
+typedef struct {
+    long frames, dropped, skipped, bad[3], reconnects;
+} cam_counts_t;
+
+static void stats_line(const char *what, const cam_counts_t *n, double t0, double t1, double proc_sum,
                        double proc_min, double proc_max)
 {
     double el = t1 - t0;
+    const long frames = n->frames;
     fprintf(stderr,
             "%s: %s: %ld frames, %.2f fps, %ld dropped, processing %.2f ms/frame "
-            "(min %.2f, max %.2f)\n",
-            CAM_PROG, what, frames, el > 0 ? (double)frames / el : 0.0, dropped,
-            frames ? proc_sum * 1e3 / (double)frames : 0.0, frames ? proc_min * 1e3 : 0.0, proc_max * 1e3);
+            "(min %.2f, max %.2f); %ld skipped for newer (--latest), %ld bad (%ld flagged, %ld short), "
+            "%ld reconnects\n",
+            CAM_PROG, what, frames, el > 0 ? (double)frames / el : 0.0, n->dropped,
+            frames ? proc_sum * 1e3 / (double)frames : 0.0, frames ? proc_min * 1e3 : 0.0, proc_max * 1e3,
+            n->skipped, n->bad[CAM_BAD_FLAGGED] + n->bad[CAM_BAD_SHORT], n->bad[CAM_BAD_FLAGGED],
+            n->bad[CAM_BAD_SHORT], n->reconnects);
 }
 
+static const char *signal_name(int sig)
+{
+    switch (sig) {
+    case SIGINT:
+        return "SIGINT";
+    case SIGHUP:
+        return "SIGHUP";
+    case SIGQUIT:
+        return "SIGQUIT";
+    case SIGPIPE:
+        return "SIGPIPE";
+    default:
+        return "SIGTERM";
+    }
+}
+
+/* Sleep ms, or less when a stop signal comes (the mask lets them in). */
+static void nap(cam_t *c, int ms)
+{
+    const struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
+    ppoll(NULL, 0, &t, c->cap.wait_mask);
+}
+
+/* The camera was lost (c->cap.lost): close it and open it again by its
+ * path (a /dev/v4l/by-id link follows the device across re-enumeration),
+ * backing off from 100 ms to 2 s between attempts, until --reconnect
+ * seconds after lost_at, when the last good frame was followed by the
+ * first fault (a device that opens but never delivers counts as lost
+ * all along). It must come back with the format the engines were made for.
+ * 0 when it streams again, 1 on a stop signal, CAM_EXIT_DEVICE when it did
+ * not come back. */
+static int reconnect(cam_t *c, double lost_at)
+{
+    const int w = c->cap.width, h = c->cap.height;
+    const uint32_t pf = c->cap.pixelformat, bpl = c->cap.bytesperline;
+    char why[sizeof c->cap.msg]; /* the fault that brought us here, then each attempt's */
+    snprintf(why, sizeof why, "%s", c->cap.msg);
+    cam_v4l2_close(&c->cap); /* every handle closed: vivid, uvcvideo let the device go */
+    const double give_up = lost_at + (double)c->o.reconnect_s;
+    int delay = 100, status = 1;
+    c->cap.quiet = 1;
+    while (!stop_signal) {
+        if (now_s() >= give_up) { /* it opens, perhaps, but no frame came for that long */
+            fprintf(stderr, "%s: reconnect: %s did not come back within %ld s (last: %s)\n", CAM_PROG,
+                    c->o.device, c->o.reconnect_s, why);
+            status = CAM_EXIT_DEVICE;
+            break;
+        }
+        if (!c->o.quiet && delay == 100)
+            fprintf(stderr, "%s: reconnect: %s lost, trying for %.1f s more\n", CAM_PROG, c->o.device,
+                    give_up - now_s());
+        nap(c, delay);
+        if (stop_signal)
+            break;
+        int ok = !cam_v4l2_open(&c->cap, c->o.device, c->o.width, c->o.height, c->o.format, c->o.buffers);
+        if (ok && (c->cap.width != w || c->cap.height != h || c->cap.pixelformat != pf ||
+                   c->cap.bytesperline != bpl)) {
+            snprintf(c->cap.msg, sizeof c->cap.msg, "came back as %dx%d, bytesperline %u, not %dx%d, %u",
+                     c->cap.width, c->cap.height, (unsigned)c->cap.bytesperline, w, h, (unsigned)bpl);
+            ok = 0;
+        }
+        if (ok && !cam_v4l2_start(&c->cap)) {
+            if (!c->o.quiet)
+                fprintf(stderr, "%s: reconnect: %s streams again\n", CAM_PROG, c->o.device);
+            status = 0;
+            break;
+        }
+        snprintf(why, sizeof why, "%s", c->cap.msg);
+        cam_v4l2_close(&c->cap);
+        delay = delay < 1000 ? delay * 2 : 2000;
+    }
+    c->cap.quiet = 0;
+    return status;
+}
+
+/* The frame loop. Returns the exit status (CAM_EXIT_*). */
 static int run(cam_t *c)
 {
-    int fault = 0;
-    long frames = 0, dropped = 0, win_frames = 0, win_dropped = 0;
+    int status = CAM_EXIT_OK;
+    cam_counts_t n, win;
+    memset(&n, 0, sizeof n);
+    memset(&win, 0, sizeof win);
     uint32_t last_seq = 0;
+    int have_seq = 0;
+    double lost_at = 0; /* the first fault since the last good frame (0: none) */
     double t_start = 0, t_win = 0, psum = 0, pmin = 1e9, pmax = 0;
     double wsum = 0, wmin = 1e9, wmax = 0;
     enum cam_mode mode = c->o.mode;
     const int bfd = cam_gpio_button_fd(c->gpio);
 
     if (cam_v4l2_start(&c->cap))
-        return -1;
-    while (!stop_signal && (c->o.frames == 0 || frames < c->o.frames)) {
+        return c->cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
+    while (!stop_signal && (c->o.frames == 0 || n.frames < c->o.frames)) {
         cam_frame_t f;
         int button = 0;
         int r = cam_v4l2_dequeue(&c->cap, c->o.timeout_ms, bfd, &button, &f);
         if (button) {
-            int n = cam_gpio_button_presses(c->gpio);
-            if (n) {
-                for (int k = 0; k < n; k++) /* skipping a mode the preset cannot show */
+            int k = cam_gpio_button_presses(c->gpio);
+            if (k) {
+                for (int i = 0; i < k; i++) /* skipping a mode the preset cannot show */
                     do
                         mode = (enum cam_mode)(((int)mode + 1) % CAM_MODE_COUNT);
                     while (!c->eng[mode] && !c->mt.mt[mode]);
@@ -266,21 +356,61 @@ static int run(cam_t *c)
         }
         if (r == 1)
             continue; /* a signal: the loop condition decides */
-        if (r < 0) {
-            fault = 1;
-            break;
+        if (r == 2) { /* flagged or short: requeued, counted, the run goes on */
+            n.bad[f.bad]++;
+            win.bad[f.bad]++;
+            if (!c->o.quiet && n.bad[f.bad] == 1)
+                fprintf(stderr, "%s: frame %u %s: skipped (counted from here on, not told again)\n", CAM_PROG,
+                        (unsigned)f.sequence,
+                        f.bad == CAM_BAD_FLAGGED ? "flagged V4L2_BUF_FLAG_ERROR" : "short (bytesused)");
+            continue;
         }
-        if (frames == 0) {
+        if (r == 0 && c->o.latest) {
+            const long sk = n.skipped, b1 = n.bad[1], b2 = n.bad[2];
+            r = cam_v4l2_latest(&c->cap, &f, &n.skipped, n.bad);
+            win.skipped += n.skipped - sk;
+            win.bad[1] += n.bad[1] - b1;
+            win.bad[2] += n.bad[2] - b2;
+        }
+        if (r < 0) {
+            if (c->cap.lost == CAM_LOST_CONFIG || !c->o.reconnect_s) {
+                status = c->cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
+                break;
+            }
+            if (lost_at == 0)
+                lost_at = now_s();
+            const int rc = reconnect(c, lost_at);
+            if (rc == 1)
+                break; /* a stop signal while trying */
+            if (rc) {
+                status = rc;
+                break;
+            }
+            n.reconnects++;
+            win.reconnects++;
+            have_seq = 0; /* its sequence numbers start again */
+            continue;
+        }
+        lost_at = 0;
+        if (n.frames == 0)
             t_start = t_win = now_s();
-        } else if (f.sequence > last_seq + 1) {
-            dropped += (long)(f.sequence - last_seq - 1);
-            win_dropped += (long)(f.sequence - last_seq - 1);
+        /* frames the driver dropped, and ours skipped: modulo 2^32 (the
+         * sequence number wraps) */
+        const uint32_t gap = f.sequence - last_seq;
+        if (have_seq && gap > 1u && gap < 0x80000000u) {
+            n.dropped += (long)(gap - 1u);
+            win.dropped += (long)(gap - 1u);
         }
         last_seq = f.sequence;
+        have_seq = 1;
         if (c->rec_fd >= 0 &&
             write_all(c->rec_fd, f.data, (size_t)c->cap.bytesperline * (size_t)c->cap.height)) {
-            fprintf(stderr, "%s: write %s: %s\n", CAM_PROG, c->o.record, strerror(errno));
-            fault = 1;
+            if (errno == EPIPE) { /* the reader of --record went away: SIGPIPE (blocked) says stop */
+                stop_signal = SIGPIPE;
+            } else {
+                fprintf(stderr, "%s: write %s: %s\n", CAM_PROG, c->o.record, strerror(errno));
+                status = CAM_EXIT_FAULT;
+            }
             cam_v4l2_requeue(&c->cap, &f);
             break;
         }
@@ -293,12 +423,22 @@ static int run(cam_t *c)
         double dt = now_s() - p0;
         cam_gpio_frame(c->gpio, 0);
         c->last_page = page;
-        if (pr || cam_fb_show(&c->fb) || cam_v4l2_requeue(&c->cap, &f)) {
-            fault = 1;
+        if (pr) {
+            status = CAM_EXIT_FAULT;
             break;
         }
-        frames++;
-        win_frames++;
+        if (cam_fb_show(&c->fb)) {
+            status = CAM_EXIT_DISPLAY;
+            break;
+        }
+        if (cam_v4l2_requeue(&c->cap, &f)) { /* lost: the next dequeue sees it too */
+            if (!c->o.reconnect_s) {
+                status = CAM_EXIT_DEVICE;
+                break;
+            }
+        }
+        n.frames++;
+        win.frames++;
         psum += dt;
         wsum += dt;
         pmin = dt < pmin ? dt : pmin;
@@ -308,19 +448,19 @@ static int run(cam_t *c)
         if (c->o.stats) {
             double t = now_s();
             if (t - t_win >= 1.0) {
-                stats_line("last second", win_frames, win_dropped, t_win, t, wsum, wmin, wmax);
+                stats_line("last second", &win, t_win, t, wsum, wmin, wmax);
                 t_win = t;
-                win_frames = win_dropped = 0;
+                memset(&win, 0, sizeof win);
                 wsum = wmax = 0;
                 wmin = 1e9;
             }
         }
     }
     if (stop_signal && !c->o.quiet)
-        fprintf(stderr, "%s: stopping on %s\n", CAM_PROG, stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
+        fprintf(stderr, "%s: stopping on %s\n", CAM_PROG, signal_name(stop_signal));
     if (c->o.stats || !c->o.quiet)
-        stats_line("total", frames, dropped, t_start, frames ? now_s() : t_start, psum, pmin, pmax);
-    return fault ? -1 : 0;
+        stats_line("total", &n, t_start, n.frames ? now_s() : t_start, psum, pmin, pmax);
+    return status;
 }
 
 static int dump_fb(cam_t *c)
@@ -354,32 +494,57 @@ int main(int argc, char **argv)
     if (pr < 0) {
         fprintf(stderr, "%s: %s\n", CAM_PROG, err);
         cam_usage(stderr);
-        return 2;
+        return CAM_EXIT_CONFIG;
     }
 
+    /* The stop signals (a dropped SSH session's SIGHUP, SIGQUIT, SIGPIPE
+     * from a --record pipe whose reader went away, SIGINT, SIGTERM) set the
+     * flag and end the run through the one teardown below. They are blocked
+     * but inside the waits (ppoll with wait_mask), so none falls between the
+     * loop's look at the flag and the wait; the pool's threads, started
+     * later, inherit the block. */
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
+    static sigset_t wait_mask;
+    sigset_t block;
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal; /* no SA_RESTART: poll returns EINTR */
+    sa.sa_handler = on_signal; /* no SA_RESTART: the wait returns EINTR */
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    sigemptyset(&block);
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
+        sigaction(stops[i], &sa, NULL);
+        sigaddset(&block, stops[i]);
+    }
+    sigprocmask(SIG_BLOCK, &block, &wait_mask);
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++)
+        sigdelset(&wait_mask, stops[i]);
+    c.cap.wait_mask = &wait_mask;
 
-    int status = 1;
-    if (cam_v4l2_open(&c.cap, c.o.device, c.o.width, c.o.height, c.o.format, c.o.buffers))
+    int status = CAM_EXIT_FAULT;
+    if (cam_v4l2_open(&c.cap, c.o.device, c.o.width, c.o.height, c.o.format, c.o.buffers)) {
+        status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
         goto out;
-    if (cam_fb_open(&c.fb, c.o.fb, c.cap.width, c.cap.height))
+    }
+    if (cam_fb_open(&c.fb, c.o.fb, c.cap.width, c.cap.height)) {
+        status = CAM_EXIT_DISPLAY;
         goto out;
-    if (cam_gpio_open(&c.gpio, &c.o.gpio_frame, &c.o.gpio_button))
+    }
+    if (cam_gpio_open(&c.gpio, &c.o.gpio_frame, &c.o.gpio_button, c.o.debounce_ms)) {
+        status = CAM_EXIT_CONFIG;
         goto out;
+    }
     cam_place(c.cap.width, c.cap.height, c.fb.xres, c.fb.yres, &c.place);
     c.line = malloc((size_t)c.cap.width * 3);
     c.scratch = malloc((size_t)c.cap.width * 4);
     if (!c.line || !c.scratch) {
         fprintf(stderr, "%s: out of memory\n", CAM_PROG);
+        status = CAM_EXIT_FAULT;
         goto out;
     }
-    if (make_engines(&c))
+    if (make_engines(&c)) {
+        status = CAM_EXIT_CONFIG;
         goto out;
+    }
     if (c.o.record) {
         c.rec_fd = open(c.o.record, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
         if (c.rec_fd < 0) {
@@ -397,16 +562,16 @@ int main(int argc, char **argv)
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
                 c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
                 c.place.w, c.place.h, c.place.src_x, c.place.src_y);
-    status = run(&c) ? 1 : 0;
-    if (c.o.dump_fb && dump_fb(&c))
-        status = 1;
+    status = run(&c);
+    if (c.o.dump_fb && dump_fb(&c) && !status)
+        status = CAM_EXIT_FAULT;
 out:
     cam_v4l2_close(&c.cap);
     cam_fb_close(&c.fb);
     cam_gpio_close(c.gpio);
     if (c.rec_fd >= 0 && close(c.rec_fd)) {
         fprintf(stderr, "%s: close %s: %s\n", CAM_PROG, c.o.record, strerror(errno));
-        status = 1;
+        status = status ? status : CAM_EXIT_FAULT;
     }
     cam_mt_close(&c.mt);
     for (int m = 0; m < CAM_MODE_COUNT; m++)

@@ -19,21 +19,24 @@ expect 0 "usage: bloom_cam" --help
 expect 0 "  --threads N           N strips of each frame on N threads, 0..64 (0, default: the" --help
 expect 2 "bloom_cam: --threads: '65' is not 0..64 (0: the online CPUs)" --threads 65
 expect 2 "bloom_cam: --threads: 'x' is not 0..64 (0: the online CPUs)" --threads x
-# a valid count gets as far as the device, whatever it is
+# a valid count gets as far as the device, whatever it is; exit statuses:
+# 2 configuration, 3 the camera (missing, lost), port/linux/README.md
 for n in 0 1 3; do
-    expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --threads "$n" --device /nonexistent/video9
+    expect 3 "bloom_cam: open /nonexistent/video9: No such file or directory" --threads "$n" --device /nonexistent/video9
 done
 expect 2 "bloom_cam: unknown option '--nope'" --nope
 expect 2 "bloom_cam: --format: 'mjpeg' is not yuyv, rgb24 or grey" --format mjpeg
-expect 1 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9
-expect 1 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --device /dev/null
+expect 3 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9
+expect 2 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --device /dev/null
+expect 2 "bloom_cam: --reconnect: 'soon' is not off, on or 1..31536000 seconds" --reconnect soon
+expect 2 "bloom_cam: --latest: 'maybe' is not on or off" --latest maybe
 expect 2 "bloom_cam: --preset: unknown preset 'bogus' (this build has: unity" --preset bogus
 expect 2 "bloom_cam: --passes applies to the xna preset, not unity" --passes 2
-expect 1 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --preset unity --device /dev/null
+expect 2 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --preset unity --device /dev/null
 if "$cam" --gpio-frame gpiochip0:0 --device /nonexistent 2>&1 | grep -q "built without libgpiod"; then
     expect 2 "built without libgpiod" --gpio-frame gpiochip0:0
 else
-    expect 1 "bloom_cam: open /nonexistent: No such file" --gpio-frame gpiochip0:0 --device /nonexistent
+    expect 3 "bloom_cam: open /nonexistent: No such file" --gpio-frame gpiochip0:0 --device /nonexistent
 fi
 echo "bloom_cam command line without devices"
 echo "$pass passed, $fail failed"

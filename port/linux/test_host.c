@@ -38,8 +38,13 @@ static void test_opts(void)
                o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
                o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) && o.intensity == BLOOM_Q16(1.0) &&
                o.frames == 0 && o.buffers == 4 && o.mode == CAM_MODE_BLOOM && !o.stats && !o.record &&
-               o.threads == 0,
+               o.threads == 0 && o.reconnect_s == 30 && o.latest == 1 && o.debounce_ms == 30,
            "defaults");
+    CHECKF(parse(&o, err, "--reconnect", "off", "--latest=off", NULL) == 0 && o.reconnect_s == 0 && !o.latest,
+           "--reconnect off --latest off: %s", err);
+    CHECKF(parse(&o, err, "--reconnect=5", "--debounce", "0", NULL) == 0 && o.reconnect_s == 5 &&
+               o.debounce_ms == 0,
+           "--reconnect 5 --debounce 0: %s", err);
 
     char *argv[] = {"bloom_cam",
                     "--device",
@@ -104,6 +109,10 @@ static void test_opts(void)
         {"--threads=", NULL, NULL, NULL, "--threads: '' is not 0..64"},
         {"--threads", NULL, NULL, NULL, "--threads needs a value"},
         {"--frames", "x", NULL, NULL, "--frames"},
+        {"--reconnect", "soon", NULL, NULL, "--reconnect: 'soon' is not off, on or 1..31536000 seconds"},
+        {"--reconnect", "0", NULL, NULL, "--reconnect: '0'"},
+        {"--latest", "yes", NULL, NULL, "--latest: 'yes' is not on or off"},
+        {"--debounce", "-5", NULL, NULL, "--debounce: '-5' is not 0..10000 ms"},
         {"--mode", "glow", NULL, NULL, "--mode"},
         {"--device", NULL, NULL, NULL, "--device needs a value"},
         {"--bogus", NULL, NULL, NULL, "unknown option '--bogus'"},
@@ -277,7 +286,7 @@ static void test_line_feed(void)
 /* ---- capture faults through the ioctl/poll seam ---------------------------
  * A script of steps, each one poll(2) or one VIDIOC_DQBUF: what it returns,
  * errno when it fails, revents for a poll, the buffer for a DQBUF. */
-enum { STEP_POLL = 1, STEP_DQBUF };
+enum { STEP_POLL = 1, STEP_DQBUF, STEP_QBUF };
 typedef struct {
     int kind, ret, err;
     short revents;
@@ -287,9 +296,11 @@ typedef struct {
 static const fake_step_t *fake_script;
 static int fake_n, fake_at, fake_polls, fake_ioctls, fake_unexpected;
 
-static int fake_poll(struct pollfd *fds, nfds_t nfds, int timeout_ms)
+static const sigset_t *fake_mask_seen;
+static int fake_poll(struct pollfd *fds, nfds_t nfds, int timeout_ms, const sigset_t *mask)
 {
     (void)timeout_ms;
+    fake_mask_seen = mask;
     fake_polls++;
     if (fake_at >= fake_n || fake_script[fake_at].kind != STEP_POLL || nfds < 1) {
         fake_unexpected++;
@@ -309,7 +320,10 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
 {
     (void)fd;
     fake_ioctls++;
-    if (req != (unsigned long)VIDIOC_DQBUF || fake_at >= fake_n || fake_script[fake_at].kind != STEP_DQBUF) {
+    const int kind = req == (unsigned long)VIDIOC_DQBUF  ? STEP_DQBUF
+                     : req == (unsigned long)VIDIOC_QBUF ? STEP_QBUF
+                                                         : 0;
+    if (!kind || fake_at >= fake_n || fake_script[fake_at].kind != kind) {
         fake_unexpected++;
         errno = EIO;
         return -1;
@@ -320,6 +334,11 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
         return -1;
     }
     struct v4l2_buffer *b = arg;
+    if (kind == STEP_QBUF) { /* the buffer the step names must be the one queued */
+        if (b->index != s->index)
+            fake_unexpected++;
+        return 0;
+    }
     b->index = s->index;
     b->bytesused = s->bytesused;
     b->flags = s->flags;
@@ -327,8 +346,11 @@ static int fake_ioctl(int fd, unsigned long req, void *arg)
     return 0;
 }
 
-/* Run cam_v4l2_dequeue over a script with stderr captured into msg. */
-static int run_dequeue(const fake_step_t *script, int n, cam_frame_t *f, char *msg, size_t len)
+/* Run cam_v4l2_dequeue (latest: then cam_v4l2_latest, counting into
+ * skipped and bad) over a script with stderr captured into msg. */
+static long fake_skipped, fake_bad[3];
+static int lost_kind;
+static int run_script(const fake_step_t *script, int n, cam_frame_t *f, char *msg, size_t len, int latest)
 {
     enum { W = 16, H = 4, BPL = 2 * W };
     static uint8_t mem[3][BPL * H];
@@ -358,7 +380,17 @@ static int run_dequeue(const fake_step_t *script, int n, cam_frame_t *f, char *m
     if (tmp)
         dup2(fileno(tmp), 2);
     memset(f, 0, sizeof *f);
+    static sigset_t mask;
+    sigemptyset(&mask);
+    c.wait_mask = &mask;
+    fake_mask_seen = NULL;
+    fake_skipped = fake_bad[0] = fake_bad[1] = fake_bad[2] = 0;
     int r = cam_v4l2_dequeue(&c, 100, -1, NULL, f);
+    if (r == 0 && latest)
+        r = cam_v4l2_latest(&c, f, &fake_skipped, fake_bad);
+    if (fake_polls && fake_mask_seen != &mask)
+        fake_unexpected++; /* the wait must be given the mask that lets the stop signals in */
+    lost_kind = c.lost;
     fflush(stderr);
     dup2(saved, 2);
     close(saved);
@@ -372,6 +404,10 @@ static int run_dequeue(const fake_step_t *script, int n, cam_frame_t *f, char *m
     if (f->data) /* as an index into mem, so the test can check which */
         f->data = (const uint8_t *)(f->data - mem[0]);
     return r;
+}
+static int run_dequeue(const fake_step_t *script, int n, cam_frame_t *f, char *msg, size_t len)
+{
+    return run_script(script, n, f, msg, len, 0);
 }
 
 static void test_dequeue_faults(void)
@@ -416,12 +452,6 @@ static void test_dequeue_faults(void)
         fake_step_t s[2];
         const char *want;
     } bad[] = {
-        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 0, FULL - 1, 0, 3}},
-         "bloom_cam: VIDIOC_DQBUF: short frame: 127 bytes, 128 expected (sequence 3)\n"},
-        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 0, 0, 0, 4}},
-         "bloom_cam: VIDIOC_DQBUF: short frame: 0 bytes"},
-        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0}, {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 5}},
-         "bloom_cam: VIDIOC_DQBUF: buffer 1 (sequence 5) flagged V4L2_BUF_FLAG_ERROR\n"},
         {{{STEP_POLL, 1, 0, POLLIN | POLLERR, 0, 0, 0, 0}, {STEP_DQBUF, -1, ENODEV, 0, 0, 0, 0, 0}},
          "bloom_cam: VIDIOC_DQBUF: No such device\n"},
         {{{STEP_POLL, 1, 0, POLLERR, 0, 0, 0, 0}, {STEP_DQBUF, -1, EAGAIN, 0, 0, 0, 0, 0}},
@@ -444,7 +474,86 @@ static void test_dequeue_faults(void)
                "fault %zu: r %d, %d of %d steps, message '%s', want '%s'", i, r, fake_at, steps, msg,
                bad[i].want);
     }
-    CHECKF(strstr(bad[0].want, "VIDIOC_DQBUF") && strstr(bad[0].want, "short"), "short-frame message");
+    CHECKF(lost_kind == CAM_LOST_DEVICE, "a poll failure is a device fault (lost %d)", lost_kind);
+
+    /* Bad frames: requeued at once, 2, which kind in f->bad, no message. */
+    static const struct {
+        fake_step_t s[3];
+        int bad;
+        uint32_t seq;
+    } skip[] = {
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+          {STEP_DQBUF, 0, 0, 0, 0, FULL - 1, 0, 3},
+          {STEP_QBUF, 0, 0, 0, 0, 0, 0, 0}},
+         CAM_BAD_SHORT,
+         3},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+          {STEP_DQBUF, 0, 0, 0, 2, 0, 0, 4},
+          {STEP_QBUF, 0, 0, 0, 2, 0, 0, 0}},
+         CAM_BAD_SHORT,
+         4},
+        {{{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+          {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 5},
+          {STEP_QBUF, 0, 0, 0, 1, 0, 0, 0}},
+         CAM_BAD_FLAGGED,
+         5},
+    };
+    for (size_t i = 0; i < sizeof skip / sizeof skip[0]; i++) {
+        r = run_dequeue(skip[i].s, 3, &f, msg, sizeof msg);
+        CHECKF(r == 2 && f.bad == skip[i].bad && f.sequence == skip[i].seq && !msg[0] && fake_at == 3 &&
+                   !fake_unexpected,
+               "bad frame %zu: r %d bad %d sequence %u, %d of 3 steps, %d unexpected, message '%s'", i, r,
+               f.bad, (unsigned)f.sequence, fake_at, fake_unexpected, msg);
+    }
+    /* A timeout says so (a stall: the reconnection's business). */
+    static const fake_step_t stall[] = {{STEP_POLL, 0, 0, 0, 0, 0, 0, 0}};
+    r = run_dequeue(stall, 1, &f, msg, sizeof msg);
+    CHECKF(r == -1 && lost_kind == CAM_LOST_TIMEOUT, "timeout: r %d lost %d", r, lost_kind);
+    static const fake_step_t gone[] = {{STEP_POLL, 1, 0, POLLIN | POLLERR, 0, 0, 0, 0},
+                                       {STEP_DQBUF, -1, ENODEV, 0, 0, 0, 0, 0}};
+    r = run_dequeue(gone, 2, &f, msg, sizeof msg);
+    CHECKF(r == -1 && lost_kind == CAM_LOST_DEVICE, "ENODEV: r %d lost %d", r, lost_kind);
+
+    /* --latest: the older of two ready frames goes back, a bad one in
+     * between is requeued and counted, EAGAIN ends the look. */
+    static const fake_step_t newest[] = {
+        {STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+        {STEP_DQBUF, 0, 0, 0, 0, FULL, 0, 10},
+        {STEP_DQBUF, 0, 0, 0, 1, FULL, V4L2_BUF_FLAG_ERROR, 11},
+        {STEP_QBUF, 0, 0, 0, 1, 0, 0, 0},
+        {STEP_DQBUF, 0, 0, 0, 2, FULL, 0, 12},
+        {STEP_QBUF, 0, 0, 0, 0, 0, 0, 0},
+        {STEP_DQBUF, -1, EAGAIN, 0, 0, 0, 0, 0},
+    };
+    r = run_script(newest, 7, &f, msg, sizeof msg, 1);
+    CHECKF(r == 0 && f.index == 2 && f.sequence == 12 && fake_skipped == 1 &&
+               fake_bad[CAM_BAD_FLAGGED] == 1 && fake_at == 7 && !fake_unexpected && !msg[0],
+           "--latest: r %d index %d sequence %u skipped %ld flagged %ld, %d of 7 steps, %d unexpected '%s'",
+           r, f.index, (unsigned)f.sequence, fake_skipped, fake_bad[CAM_BAD_FLAGGED], fake_at,
+           fake_unexpected, msg);
+    static const fake_step_t only[] = {{STEP_POLL, 1, 0, POLLIN, 0, 0, 0, 0},
+                                       {STEP_DQBUF, 0, 0, 0, 1, FULL, 0, 20},
+                                       {STEP_DQBUF, -1, EAGAIN, 0, 0, 0, 0, 0}};
+    r = run_script(only, 3, &f, msg, sizeof msg, 1);
+    CHECKF(r == 0 && f.index == 1 && fake_skipped == 0 && fake_at == 3 && !fake_unexpected,
+           "--latest, one frame ready: r %d index %d skipped %ld", r, f.index, fake_skipped);
+}
+
+/* The button's debounce: the first edge counts, then one at least MS after
+ * the last counted; 0 counts every edge. */
+static void test_debounce(void)
+{
+    int64_t last = INT64_MIN;
+    const int64_t ms = 1000000;
+    int got = cam_debounce(&last, 5 * ms, 30);
+    got += cam_debounce(&last, 6 * ms, 30);  /* bounce */
+    got += cam_debounce(&last, 34 * ms, 30); /* 29 ms after the press: still a bounce */
+    got += cam_debounce(&last, 35 * ms, 30); /* 30 ms: a press */
+    got += cam_debounce(&last, 90 * ms, 30);
+    CHECKF(got == 3 && last == 90 * ms, "debounce 30 ms: %d presses (3 expected)", got);
+    last = INT64_MIN;
+    got = cam_debounce(&last, 1, 0) + cam_debounce(&last, 1, 0) + cam_debounce(&last, 2, 0);
+    CHECKF(got == 3, "debounce 0: %d presses of 3 edges", got);
 }
 
 /* --preset and its options: the preset's defaults, then the options given;
@@ -581,8 +690,10 @@ int main(void)
     test_place();
     test_line_feed();
     test_dequeue_faults();
+    test_debounce();
     printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, "
            "line feed,\n"
-           "  capture faults (EINTR, EAGAIN, short bytesused, V4L2_BUF_FLAG_ERROR, ENODEV, timeout)\n");
+           "  capture faults (EINTR, EAGAIN, ENODEV, timeout: fatal, with their kind; short bytesused,\n"
+           "  V4L2_BUF_FLAG_ERROR: requeued and counted), --latest, the button's debounce\n");
     return harness_finish();
 }

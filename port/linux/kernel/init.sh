@@ -188,24 +188,72 @@ if [ "$GPIO" = 1 ]; then
     button button-t2 --threads 2
 fi
 
-# faults: each must end with its message and a clean stop
-# SIGTERM while streaming
-/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" > /out/sigterm.txt 2>&1 &
-pid=$!; sleep 2; kill -TERM $pid; wait $pid; echo "exit $?" >> /out/sigterm.txt
-echo "/sys pan after: $(cat /sys/class/graphics/${fb16#/dev/}/pan)" >> /out/sigterm.txt
-# a stalled stream: every buffer dropped -> poll timeout
+# faults: a stop signal ends the run cleanly (exit 0, the screen restored);
+# a bad frame is skipped and counted; a lost device is opened again
+# (--reconnect) and the run goes on, or ends with exit 3 when it does not
+# come back; the statuses are port/linux/README.md's
+fb16pan=/sys/class/graphics/${fb16#/dev/}/pan
+stopcase() { # name signal: the signal while streaming
+    /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" > /out/$1.txt 2>&1 &
+    pid=$!; sleep 2; kill -$2 $pid; wait $pid; echo "exit $?" >> /out/$1.txt
+    echo "/sys pan after: $(cat $fb16pan)" >> /out/$1.txt
+}
+stopcase sigterm TERM
+stopcase sighup HUP
+stopcase sigquit QUIT
+# SIGPIPE: --record into a pipe whose reader goes away
+mkfifo /tmp/rec.fifo
+head -c 100000 /tmp/rec.fifo > /dev/null &
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --record /tmp/rec.fifo > /out/sigpipe.txt 2>&1
+echo "exit $?" >> /out/sigpipe.txt; echo "/sys pan after: $(cat $fb16pan)" >> /out/sigpipe.txt
+rm -f /tmp/rec.fifo
+# a stalled stream that does not recover: every buffer dropped -> timeouts,
+# reopened until --reconnect gives up
 /vctl "$vid" "Percentage of Dropped Buffers" 100 2>>/out/guest.log
-/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1500 > /out/stall.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1000 --reconnect 4 > /out/stall.txt 2>&1
 echo "exit $?" >> /out/stall.txt
-/vctl "$vid" "Percentage of Dropped Buffers" 0 2>>/out/guest.log
-# a buffer flagged V4L2_BUF_FLAG_ERROR
-/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 300 > /out/bufferror.txt 2>&1 &
+# the same without --reconnect: today's behaviour, the first timeout ends it
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1000 --reconnect off > /out/stall-off.txt 2>&1
+echo "exit $?" >> /out/stall-off.txt
+# a stall that ends: frames again after 3 s, the run goes on to its frames
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1000 --frames 60 > /out/stall-recover.txt 2>&1 &
+pid=$!; sleep 3; /vctl "$vid" "Percentage of Dropped Buffers" 0 2>>/out/guest.log
+wait $pid; echo "exit $?" >> /out/stall-recover.txt
+# a buffer flagged V4L2_BUF_FLAG_ERROR: skipped, counted, the run goes on
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 > /out/bufferror.txt 2>&1 &
 pid=$!; sleep 2; /vctl "$vid" "Inject V4L2_BUF_FLAG_ERROR" 1 2>>/out/guest.log
 wait $pid; echo "exit $?" >> /out/bufferror.txt
-# the device disappears
-/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 300 > /out/disconnect.txt 2>&1 &
+# the device disappears and comes back (vivid, once every handle is closed)
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 --dump-fb /out/disconnect.fb > /out/disconnect.txt 2>&1 &
 pid=$!; sleep 2; /vctl "$vid" "Disconnect" 1 2>>/out/guest.log
 wait $pid; echo "exit $?" >> /out/disconnect.txt
-echo "/sys pan after: $(cat /sys/class/graphics/${fb16#/dev/}/pan)" >> /out/disconnect.txt
+echo "/sys pan after: $(cat $fb16pan)" >> /out/disconnect.txt
+# ... and without --reconnect: the run ends, exit 3
+sleep 1
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 --reconnect off > /out/disconnect-off.txt 2>&1 &
+pid=$!; sleep 2; /vctl "$vid" "Disconnect" 1 2>>/out/guest.log
+wait $pid; echo "exit $?" >> /out/disconnect-off.txt
+echo "/sys pan after: $(cat $fb16pan)" >> /out/disconnect-off.txt
+sleep 1
+# a fatal streaming error (vb2_queue_error): the queue is dead, reopened
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 > /out/fatal.txt 2>&1 &
+pid=$!; sleep 2; /vctl "$vid" "Inject Fatal Streaming Error" 1 2>>/out/guest.log
+wait $pid; echo "exit $?" >> /out/fatal.txt
+# one VIDIOC_QBUF refused: that buffer is gone from the queue, the run goes on
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 > /out/qbuferror.txt 2>&1 &
+pid=$!; sleep 2; /vctl "$vid" "Inject VIDIOC_QBUF Error" 1 2>>/out/guest.log
+wait $pid; echo "exit $?" >> /out/qbuferror.txt
+# VIDIOC_REQBUFS and VIDIOC_STREAMON refused at the start: the device fails, exit 3
+/vctl "$vid" "Inject VIDIOC_REQBUFS Error" 1 2>>/out/guest.log
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 10 > /out/reqbufs.txt 2>&1
+echo "exit $?" >> /out/reqbufs.txt
+/vctl "$vid" "Inject VIDIOC_STREAMON Error" 1 2>>/out/guest.log
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 10 > /out/streamon.txt 2>&1
+echo "exit $?" >> /out/streamon.txt
+# the sequence number wraps past 2^32: no frames counted dropped for it
+/vctl "$vid" "Wrap Sequence Number" 1 2>>/out/guest.log
+/bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 200 --latest off > /out/seqwrap.txt 2>&1
+echo "exit $?" >> /out/seqwrap.txt
+/vctl "$vid" "Wrap Sequence Number" 0 2>>/out/guest.log
 log "done"
 finish 0
