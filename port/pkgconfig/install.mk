@@ -1,6 +1,8 @@
 # make install / make uninstall: the static and the shared library (soname
 # libbloom.so.$(BLOOM_MAJOR), exporting only the public API of
-# include/bloom.h), the headers, bloom.pc for pkg-config, the tools.
+# include/bloom.h), the headers, bloom.pc for pkg-config, the tools, and the
+# GStreamer element into $(GSTPLUGINDIR) when GStreamer's development
+# packages are there (make deps installs them; else it says it left it out).
 # Included by the top Makefile.
 #   make install [PREFIX=/usr/local] [DESTDIR=staging] [LIBDIR=...]
 #   make uninstall (the same variables: removes exactly what install put)
@@ -14,6 +16,7 @@ LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 BINDIR ?= $(PREFIX)/bin
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+GSTPLUGINDIR ?= $(LIBDIR)/gstreamer-1.0
 INSTALL_TOOLS := $(B)/bloom_sim $(B)/bloom_demo $(B)/bloom_info $(B)/bloom_cam
 SO := libbloom.so.$(BLOOM_VERSION)
 
@@ -49,12 +52,19 @@ install: $(B)/libbloom.a $(B)/pic/$(SO) $(B)/pic/bloom.pc $(INSTALL_TOOLS)
 	install -m 644 include/bloom.h include/bloom_config.h $(DESTDIR)$(INCLUDEDIR)/
 	install -m 644 $(B)/pic/bloom.pc $(DESTDIR)$(PKGCONFIGDIR)/bloom.pc
 	install -m 755 $(INSTALL_TOOLS) $(DESTDIR)$(BINDIR)/
+	@if pkg-config --exists gstreamer-1.0 gstreamer-base-1.0 gstreamer-video-1.0 2>/dev/null; then \
+	  $(MAKE) --no-print-directory -s $(B)/gst/libgstbloom.so && \
+	  install -d $(DESTDIR)$(GSTPLUGINDIR) && \
+	  install -m 644 $(B)/gst/libgstbloom.so $(DESTDIR)$(GSTPLUGINDIR)/libgstbloom.so && \
+	  echo "install: the GStreamer element in $(DESTDIR)$(GSTPLUGINDIR)"; \
+	else echo "install: the GStreamer element left out: GStreamer's development packages are missing (make deps)"; fi
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libbloom.a $(DESTDIR)$(LIBDIR)/$(SO) \
 	  $(DESTDIR)$(LIBDIR)/libbloom.so.$(BLOOM_MAJOR) $(DESTDIR)$(LIBDIR)/libbloom.so \
 	  $(DESTDIR)$(INCLUDEDIR)/bloom.h $(DESTDIR)$(INCLUDEDIR)/bloom_config.h \
-	  $(DESTDIR)$(PKGCONFIGDIR)/bloom.pc $(addprefix $(DESTDIR)$(BINDIR)/,$(notdir $(INSTALL_TOOLS)))
+	  $(DESTDIR)$(PKGCONFIGDIR)/bloom.pc $(addprefix $(DESTDIR)$(BINDIR)/,$(notdir $(INSTALL_TOOLS))) \
+	  $(DESTDIR)$(GSTPLUGINDIR)/libgstbloom.so
 
 test-install:
 	@B=$(B) MAKE='$(MAKE)' CC='$(CC)' sh port/pkgconfig/test_install.sh

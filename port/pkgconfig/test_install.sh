@@ -28,7 +28,9 @@ if ! $MAKE -s install PREFIX="$pre" >"$log" 2>&1; then
     bad "make install PREFIX=$pre"; tail -n 20 "$log"; finish
 fi
 ok "make install PREFIX=<scratch>"
-want="bin/bloom_cam bin/bloom_demo bin/bloom_info bin/bloom_sim include/bloom.h include/bloom_config.h lib/libbloom.a lib/libbloom.so lib/libbloom.so.1 lib/libbloom.so.1.0.0 lib/pkgconfig/bloom.pc"
+gst=""
+pkg-config --exists gstreamer-1.0 gstreamer-base-1.0 gstreamer-video-1.0 2>/dev/null && gst=" lib/gstreamer-1.0/libgstbloom.so"
+want="bin/bloom_cam bin/bloom_demo bin/bloom_info bin/bloom_sim include/bloom.h include/bloom_config.h$gst lib/libbloom.a lib/libbloom.so lib/libbloom.so.1 lib/libbloom.so.1.0.0 lib/pkgconfig/bloom.pc"
 got=$(cd "$pre" && find . \( -type f -o -type l \) | sed 's|^\./||' | sort | tr '\n' ' ' | sed 's/ $//')
 [ "$got" = "$want" ] && ok "installed files: $got" || bad "installed files: $got (wanted $want)"
 soname=$(readelf -d "$pre/lib/libbloom.so.1.0.0" | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
@@ -39,6 +41,19 @@ if [ "$api" = "$exp" ]; then
     ok "exports exactly the $(echo "$api" | wc -l) functions bloom.h declares"
 else
     bad "exports differ from bloom.h:"; echo "$api" > "$tmp/api"; echo "$exp" > "$tmp/exp"; diff "$tmp/api" "$tmp/exp" | head
+fi
+# the element, found by GStreamer from where it was installed (and nowhere else)
+if [ -z "$gst" ]; then
+    echo "skipped: test-install: the GStreamer element: GStreamer's development packages are missing"
+    skip=$((skip + 1))
+elif ! command -v gst-inspect-1.0 >/dev/null 2>&1; then
+    echo "skipped: test-install: the installed GStreamer element: gst-inspect-1.0 missing (gstreamer1.0-tools)"
+    skip=$((skip + 1))
+elif GST_PLUGIN_PATH="$pre/lib/gstreamer-1.0" GST_REGISTRY="$tmp/registry.bin" \
+    gst-inspect-1.0 bloom 2>&1 | grep -q "Factory Details"; then
+    ok "gst-inspect-1.0 finds the element bloom in $pre/lib/gstreamer-1.0"
+else
+    bad "gst-inspect-1.0 bloom with GST_PLUGIN_PATH=$pre/lib/gstreamer-1.0"
 fi
 export PKG_CONFIG_PATH="$pre/lib/pkgconfig"
 [ "$(pkg-config --modversion bloom)" = 1.0.0 ] && ok "pkg-config --modversion bloom: 1.0.0" ||
