@@ -35,6 +35,7 @@ typedef struct {
 typedef struct {
     const char *device;     /* --device, default /dev/video0 */
     const char *fb;         /* --fb, default /dev/fb0; "none": off-screen */
+    const char *vt;         /* --vt, default /dev/tty0; "off": the console's mode is not touched */
     int width, height;      /* --size WxH, default 640x480 */
     enum cam_pixfmt format; /* --format, default yuyv */
     bloom_preset_t preset;  /* --preset NAME, default unity */
@@ -196,6 +197,7 @@ typedef struct {
     int pages, page;                    /* 2 when double-buffering with FBIOPAN_DISPLAY */
     unsigned xoffset, yoffset;          /* of the page on show */
     int changed_var;                    /* var screeninfo changed, restore on close */
+    int vsync;                          /* FBIO_WAITFORVSYNC before each pan (1 until it fails) */
     struct fb_var_screeninfo saved_var; /* as found */
     char id[17];
 } cam_fb_t;
@@ -205,6 +207,19 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h);
 uint8_t *cam_fb_draw_page(cam_fb_t *fb); /* first byte of the page to draw */
 int cam_fb_show(cam_fb_t *fb);           /* pan to the page just drawn */
 void cam_fb_close(cam_fb_t *fb);         /* restore pan and var, unmap, close */
+
+/* The console's VT while drawing (--vt, default /dev/tty0: the VT in the
+ * foreground): KD_GRAPHICS, so that fbcon's cursor, kernel messages and a
+ * getty do not draw over the video; the mode found is put back (and fbcon
+ * repaints the console) by cam_vt_restore, on every exit path. A VT that
+ * cannot be opened or switched (no VT, no permission, a serial console) is
+ * said once and left alone: it is not an error. */
+typedef struct {
+    int fd;
+    int saved_mode, changed;
+} cam_vt_t;
+void cam_vt_graphics(cam_vt_t *vt, const char *path, int quiet);
+void cam_vt_restore(cam_vt_t *vt);
 
 /* ---- GPIO (gpio.c) ------------------------------------------------------- */
 typedef struct cam_gpio cam_gpio_t;

@@ -14,6 +14,9 @@ void cam_usage(void *stream)
     fputs("usage: bloom_cam [options]\n"
           "  --device DEV          V4L2 capture device (default /dev/video0)\n"
           "  --fb FB               framebuffer (default /dev/fb0); 'none' draws off-screen\n"
+          "  --vt TTY|off          the console's VT, kept in graphics mode while drawing so\n"
+          "                        that its text does not draw over the video (default\n"
+          "                        /dev/tty0, the VT in front; off: left alone)\n"
           "  --size WxH            capture size asked of the driver (default 640x480)\n"
           "  --format F            yuyv | rgb24 | grey (default yuyv)\n"
           "  --levels N            pyramid levels, 1..16 (default 5)\n"
@@ -262,6 +265,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     memset(o, 0, sizeof *o);
     o->device = "/dev/video0";
     o->fb = "/dev/fb0";
+    o->vt = "/dev/tty0";
     o->width = 640;
     o->height = 480;
     o->format = CAM_FMT_YUYV;
@@ -413,6 +417,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             if (parse_long(v, 1, 3600000L, &l))
                 return fail(err, errlen, "--timeout: '%s' is not 1..3600000 ms", v);
             o->timeout_ms = (int)l;
+        } else if (!strcmp(name, "--vt")) {
+            o->vt = v;
         } else if (!strcmp(name, "--reconnect")) {
             if (!strcmp(v, "off"))
                 o->reconnect_s = 0;

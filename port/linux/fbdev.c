@@ -1,7 +1,9 @@
 /* bloom_cam: Linux framebuffer output. 16 bpp RGB565 and 32 bpp XRGB8888;
  * anything else is refused by name (cam_fb_format). Double-buffered with
- * FBIOPAN_DISPLAY when the virtual screen holds two pages; the pan offsets
- * and the var screeninfo found at start are put back by cam_fb_close. */
+ * FBIOPAN_DISPLAY when the virtual screen holds two pages, each pan after
+ * the vertical blank where the driver waits for it (FBIO_WAITFORVSYNC);
+ * the pan offsets and the var screeninfo found at start are put back by
+ * cam_fb_close. The VT is kept in KD_GRAPHICS while drawing (cam_vt_*). */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -10,6 +12,8 @@
 #include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <unistd.h>
+
+#include <linux/kd.h>
 
 #include "cam.h"
 
@@ -148,6 +152,7 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
     if (var.yres_virtual >= 2 * var.yres && var.xoffset + var.xres <= var.xres_virtual && fix.ypanstep != 0) {
         fb->pages = 2;
         fb->page = var.yoffset >= var.yres ? 0 : 1; /* draw the page not on show */
+        fb->vsync = 1;
     }
     /* Start from black: the frame may not cover the screen. */
     for (int p = 0; p < fb->pages; p++) {
@@ -169,6 +174,14 @@ int cam_fb_show(cam_fb_t *fb)
 {
     if (fb->pages != 2)
         return 0;
+    /* the new page from the next frame on, not half-way down this one; a
+     * driver without the ioctl (vfb, some DRM fbdev emulations) says so
+     * once and is not asked again */
+    if (fb->vsync) {
+        uint32_t crtc = 0;
+        if (cam_xioctl(fb->fd, FBIO_WAITFORVSYNC, &crtc))
+            fb->vsync = 0;
+    }
     struct fb_var_screeninfo v = fb->saved_var;
     v.yoffset = (uint32_t)(fb->page * fb->yres);
     if (cam_xioctl(fb->fd, FBIOPAN_DISPLAY, &v))
@@ -205,4 +218,43 @@ void cam_fb_close(cam_fb_t *fb)
     fb->mem = NULL;
     close(fb->fd);
     fb->fd = -1;
+}
+
+void cam_vt_graphics(cam_vt_t *vt, const char *path, int quiet)
+{
+    vt->fd = -1;
+    vt->changed = 0;
+    if (!strcmp(path, "off"))
+        return;
+    vt->fd = open(path, O_RDWR | O_NOCTTY | O_CLOEXEC);
+    int mode = 0;
+    if (vt->fd < 0 || ioctl(vt->fd, KDGETMODE, &mode) ||
+        (mode != KD_GRAPHICS && ioctl(vt->fd, KDSETMODE, KD_GRAPHICS))) {
+        if (!quiet)
+            fprintf(stderr, "%s: --vt %s: %s: the console may draw over the video\n", CAM_PROG, path,
+                    strerror(errno));
+        if (vt->fd >= 0)
+            close(vt->fd);
+        vt->fd = -1;
+        return;
+    }
+    vt->saved_mode = mode;
+    vt->changed = mode != KD_GRAPHICS;
+    if (!quiet)
+        fprintf(stderr, "%s: --vt %s: graphics mode while drawing (%s before)\n", CAM_PROG, path,
+                mode == KD_TEXT       ? "text"
+                : mode == KD_GRAPHICS ? "graphics"
+                                      : "another mode");
+}
+
+void cam_vt_restore(cam_vt_t *vt)
+{
+    if (vt->fd < 0)
+        return;
+    /* back to text: fbcon repaints the console it kept */
+    if (vt->changed && ioctl(vt->fd, KDSETMODE, vt->saved_mode))
+        fprintf(stderr, "%s: KDSETMODE (restoring the console): %s\n", CAM_PROG, strerror(errno));
+    close(vt->fd);
+    vt->fd = -1;
+    vt->changed = 0;
 }

@@ -32,6 +32,7 @@ typedef struct {
     cam_opts_t o;
     cam_v4l2_t cap;
     cam_fb_t fb;
+    cam_vt_t vt;
     cam_gpio_t *gpio;
     bloom_t *eng[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show (skipped) */
     void *ws[CAM_MODE_COUNT];
@@ -485,6 +486,7 @@ int main(int argc, char **argv)
     char err[256];
     c.cap.fd = -1;
     c.fb.fd = -1;
+    c.vt.fd = -1;
     c.rec_fd = -1;
     int pr = cam_parse_opts(&c.o, argc, argv, err, sizeof err);
     if (pr == 1) {
@@ -529,6 +531,8 @@ int main(int argc, char **argv)
         status = CAM_EXIT_DISPLAY;
         goto out;
     }
+    if (strcmp(c.o.fb, "none"))
+        cam_vt_graphics(&c.vt, c.o.vt, c.o.quiet);
     if (cam_gpio_open(&c.gpio, &c.o.gpio_frame, &c.o.gpio_button, c.o.debounce_ms)) {
         status = CAM_EXIT_CONFIG;
         goto out;
@@ -563,11 +567,16 @@ int main(int argc, char **argv)
                 c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
                 c.place.w, c.place.h, c.place.src_x, c.place.src_y);
     status = run(&c);
+    if (c.fb.pages == 2 && !c.o.quiet)
+        fprintf(stderr, "%s: pages shown %s\n", CAM_PROG,
+                c.fb.vsync ? "after the vertical blank (FBIO_WAITFORVSYNC)"
+                           : "without waiting for the vertical blank (the driver refused FBIO_WAITFORVSYNC)");
     if (c.o.dump_fb && dump_fb(&c) && !status)
         status = CAM_EXIT_FAULT;
 out:
     cam_v4l2_close(&c.cap);
     cam_fb_close(&c.fb);
+    cam_vt_restore(&c.vt);
     cam_gpio_close(c.gpio);
     if (c.rec_fd >= 0 && close(c.rec_fd)) {
         fprintf(stderr, "%s: close %s: %s\n", CAM_PROG, c.o.record, strerror(errno));

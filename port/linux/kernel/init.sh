@@ -193,10 +193,13 @@ fi
 # (--reconnect) and the run goes on, or ends with exit 3 when it does not
 # come back; the statuses are port/linux/README.md's
 fb16pan=/sys/class/graphics/${fb16#/dev/}/pan
+log "vt before the fault cases: $(/vtmode /dev/tty0 2>&1)"
 stopcase() { # name signal: the signal while streaming
     /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" > /out/$1.txt 2>&1 &
-    pid=$!; sleep 2; kill -$2 $pid; wait $pid; echo "exit $?" >> /out/$1.txt
+    pid=$!; sleep 2; echo "vt during: $(/vtmode /dev/tty0 2>&1)" > /out/$1.vt; kill -$2 $pid; wait $pid
+    echo "exit $?" >> /out/$1.txt; cat /out/$1.vt >> /out/$1.txt
     echo "/sys pan after: $(cat $fb16pan)" >> /out/$1.txt
+    echo "vt after: $(/vtmode /dev/tty0 2>&1)" >> /out/$1.txt
 }
 stopcase sigterm TERM
 stopcase sighup HUP
@@ -234,6 +237,7 @@ sleep 1
 pid=$!; sleep 2; /vctl "$vid" "Disconnect" 1 2>>/out/guest.log
 wait $pid; echo "exit $?" >> /out/disconnect-off.txt
 echo "/sys pan after: $(cat $fb16pan)" >> /out/disconnect-off.txt
+echo "vt after: $(/vtmode /dev/tty0 2>&1)" >> /out/disconnect-off.txt
 sleep 1
 # a fatal streaming error (vb2_queue_error): the queue is dead, reopened
 /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 90 > /out/fatal.txt 2>&1 &

@@ -309,6 +309,7 @@ ARGS
 cp "$bb" "$work/root/bin/busybox"
 cp "$B/linux/bloom_cam.static" "$work/root/bloom_cam"
 cc -std=c11 -O2 -static -D_POSIX_C_SOURCE=200809L "$here/vctl.c" -o "$work/root/vctl" || die "building the guest tools failed"
+cc -std=c11 -O2 -static -D_POSIX_C_SOURCE=200809L "$here/vtmode.c" -o "$work/root/vtmode" || die "building the guest tools failed"
 cc -std=c11 -O2 -D_POSIX_C_SOURCE=200809L "$here/fbcmp.c" -o "$work/fbcmp" || die "building the guest tools failed"
 # the attenuation preset with a depth plane (--aux): vivid captures 320x180
 # when asked for 320x240, so the plane of the capture's size is 320x180 (16-bit)
@@ -471,6 +472,15 @@ for sig in SIGTERM SIGHUP SIGQUIT SIGPIPE; do
     fault_check $c 0 "bloom_cam: stopping on $sig"
     fault_check $c 0 "/sys pan after: 0,0"
 done
+# the VT: graphics while drawing, text again after a stop signal and after a
+# lost camera (exit 3)
+fault_check sigterm 0 "vt during: graphics"
+fault_check sigterm 0 "vt after: text"
+fault_check sighup 0 "vt after: text"
+fault_check disconnect-off 3 "vt after: text"
+# the double-buffered screen pans after the vertical blank (bochs-drm's fbdev
+# emulation waits for it)
+fault_check grey-32 0 "bloom_cam: pages shown after the vertical blank (FBIO_WAITFORVSYNC)"
 fault_check stall 3 "bloom_cam: reconnect: /dev/video"
 fault_check stall 3 "did not come back within 4 s (last: poll: no frame from the device within 1000 ms)"
 fault_check stall-off 3 "bloom_cam: poll: no frame from the device within 1000 ms"
@@ -549,7 +559,7 @@ if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null && grep -q '^exit 0$' "$r/speed
 else
     bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" "$r/speed-t1.txt" 2>/dev/null
 fi
-# the count port/linux/README.md states ("69 cases with all six presets") is the count run
+# the count port/linux/README.md states ("74 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
 want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/port/linux/README.md" | head -n 1)
 if [ -z "$want" ]; then
