@@ -82,25 +82,6 @@ static inline void st2(uint32_t *p, __m256i e, __m256i o)
 #define ARM_TAIL bloom_arm_kern_sse2
 #define ARM_FN(f) f##_avx2
 #include "bloom_preset_arm_simd.h"
-#undef VT
-#undef W
-#undef LDV
-#undef STV
-#undef ADDV
-#undef ANDV
-#undef ORV
-#undef SHLV
-#undef SHRV
-#undef DUPV
-#undef MLAV
-#undef SUM5
-#undef DIV3
-#undef MAXV
-#undef MAX_LANES
-#undef OR_LANES
-#undef ST2V
-#undef ARM_TAIL
-#undef ARM_FN
 
 /* The codes of 8 pixels at s, one per 32-bit lane, channels R, G, B:
  * XRGB8888 (B G R X) by shifts; RGB888 from the 24 bytes (two 16-byte

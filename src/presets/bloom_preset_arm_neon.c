@@ -63,27 +63,6 @@ static inline void st2(uint32_t *p, uint32x4_t e, uint32x4_t o)
 #define ARM_TAIL bloom_arm_kern_c
 #define ARM_FN(f) f##_neon
 #include "bloom_preset_arm_simd.h"
-#undef VT
-#undef W
-#undef LDV
-#undef STV
-#undef ADDV
-#undef ANDV
-#undef ORV
-#undef SHLV
-#undef SHRV
-#undef DUPV
-#undef MLAV
-#undef SUM5
-#undef DIV3
-#undef MAXV
-#undef MAX_LANES
-#undef OR_LANES
-#undef ST2V
-#undef VT2
-#undef LD2V
-#undef ARM_TAIL
-#undef ARM_FN
 
 static void lum8_neon(const uint8_t *p, uint32_t *c4, uint32_t *c2, int n, bool x4, int i)
 {

@@ -120,3 +120,26 @@ static uint32_t ARM_FN(max3)(const uint32_t *u0, const uint32_t *u1, const uint3
     }
     return MAX_LANES(m);
 }
+
+/* the operation layer is the including file's: undone here, once */
+#undef VT
+#undef W
+#undef LDV
+#undef STV
+#undef ADDV
+#undef ANDV
+#undef ORV
+#undef SHLV
+#undef SHRV
+#undef DUPV
+#undef MLAV
+#undef SUM5
+#undef DIV3
+#undef MAXV
+#undef MAX_LANES
+#undef OR_LANES
+#undef ST2V
+#undef VT2
+#undef LD2V
+#undef ARM_TAIL
+#undef ARM_FN

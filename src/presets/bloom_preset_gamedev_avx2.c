@@ -66,19 +66,6 @@ static inline __m256i gauss8(__m256i c, __m256i p1, __m256i p2, __m256i p3, __m2
 #define SUBSB _mm256_subs_epu8
 #define GD_FN(f) f##_avx2
 #include "bloom_preset_gamedev_simd.h"
-#undef VT
-#undef VB
-#undef W
-#undef LDV
-#undef STV
-#undef LDB
-#undef STB
-#undef ADDV
-#undef GAUSSV
-#undef DUPB
-#undef MAXB
-#undef SUBSB
-#undef GD_FN
 
 void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
 {

@@ -45,19 +45,6 @@ static inline uint32x4_t gauss4(uint32x4_t c, uint32x4_t p1, uint32x4_t p2, uint
 #define SUBSB vqsubq_u8
 #define GD_FN(f) f##_neon
 #include "bloom_preset_gamedev_simd.h"
-#undef VT
-#undef VB
-#undef W
-#undef LDV
-#undef STV
-#undef LDB
-#undef STB
-#undef ADDV
-#undef GAUSSV
-#undef DUPB
-#undef MAXB
-#undef SUBSB
-#undef GD_FN
 
 void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
 {

@@ -58,3 +58,18 @@ void GD_FN(gd_gauss_h)(const uint32_t *v, uint32_t *dst, int i0, int i1)
     if (i < i1)
         gd_gauss_h_c(v, dst, i, i1);
 }
+
+/* the operation layer is the including file's: undone here, once */
+#undef VT
+#undef VB
+#undef W
+#undef LDV
+#undef STV
+#undef LDB
+#undef STB
+#undef ADDV
+#undef GAUSSV
+#undef DUPB
+#undef MAXB
+#undef SUBSB
+#undef GD_FN

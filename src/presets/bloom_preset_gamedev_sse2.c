@@ -50,19 +50,6 @@ static inline __m128i gauss4(__m128i c, __m128i p1, __m128i p2, __m128i p3, __m1
 #define SUBSB _mm_subs_epu8
 #define GD_FN(f) f##_sse2
 #include "bloom_preset_gamedev_simd.h"
-#undef VT
-#undef VB
-#undef W
-#undef LDV
-#undef STV
-#undef LDB
-#undef STB
-#undef ADDV
-#undef GAUSSV
-#undef DUPB
-#undef MAXB
-#undef SUBSB
-#undef GD_FN
 
 #else
 typedef int bloom_preset_gamedev_sse2_empty; /* ISO C wants a declaration in every file */
