@@ -52,7 +52,9 @@ typedef enum {
     BLOOM_FMT_RGB888 = 1, /* bytes R, G, B (V4L2 RGB24) */
     BLOOM_FMT_XRGB8888,   /* LE word 0xXXRRGGBB: bytes B, G, R, X (fbdev 32 bpp) */
     BLOOM_FMT_RGB565,     /* LE 16-bit RRRRRGGG GGGBBBBB (fbdev 16 bpp) */
-    BLOOM_FMT_RGBQ16      /* 3 native uint32_t, linear Q16.16 (HDR in and out) */
+    BLOOM_FMT_RGBQ16,     /* 3 native uint32_t, linear Q16.16 (HDR in and out) */
+    BLOOM_FMT_RGBF32      /* 3 native IEEE-754 binary32 floats, linear (HDR input only),
+                             decoded with integers only */
 } bloom_format_t;
 
 enum {

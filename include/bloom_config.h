@@ -19,6 +19,9 @@
 #ifndef BLOOM_USE_RGBQ16
 #define BLOOM_USE_RGBQ16 1 /* linear Q16.16 words: HDR input and output */
 #endif
+#ifndef BLOOM_USE_RGBF32 /* linear binary32 input: with RGBQ16 unless said otherwise */
+#define BLOOM_USE_RGBF32 BLOOM_USE_RGBQ16
+#endif
 
 /* Presets besides the default (sim/docs/presets.md). 0 leaves a preset's
  * code out; bloom_query() then refuses it with BLOOM_E_PRESET. With all of

@@ -45,6 +45,10 @@ static inline int bloom_bpp(bloom_format_t fmt)
     case BLOOM_FMT_RGBQ16:
         return 12;
 #endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32:
+        return 12;
+#endif
     default:
         return 0;
     }

@@ -68,7 +68,7 @@ static inline void errstat_print(const char *what, const errstat_t *e)
 
 static inline void fmt_max(bloom_format_t f, int m[3])
 {
-    m[0] = m[1] = m[2] = f == BLOOM_FMT_RGBQ16 ? 0 : 255;
+    m[0] = m[1] = m[2] = f == BLOOM_FMT_RGBQ16 ? 0 : f == BLOOM_FMT_RGBF32 ? BLOOM_MODEL_F32 : 255;
     if (f == BLOOM_FMT_RGB565) {
         m[0] = m[2] = 31;
         m[1] = 63;
@@ -85,6 +85,7 @@ static inline uint32_t *frame_codes(const frame_t *f)
             uint32_t *o = c + ((size_t)y * (size_t)f->w + (size_t)x) * 3u;
             switch (f->fmt) {
             case BLOOM_FMT_RGBQ16:
+            case BLOOM_FMT_RGBF32: /* the float's bits */
                 memcpy(o, p, 12);
                 break;
             case BLOOM_FMT_RGB565: {

@@ -43,4 +43,36 @@ static inline int imgframe_load(const char *name, frame_t *out)
     return 1;
 }
 
+/* A float image (PFM) times an exposure scale as an RGBF32 frame; values
+ * are kept below 256 (the engine's largest sample; the float model would
+ * not clamp them) and negative ones at 0. 0 if it is not a float image. */
+static inline int imgframe_load_f32(const char *name, double scale, frame_t *out)
+{
+    const char *dir = getenv("BLOOM_DATA_DIR");
+    char path[512], err[512];
+    img_t im;
+    snprintf(path, sizeof path, "%s/%s", dir ? dir : "tests/data", name);
+    if (img_read(path, &im, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return 0;
+    }
+    if (!im.f32) {
+        fprintf(stderr, "%s: not a float image\n", path);
+        img_free(&im);
+        return 0;
+    }
+    *out = frame_alloc(im.width, im.height, BLOOM_FMT_RGBF32, 0);
+    for (int y = 0; y < im.height; y++)
+        for (int x = 0; x < im.width; x++)
+            for (int ch = 0; ch < 3; ch++) {
+                const size_t i = ((size_t)y * (size_t)im.width + (size_t)x) * (size_t)im.channels +
+                                 (size_t)(im.channels == 3 ? ch : 0);
+                float v = (float)(im.f32[i] * scale);
+                v = v > 0.0f ? (v < 255.99998f ? v : 255.99998f) : 0.0f;
+                memcpy(out->p + (size_t)y * out->stride + (size_t)x * 12u + 4u * (size_t)ch, &v, 4);
+            }
+    img_free(&im);
+    return 1;
+}
+
 #endif

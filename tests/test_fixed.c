@@ -217,8 +217,62 @@ static void test_tables(void)
     CHECK(back[0] == BLOOM_MAX_LINEAR && back[2] == 7u);
 }
 
+/* RGBF32 decode: the integer conversion of the float's bits against
+ * double arithmetic (v * 2^F rounded half to even by rint, clamped), over
+ * a stride through all 2^32 bit patterns, the ties k + 1/2 LSB (to even),
+ * and the special values. */
+static uint32_t f32_ref(float f)
+{
+    if (!(f > 0.0f))
+        return 0;
+    const double v = rint((double)f * (double)BLOOM_LIN_ONE);
+    return v >= (double)BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)v;
+}
+static uint32_t f32_dec(uint32_t bits)
+{
+    uint32_t w[3] = {bits, 0, 0}, q[3];
+    bloom_pixel_decode(BLOOM_FMT_RGBF32, false, (const uint8_t *)w, q);
+    return q[0];
+}
+static void test_f32_decode(void)
+{
+    long bad = 0, n = 0;
+    for (uint64_t b = 0; b <= 0xFFFFFFFFu; b += 4093u, n++) {
+        float f;
+        const uint32_t bits = (uint32_t)b;
+        memcpy(&f, &bits, 4);
+        bad += f32_dec(bits) != f32_ref(f);
+    }
+    CHECKF(bad == 0, "%ld of %ld bit patterns decode unlike rint(v * 2^F)", bad, n);
+    bad = 0;
+    for (uint32_t k = 0; k < 4096; k++) { /* (k + 1/2) / 2^F: a tie, to the even neighbour */
+        const float f = (float)((k + 0.5) / (double)BLOOM_LIN_ONE);
+        uint32_t bits;
+        memcpy(&bits, &f, 4);
+        bad += f32_dec(bits) != k + (k & 1u);
+    }
+    CHECKF(bad == 0, "%ld ties not rounded to even", bad);
+    const float sp[] = {-0.0f, -1.0f, 256.0f, 1e30f, 255.99998f, 1e-40f, 0x1p-21f, 0x1.000002p-21f, 1.0f};
+    const uint32_t want[] = {0, 0, BLOOM_LIN_MAX, BLOOM_LIN_MAX, BLOOM_LIN_MAX, 0, 0, 1, BLOOM_LIN_ONE};
+    for (size_t i = 0; i < sizeof sp / sizeof sp[0]; i++) {
+        uint32_t bits;
+        memcpy(&bits, &sp[i], 4);
+        CHECKF(f32_dec(bits) == want[i], "%g decodes to %u, not %u", (double)sp[i], f32_dec(bits), want[i]);
+    }
+    CHECK(f32_dec(0x7F800000u) == BLOOM_LIN_MAX && f32_dec(0x7FC00000u) == 0 && f32_dec(0xFFC00000u) == 0);
+    /* an input-only format: refused as the output, with the reason */
+    bloom_config_t c;
+    bloom_config_default(&c, 8, 8);
+    c.in_fmt = BLOOM_FMT_RGBF32;
+    bloom_info_t info;
+    CHECK(bloom_query(&c, &info) == BLOOM_OK);
+    c.out_fmt = BLOOM_FMT_RGBF32;
+    CHECK(bloom_query(&c, &info) == BLOOM_E_FORMAT);
+}
+
 int main(void)
 {
+    test_f32_decode();
     test_div();
     test_intensity();
     test_knee_formula();

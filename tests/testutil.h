@@ -81,7 +81,7 @@ static inline frame_t frame_alloc(int w, int h, bloom_format_t fmt, int fill_cod
     f.h = h;
     f.fmt = fmt;
     f.bpp = bloom_format_bpp(fmt);
-    f.stride = (size_t)w * (size_t)f.bpp + (fmt == BLOOM_FMT_RGBQ16 ? 4u : 5u);
+    f.stride = (size_t)w * (size_t)f.bpp + (fmt == BLOOM_FMT_RGBQ16 || fmt == BLOOM_FMT_RGBF32 ? 4u : 5u);
     f.bytes = f.stride * (size_t)h;
     f.g = guarded_alloc(f.bytes);
     f.p = f.g.p;
@@ -91,6 +91,10 @@ static inline frame_t frame_alloc(int w, int h, bloom_format_t fmt, int fill_cod
             uint8_t *q = f.p + (size_t)y * f.stride + (size_t)x * (size_t)f.bpp;
             if (fmt == BLOOM_FMT_RGBQ16) {
                 uint32_t v[3] = {(uint32_t)fill_code, (uint32_t)fill_code, (uint32_t)fill_code};
+                memcpy(q, v, sizeof v);
+            } else if (fmt == BLOOM_FMT_RGBF32) { /* fill_code as a Q16.16 value */
+                const float v[3] = {(float)fill_code / 65536.0f, (float)fill_code / 65536.0f,
+                                    (float)fill_code / 65536.0f};
                 memcpy(q, v, sizeof v);
             } else if (fmt == BLOOM_FMT_RGB565) {
                 uint32_t c = (uint32_t)fill_code;
@@ -104,7 +108,8 @@ static inline frame_t frame_alloc(int w, int h, bloom_format_t fmt, int fill_cod
     return f;
 }
 
-/* Random codes; RGBQ16 words up to 4.0. */
+/* Random codes; RGBQ16 words up to 4.0; RGBF32 values up to 4.0 with a
+ * 2^-24 step (finer than the engine's, so its rounding is exercised). */
 static inline frame_t frame_random(const bloom_config_t *c, bloom_format_t fmt, uint32_t seed)
 {
     frame_t f = frame_alloc(c->width, c->height, fmt, 0);
@@ -114,6 +119,11 @@ static inline frame_t frame_random(const bloom_config_t *c, bloom_format_t fmt, 
         if (fmt == BLOOM_FMT_RGBQ16) {
             for (int i = 0; i < f.w * 3; i++) {
                 uint32_t v = rng_next(&s) % (4u << 16);
+                memcpy(row + 4 * i, &v, 4);
+            }
+        } else if (fmt == BLOOM_FMT_RGBF32) {
+            for (int i = 0; i < f.w * 3; i++) {
+                const float v = (float)(rng_next(&s) % (1u << 26)) / 16777216.0f;
                 memcpy(row + 4 * i, &v, 4);
             }
         } else {

@@ -148,6 +148,18 @@ static double decode(const model_t *m, int linear, uint32_t word, int n)
 {
     if (n == 0) /* RGBQ16: a linear Q16.16 word, clamped, to Q12.20 */
         return m->bt ? fmin((double)word, MAX_LINEAR) * m->q16 : word / Q_ONE;
+    if (n == BLOOM_MODEL_F32) { /* RGBF32: the bits of a linear binary32 value */
+        float f;
+        memcpy(&f, &word, sizeof f);
+        if (!(f > 0.0f)) /* negative, zero, NaN */
+            return 0.0;
+        if (!m->bt)
+            return (double)f;
+        /* round half to even of f * 2^F (exact in double: a power of two
+         * times a 24-bit mantissa; rint rounds ties to even), clamped to
+         * the largest sample (2^24 - 1) * 2^(F - 16) */
+        return fmin(rint((double)f * m->one), MAX_LINEAR * m->q16);
+    }
     if (!m->bt)
         return linear ? (double)word / n : bloom_srgb_to_linear((double)word / n);
     if (linear) /* (c*2^20 + (n-1)/2) / n, integer division */
@@ -316,11 +328,11 @@ int bloom_model_tent_up(const bloom_model_image_t *low, int w, int h, bloom_mode
 
 /* ---- argument checks --------------------------------------------------- */
 
-static int bad_max(const int n[3])
+static int bad_max(const int n[3], int input)
 {
     int c;
     for (c = 0; c < 3; c++)
-        if (n[c] < 0 || n[c] > 65535)
+        if (n[c] < (input ? BLOOM_MODEL_F32 : 0) || n[c] > 65535)
             return 1;
     return 0;
 }
@@ -328,7 +340,7 @@ static int bad_max(const int n[3])
 static int bad_args(const bloom_model_params_t *p, const uint32_t *src, const int src_max[3])
 {
     size_t i, count;
-    if (!p || !src || !src_max || bad_max(src_max))
+    if (!p || !src || !src_max || bad_max(src_max, 1))
         return 1;
     if (bloom_model_levels(p->width, p->height, p->levels) < 0)
         return 1;
@@ -345,7 +357,7 @@ static int bad_args(const bloom_model_params_t *p, const uint32_t *src, const in
         return 1;
     count = (size_t)p->width * (size_t)p->height * 3;
     for (i = 0; i < count; i++)
-        if (src_max[i % 3] != 0 && src[i] > (uint32_t)src_max[i % 3])
+        if (src_max[i % 3] > 0 && src[i] > (uint32_t)src_max[i % 3])
             return 1;
     return 0;
 }
@@ -449,7 +461,7 @@ int bloom_model_run(const bloom_model_params_t *p, const uint32_t *src, const in
     size_t i, count;
     int L;
 
-    if (dst_codes && (!dst_max || bad_max(dst_max)))
+    if (dst_codes && (!dst_max || bad_max(dst_max, 0)))
         return -1;
     L = bloom_model_pyramid(p, src, src_max, &pyr);
     if (L < 0)

@@ -32,10 +32,15 @@ typedef struct {
     const double *d1_scale;
 } bloom_model_params_t;
 
+#define BLOOM_MODEL_F32 (-1) /* src_max: the word is a binary32 linear value */
+
 /* src: width*height pixels, 3 words each (R,G,B), row-major, top row first.
  * src_max[c] is the largest code of channel c (255, 63 or 31), or 0 meaning the
  * word is a linear Q16.16 value (the RGBQ16 format; the bit-true mode clamps it to 2^24-1
- * as the core does; the float model uses word/65536 unclamped).
+ * as the core does; the float model uses word/65536 unclamped), or BLOOM_MODEL_F32
+ * meaning the word holds the bits of a linear IEEE-754 binary32 value (RGBF32; the
+ * bit-true mode rounds v * 2^F half to even and clamps it as the core does, the float
+ * model uses v; both read negative values and NaN as 0). Output has no such code.
  * dst_codes (may be NULL): width*height*3 output codes; dst_max[c] as src_max
  * (0 = Q16.16 output: bit-true min((v + 8) >> 4, 2^24-1); float: round-half-up(v*65536) clamped to [0, 2^24-1]).
  * dst_value (may be NULL): width*height*3 doubles, the linear value v before encoding

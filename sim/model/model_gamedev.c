@@ -140,7 +140,8 @@ int bloom_model_gamedev(const bloom_model_preset_args_t *a)
     const double one = bt ? ldexp(1.0, F) : 1.0;
     const double t = cfg->threshold / 65536.0, strength = cfg->p.strength / 65536.0;
     for (int c = 0; c < 3; c++)
-        if (a->src_max[c] < 0 || a->src_max[c] > 65535 || a->dst_max[c] < 0 || a->dst_max[c] > 65535)
+        if (a->src_max[c] < BLOOM_MODEL_F32 || a->src_max[c] > 65535 || a->dst_max[c] < 0 ||
+            a->dst_max[c] > 65535)
             return -1;
     image_t S, D[4], G[4], U[4], B, T;
     memset(D, 0, sizeof D);

@@ -52,6 +52,11 @@ static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8
         BLOOM_DEC_RGBQ16(p, o);
         return;
 #endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32:
+        BLOOM_DEC_RGBF32(p, o);
+        return;
+#endif
 #if BLOOM_USE_XRGB8888
     case BLOOM_FMT_XRGB8888:
         BLOOM_DEC_XRGB8888(p, o, lin);
@@ -115,6 +120,11 @@ static BLOOM_ALWAYS_INLINE uint32_t dec_ch(bloom_format_t fmt, bool lin, const u
         uint32_t w;
         memcpy(&w, p + 4 * ch, 4);
         return (w > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w) << BLOOM_Q16_SHIFT;
+    }
+    case BLOOM_FMT_RGBF32: {
+        uint32_t w;
+        memcpy(&w, p + 4 * ch, 4);
+        return bloom_f32_to_lin(w);
     }
     case BLOOM_FMT_XRGB8888:
         return lin ? bloom_dec_linear(p[2 - ch], 255) : bloom_srgb_dec8[p[2 - ch]];
@@ -207,9 +217,12 @@ void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bo
             box_src_range(s, BLOOM_FMT_RGB565, false, 2, dst, xa, xb, sw);
         return;
 #endif
-#if BLOOM_USE_RGBQ16
+#if BLOOM_USE_RGBQ16 || BLOOM_USE_RGBF32 /* (the full build: size does not matter here) */
     case BLOOM_FMT_RGBQ16:
         box_src_range(s, BLOOM_FMT_RGBQ16, false, 12, dst, xa, xb, sw);
+        return;
+    case BLOOM_FMT_RGBF32:
+        box_src_range(s, BLOOM_FMT_RGBF32, false, 12, dst, xa, xb, sw);
         return;
 #endif
 #if BLOOM_USE_RGB888
@@ -229,10 +242,7 @@ void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bo
         return;
 #endif
     default: /* refused by bloom_query */
-        (void)s;
-        (void)linear;
-        (void)dst;
-        (void)sw;
+        (void)s, (void)linear, (void)dst, (void)sw;
         return;
     }
 }
@@ -253,6 +263,11 @@ void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool lin
 #if BLOOM_USE_RGBQ16
     case BLOOM_FMT_RGBQ16:
         box_src(s, BLOOM_FMT_RGBQ16, false, 12, dst, dw, sw);
+        return;
+#endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32:
+        box_src(s, BLOOM_FMT_RGBF32, false, 12, dst, dw, sw);
         return;
 #endif
 #if BLOOM_USE_XRGB8888

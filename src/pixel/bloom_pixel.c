@@ -63,6 +63,12 @@ static inline void decode_rows(bloom_format_t fmt, bool lin, const uint8_t *p, u
             BLOOM_DEC_RGBQ16(p, o);
         return;
 #endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32:
+        for (int i = 0; i < n; i++, p += 12, o += 3)
+            BLOOM_DEC_RGBF32(p, o);
+        return;
+#endif
 #if BLOOM_USE_XRGB8888
     case BLOOM_FMT_XRGB8888:
         for (int i = 0; i < n; i++, p += 4, o += 3)
@@ -383,6 +389,17 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
             m = w > m ? w : m;
         }
         return m <= d->q16;
+    }
+#endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32: { /* positive bits order as the values; negative and NaN count as bright */
+        uint32_t m = 0;
+        for (int i = 0; i < 3 * n; i++) {
+            uint32_t w;
+            memcpy(&w, p + 4 * i, 4);
+            m = w > m ? w : m;
+        }
+        return m <= d->f32;
     }
 #endif
 #if BLOOM_USE_XRGB8888

@@ -34,7 +34,7 @@ extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bk
 /* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
  * source row with no channel above them is dark. */
 typedef struct {
-    uint32_t c8, c6, c5, q16;
+    uint32_t c8, c6, c5, q16, f32; /* f32: the bits of the largest such float */
 } bloom_dark_t;
 
 /* floor(n / d) where the quotient is known to fit in 32 bits: a native
@@ -112,6 +112,44 @@ static inline void bloom_dec_rgbq16(const uint8_t *p, uint32_t *o)
         o[c] = (w[c] > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w[c]) << BLOOM_Q16_SHIFT;
 }
 #define BLOOM_DEC_RGBQ16(p, o) bloom_dec_rgbq16((p), (o))
+
+/* A linear IEEE-754 binary32 value, given by its bits, to Q(32-F).F with
+ * integers only (no FPU at frame time): v * 2^F rounded half to even and
+ * clamped to [0, BLOOM_LIN_MAX]. A normal v is m * 2^(e - 150) with the
+ * 24-bit m (hidden bit set), so v * 2^F = m * 2^(e - 150 + F); from 256
+ * up (and +Inf) the largest sample, as RGBQ16 clamps; negative values, -0,
+ * NaN and subnormals (below 2^-126, far under half an LSB) give 0. The
+ * positive bit patterns order as the values do, which the dark-row test
+ * uses. Why the format exists: RGBQ16's step 2^-16 is coarse at the foot
+ * of the sRGB curve (fixed-point.md, "Linear input"). */
+static inline uint32_t bloom_f32_to_lin(uint32_t bits)
+{
+    const uint32_t e = (bits >> 23) & 255u, m = (bits & 0x7FFFFFu) | 0x800000u;
+    if ((bits >> 31) || e == 0)
+        return 0;
+    if (e == 255u)
+        return (bits & 0x7FFFFFu) ? 0 : BLOOM_LIN_MAX;
+    const int sh = (int)e - 150 + BLOOM_LIN_BITS;
+    if (sh >= 8)
+        return BLOOM_LIN_MAX;
+    if (sh >= 0) {
+        const uint32_t v = m << sh; /* < 2^31 */
+        return v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : v;
+    }
+    if (sh <= -25) /* m < 2^24: below half an LSB */
+        return 0;
+    const uint32_t n = (uint32_t)-sh, q = m >> n, r = m & ((1u << n) - 1u), h = 1u << (n - 1u);
+    return q + (uint32_t)(r > h || (r == h && (q & 1u)));
+}
+
+static inline void bloom_dec_rgbf32(const uint8_t *p, uint32_t *o)
+{
+    uint32_t w[3];
+    memcpy(w, p, sizeof w);
+    for (int c = 0; c < 3; c++)
+        o[c] = bloom_f32_to_lin(w[c]);
+}
+#define BLOOM_DEC_RGBF32(p, o) bloom_dec_rgbf32((p), (o))
 
 /* Rows: n pixels from src (packed) to dst (3 samples each) and back. */
 void bloom_decode_row(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n);

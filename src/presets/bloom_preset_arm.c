@@ -126,6 +126,11 @@ static void lum_row(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *y,
         ARM_LUM_LOOP(12, BLOOM_DEC_RGBQ16(p, o))
         return;
 #endif
+#if BLOOM_USE_RGBF32
+    case BLOOM_FMT_RGBF32:
+        ARM_LUM_LOOP(12, BLOOM_DEC_RGBF32(p, o))
+        return;
+#endif
     default: /* refused by bloom_query */
         return;
     }
