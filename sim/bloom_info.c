@@ -73,7 +73,7 @@ int main(int argc, char **argv)
         {1920, 1080, 8, BLOOM_FMT_RGB888, 0},
         {3840, 2160, 5, BLOOM_FMT_XRGB8888, 0},
     };
-    static const char *names[] = {"", "RGB888", "XRGB8888", "RGB565", "RGBQ16"};
+    static const char *names[] = {"", "RGB888", "XRGB8888", "RGB565", "RGBQ16", "RGBF32"};
     printf("| frame | input | levels | source rows | workspace bytes | of one RGB888 frame | "
            "latency (rows) |\n|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
