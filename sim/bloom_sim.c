@@ -105,6 +105,8 @@ static int engine_setup(engine_t *e, const sim_opts_t *o, const sim_aux_t *aux, 
         return -1;
     if (o->in_fmt_set)
         c.in_fmt = o->in_fmt;
+    else if (f->max[0] == (int)SIM_F32) /* float images as they are */
+        c.in_fmt = BLOOM_FMT_RGBF32;
     else if (f->max[0] == 0)
         c.in_fmt = BLOOM_FMT_RGBQ16;
     else if (f->max[0] == 31 && f->max[1] == 63)

@@ -34,8 +34,11 @@ int sim_errf(char *err, size_t errlen, const char *fmt, ...) SIM_PRINTF(3, 4);
 /* ---- frames ------------------------------------------------------------
  * A decoded frame in the reference model's input representation: 3 words
  * per pixel (R, G, B), row-major; each word is a code of max[c] (255 for
- * 8-bit sources, 31/63/31 for RGB565 dumps) or, with max[c] == 0, a linear
- * Q16.16 value (HDR sources). */
+ * 8-bit sources, 31/63/31 for RGB565 dumps), with max[c] == 0 a linear
+ * Q16.16 value (16-bit sources), or with max[c] == SIM_F32 the bits of a
+ * linear float (PFM, OpenEXR: given to the engine as RGBF32 unless another
+ * input format is asked for). */
+#define SIM_F32 0xFFFFFFFFu
 typedef struct {
     int w, h;
     int max[3];

@@ -127,11 +127,27 @@ static uint32_t round_unit(double v, unsigned n) /* v in [0, 1] -> round(v * n) 
     return (uint32_t)floor(v * (double)n + 0.5);
 }
 
-/* c of range m (0 = Q16.16) to range n (0 = Q16.16). */
+/* c of range m (0 = Q16.16, SIM_F32 = the bits of a linear float) to
+ * range n (the same). A float goes through Q16.16 (img_float_to_q16) to
+ * any other range; a float made from a code is its Q16.16 value. */
 static uint32_t convert(uint32_t c, unsigned m, unsigned n, int linear)
 {
     if (m == n)
         return c;
+    if (m == SIM_F32) {
+        float v;
+        memcpy(&v, &c, sizeof v);
+        c = img_float_to_q16(v);
+        m = 0;
+        if (n == 0)
+            return c;
+    }
+    if (n == SIM_F32) {
+        const float v = (float)(convert(c, m, 0, linear) / 65536.0);
+        uint32_t b;
+        memcpy(&b, &v, sizeof b);
+        return b;
+    }
     if (m && n) /* code to code: round half up of c * n / m */
         return (uint32_t)(((uint64_t)c * n + m / 2u) / m);
     if (m) /* code to linear Q16.16: what the engine's decoder computes */
@@ -152,13 +168,13 @@ int sim_frame_from_img(const img_t *im, int decode16_srgb, sim_frame_t *f)
     const unsigned m = (unsigned)im->maxval;
     const int wide = !im->f32 && m > 255u;
     for (int c = 0; c < 3; c++)
-        f->max[c] = im->f32 || wide ? 0 : 255;
+        f->max[c] = im->f32 ? (int)SIM_F32 : wide ? 0 : 255;
     for (size_t i = 0; i < n; i++)
         for (int c = 0; c < 3; c++) {
             size_t s = i * (size_t)ch + (size_t)(ch == 3 ? c : 0);
             uint32_t v;
-            if (im->f32)
-                v = img_float_to_q16(im->f32[s]);
+            if (im->f32) /* the float itself (RGBF32); to words where needed */
+                memcpy(&v, &im->f32[s], sizeof v);
             else if (!wide)
                 v = convert(im->u16[s], m, 255u, 0);
             else if (decode16_srgb)
@@ -231,10 +247,8 @@ static const struct {
     const char *name;
     bloom_format_t fmt;
 } fmt_names[] = {
-    {"rgb888", BLOOM_FMT_RGB888},
-    {"xrgb8888", BLOOM_FMT_XRGB8888},
-    {"rgb565", BLOOM_FMT_RGB565},
-    {"rgbq16", BLOOM_FMT_RGBQ16},
+    {"rgb888", BLOOM_FMT_RGB888}, {"xrgb8888", BLOOM_FMT_XRGB8888}, {"rgb565", BLOOM_FMT_RGB565},
+    {"rgbq16", BLOOM_FMT_RGBQ16}, {"rgbf32", BLOOM_FMT_RGBF32},
 };
 
 int sim_fmt_parse(const char *s, bloom_format_t *fmt)
@@ -263,6 +277,8 @@ void sim_fmt_max(bloom_format_t fmt, int max[3])
         max[1] = 63;
     } else if (fmt == BLOOM_FMT_RGBQ16) {
         max[0] = max[1] = max[2] = 0;
+    } else if (fmt == BLOOM_FMT_RGBF32) {
+        max[0] = max[1] = max[2] = (int)SIM_F32;
     }
 }
 
@@ -293,6 +309,7 @@ void sim_to_engine(const sim_frame_t *f, bloom_format_t fmt, int linear, uint8_t
             break;
         }
         case BLOOM_FMT_RGBQ16:
+        case BLOOM_FMT_RGBF32:
             memcpy(buf + 12 * i, v, 12);
             break;
         }
@@ -322,6 +339,7 @@ void sim_from_engine(const uint8_t *buf, bloom_format_t fmt, size_t npix, uint32
             break;
         }
         case BLOOM_FMT_RGBQ16:
+        case BLOOM_FMT_RGBF32:
             memcpy(o, buf + 12 * i, 12);
             break;
         }
@@ -338,9 +356,12 @@ void sim_codes_to_float(const uint32_t *codes, const int max[3], size_t npix, in
 {
     for (size_t i = 0; i < 3 * npix; i++) {
         const int m = max[i % 3];
-        double v = m == 0   ? codes[i] / 65536.0
-                   : linear ? (double)codes[i] / m
-                            : bloom_srgb_to_linear((double)codes[i] / m);
+        float f;
+        memcpy(&f, &codes[i], sizeof f);
+        double v = m == (int)SIM_F32 ? (f > 0.0f ? (double)f : 0.0)
+                   : m == 0          ? codes[i] / 65536.0
+                   : linear          ? (double)codes[i] / m
+                                     : bloom_srgb_to_linear((double)codes[i] / m);
         out[i] = (float)v;
     }
 }

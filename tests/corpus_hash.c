@@ -36,7 +36,7 @@ static const params_t PARAMS[] = {
 
 static const bloom_format_t FMTS[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
                                       BLOOM_FMT_RGBQ16};
-static const char *const FMT_NAME[] = {"?", "RGB888", "XRGB8888", "RGB565", "RGBQ16"};
+static const char *const FMT_NAME[] = {"?", "RGB888", "XRGB8888", "RGB565", "RGBQ16", "RGBF32"};
 
 #define FNV_OFFSET 0xcbf29ce484222325ull
 #define FNV_PRIME 0x100000001b3ull
@@ -382,6 +382,40 @@ static void preset_corpus(const char *dir)
     aux_plane = NULL;
 }
 
+/* RGBF32 input: random floats with the special values planted (NaN,
+ * +-Inf, -0, negative, subnormal, the ties k + 1/2 LSB, 256 and the
+ * largest float below it) through every preset into the three code formats
+ * and RGBQ16: the integer decode of the bits must agree everywhere. */
+static void f32_corpus(void)
+{
+    static const uint32_t special[] = {0x7FC00000u, 0x7F800000u, 0xFF800000u, 0x80000000u,
+                                       0xBF800000u, 0x00000001u, 0x007FFFFFu, 0x35000000u,
+                                       0x35400000u, 0x43800000u, 0x437FFFFFu, 0x3F800000u};
+    static const bloom_format_t outs[] = {BLOOM_FMT_RGB888, BLOOM_FMT_RGB565, BLOOM_FMT_XRGB8888,
+                                          BLOOM_FMT_RGBQ16};
+    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+        if (!bloom_preset_available((bloom_preset_t)p) || p == BLOOM_PRESET_ATTENUATION)
+            continue; /* (it needs its depth plane; its source rows are the default's) */
+        for (size_t o = 0; o < sizeof outs / sizeof outs[0]; o++) {
+            bloom_config_t c;
+            bloom_config_default(&c, 67, 45);
+            bloom_config_preset(&c, (bloom_preset_t)p);
+            c.in_fmt = BLOOM_FMT_RGBF32;
+            c.out_fmt = outs[o];
+            frame_t src = frame_random(&c, c.in_fmt, 41u + (uint32_t)p);
+            for (int k = 0; k < 3 * c.width * c.height; k += 7) {
+                const uint32_t v = special[(size_t)(k / 7) % (sizeof special / sizeof special[0])];
+                memcpy(src.p + (size_t)(k / (3 * c.width)) * src.stride + 4u * (size_t)(k % (3 * c.width)),
+                       &v, 4);
+            }
+            char what[96];
+            snprintf(what, sizeof what, "RGBF32 in, preset %s", bloom_preset_name((bloom_preset_t)p));
+            run(what, &c, &src);
+            frame_free(&src);
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : getenv("BLOOM_DATA_DIR");
@@ -389,6 +423,7 @@ int main(int argc, char **argv)
     extreme_corpus();
     image_corpus(dir && *dir ? dir : "tests/data");
     preset_corpus(dir && *dir ? dir : "tests/data");
+    f32_corpus();
     printf("total %d runs, %d errors, hash %016" PRIx64 " (default preset alone: %016" PRIx64 ")\n", runs,
            errors, total, total_default);
     return errors ? 1 : 0;

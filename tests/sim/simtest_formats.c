@@ -123,16 +123,26 @@ static void test_pfm_rule(void)
         CHECKF(RUN(NULL, st_path("in.exr"), PASS_Q16, "-o", st_path("oexr.pfm")) == 0, "%s", R.err);
         CHECKF(pfm_is_q16(st_path("oexr.pfm"), q, 12), "OpenEXR %s", half ? "half" : "float");
     }
-    /* an HDR source runs as rgbq16 by default; bit-exact with the engine */
+    /* an HDR source runs as rgbf32 by default (the floats as they are),
+     * as rgbq16 when asked (the PFM rule); each bit-exact with the engine.
+     * The values are not on the Q16.16 grid, so the two differ. */
     float big[24 * 16 * 3];
-    uint32_t words[24 * 16 * 3];
-    for (int i = 0; i < 24 * 16 * 3; i++)
-        big[i] = (i % 97 == 0) ? 40.0f : (float)(i % 13) / 16.0f, words[i] = img_float_to_q16(big[i]);
+    uint32_t words[24 * 16 * 3], bits[24 * 16 * 3];
+    for (int i = 0; i < 24 * 16 * 3; i++) {
+        big[i] = (i % 97 == 0) ? 40.0f : (float)(i % 13) / 3000.0f;
+        words[i] = img_float_to_q16(big[i]);
+        memcpy(&bits[i], &big[i], 4);
+    }
     CHECK(st_write_exr(st_path("big.exr"), big, 24, 16, 0) == 0);
     bloom_config_t c = cfg(24, 16);
-    c.in_fmt = BLOOM_FMT_RGBQ16;
+    c.in_fmt = BLOOM_FMT_RGBF32;
     CHECK(RUN(NULL, st_path("big.exr"), "-o", st_path("oexr.png")) == 0);
-    CHECK(output_matches_engine(st_path("oexr.png"), &c, words));
+    CHECK(strstr(R.out, "rgbf32 -> rgb888") != NULL);
+    CHECK(output_matches_engine(st_path("oexr.png"), &c, bits));
+    c.in_fmt = BLOOM_FMT_RGBQ16;
+    CHECK(RUN(NULL, st_path("big.exr"), "--in-format", "rgbq16", "-o", st_path("oexq.png")) == 0);
+    CHECK(output_matches_engine(st_path("oexq.png"), &c, words));
+    CHECK(!output_matches_engine(st_path("oexr.png"), &c, words)); /* the two differ */
 }
 
 /* Forcing formats: an 8-bit source as rgbq16 is decoded to Q16.16 by the
