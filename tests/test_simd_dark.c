@@ -38,17 +38,19 @@ static int check_set(const bloom_kernels_t *k)
 {
     static uint8_t buf[12 * NMAX + 64];
     static const uint32_t codes[] = {0, 254, 255, 17, 100};
-    const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565, BLOOM_FMT_RGBQ16};
-    const int bpps[] = {3, 4, 2, 12};
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565, BLOOM_FMT_RGBQ16,
+                                   BLOOM_FMT_RGBF32};
+    const int bpps[] = {3, 4, 2, 12, 12};
     int bad = 0;
-    for (int f = 0; f < 4; f++)
+    for (int f = 0; f < 5; f++)
         for (int n = 1; n <= NMAX; n++) {
             if (f >= 2 && n % 97 != 1) /* passed through: a few widths */
                 continue;
             for (int off = 0; off < 4; off++) {
                 uint8_t *p = buf + off;
                 for (size_t ci = 0; ci < sizeof codes / sizeof codes[0]; ci++) {
-                    bloom_dark_t d = {codes[ci], codes[ci] >> 2, codes[ci] >> 3, codes[ci] << 12};
+                    bloom_dark_t d = {codes[ci], codes[ci] >> 2, codes[ci] >> 3, codes[ci] << 12,
+                                      codes[ci] << 23};
                     const int bpp = bpps[f], cb = bpp == 4 ? 3 * n : n * bpp;
                     fill_dark(p, n, bpp, d.c8);
                     bad += bloom_row_dark(fmts[f], p, n, &d) != k->dark(fmts[f], p, n, &d);

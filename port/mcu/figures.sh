@@ -59,7 +59,7 @@ kb() { awk -v n="$1" 'BEGIN { printf "%.1f KB", n / 1024 }'; }
 met() { [ "$1" -le "$2" ] && echo "met" || echo "**not met**"; }
 name() {
     case $1 in
-    full) echo "full (all 4 formats)" ;; rgb565) echo "RGB565 only" ;;
+    full) echo "full (every format: 4 out, 5 in)" ;; rgb565) echo "RGB565 only" ;;
     min) echo "minimal (RGB565, BLOOM_SMALL, no skip)" ;;
     minnc) echo "minimal, no ring checks" ;; minx) echo "minimal, exact workspace" ;;
     esac
