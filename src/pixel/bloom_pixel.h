@@ -124,22 +124,19 @@ static inline void bloom_dec_rgbq16(const uint8_t *p, uint32_t *o)
  * of the sRGB curve (fixed-point.md, "Linear input"). */
 static inline uint32_t bloom_f32_to_lin(uint32_t bits)
 {
-    const uint32_t e = (bits >> 23) & 255u, m = (bits & 0x7FFFFFu) | 0x800000u;
-    if ((bits >> 31) || e == 0)
+    if (bits >= 0x7F800000u) /* +Inf, NaN, and every negative value (sign bit) */
+        return bits == 0x7F800000u ? BLOOM_LIN_MAX : 0;
+    /* v * 2^F = m * 2^(t - 25) with t = e - 125 + F: one shift into 64
+     * bits, then one rounding shift by 25 (half to even, no branch);
+     * t <= 0 is below half an LSB (zero, subnormals), t > 32 far above 256 */
+    const int t = (int)(bits >> 23) - 125 + BLOOM_LIN_BITS;
+    if (t <= 0)
         return 0;
-    if (e == 255u)
-        return (bits & 0x7FFFFFu) ? 0 : BLOOM_LIN_MAX;
-    const int sh = (int)e - 150 + BLOOM_LIN_BITS;
-    if (sh >= 8)
+    if (t > 32)
         return BLOOM_LIN_MAX;
-    if (sh >= 0) {
-        const uint32_t v = m << sh; /* < 2^31 */
-        return v > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : v;
-    }
-    if (sh <= -25) /* m < 2^24: below half an LSB */
-        return 0;
-    const uint32_t n = (uint32_t)-sh, q = m >> n, r = m & ((1u << n) - 1u), h = 1u << (n - 1u);
-    return q + (uint32_t)(r > h || (r == h && (q & 1u)));
+    const uint64_t v = (uint64_t)((bits & 0x7FFFFFu) | 0x800000u) << t;
+    const uint64_t q = (v + (1u << 24) - 1u + ((v >> 25) & 1u)) >> 25;
+    return q > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)q;
 }
 
 static inline void bloom_dec_rgbf32(const uint8_t *p, uint32_t *o)
