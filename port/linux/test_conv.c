@@ -59,26 +59,26 @@ static void rules(void)
         int bt709, full, y, cb, cr;
         uint8_t rgb[3];
     } k[] = {
-        {0, 0, 16, 128, 128, {0, 0, 0}},       {0, 0, 235, 128, 128, {255, 255, 255}},
+        {0, 0, 16, 128, 128, {0, 0, 0}},        {0, 0, 235, 128, 128, {255, 255, 255}},
         {0, 0, 126, 128, 128, {128, 128, 128}}, {0, 0, 81, 90, 240, {254, 0, 0}},
-        {0, 0, 145, 54, 34, {0, 255, 1}},      {0, 0, 41, 240, 110, {0, 0, 255}},
-        {0, 1, 0, 128, 128, {0, 0, 0}},        {0, 1, 255, 128, 128, {255, 255, 255}},
+        {0, 0, 145, 54, 34, {0, 255, 1}},       {0, 0, 41, 240, 110, {0, 0, 255}},
+        {0, 1, 0, 128, 128, {0, 0, 0}},         {0, 1, 255, 128, 128, {255, 255, 255}},
         {0, 1, 128, 128, 128, {128, 128, 128}}, {0, 1, 76, 85, 255, {254, 0, 0}},
-        {0, 1, 150, 44, 21, {0, 255, 1}},      {0, 1, 29, 255, 107, {0, 0, 254}},
-        {1, 0, 16, 128, 128, {0, 0, 0}},       {1, 0, 235, 128, 128, {255, 255, 255}},
+        {0, 1, 150, 44, 21, {0, 255, 1}},       {0, 1, 29, 255, 107, {0, 0, 254}},
+        {1, 0, 16, 128, 128, {0, 0, 0}},        {1, 0, 235, 128, 128, {255, 255, 255}},
         {1, 0, 126, 128, 128, {128, 128, 128}}, {1, 0, 63, 102, 240, {255, 1, 0}},
-        {1, 0, 173, 42, 26, {0, 255, 1}},      {1, 0, 32, 240, 118, {1, 0, 255}},
-        {1, 1, 0, 128, 128, {0, 0, 0}},        {1, 1, 255, 128, 128, {255, 255, 255}},
+        {1, 0, 173, 42, 26, {0, 255, 1}},       {1, 0, 32, 240, 118, {1, 0, 255}},
+        {1, 1, 0, 128, 128, {0, 0, 0}},         {1, 1, 255, 128, 128, {255, 255, 255}},
         {1, 1, 128, 128, 128, {128, 128, 128}}, {1, 1, 54, 99, 255, {254, 0, 0}},
-        {1, 1, 182, 30, 12, {0, 255, 0}},      {1, 1, 18, 255, 116, {0, 0, 254}},
-        {0, 0, 0, 0, 0, {0, 136, 0}},          {0, 0, 255, 255, 255, {255, 125, 255}}, /* clamped */
+        {1, 1, 182, 30, 12, {0, 255, 0}},       {1, 1, 18, 255, 116, {0, 0, 254}},
+        {0, 0, 0, 0, 0, {0, 136, 0}},           {0, 0, 255, 255, 255, {255, 125, 255}}, /* clamped */
     };
     for (size_t i = 0; i < sizeof k / sizeof k[0]; i++) {
         uint8_t a[3];
         cam_ycc_to_rgb(cam_ycc(k[i].bt709, k[i].full), k[i].y, k[i].cb, k[i].cr, a);
         CHECKF(!memcmp(a, k[i].rgb, 3), "known value %zu: BT.%s %s (%d %d %d) gave %d %d %d, not %d %d %d", i,
-               k[i].bt709 ? "709" : "601", k[i].full ? "full" : "limited", k[i].y, k[i].cb, k[i].cr, a[0], a[1],
-               a[2], k[i].rgb[0], k[i].rgb[1], k[i].rgb[2]);
+               k[i].bt709 ? "709" : "601", k[i].full ? "full" : "limited", k[i].y, k[i].cb, k[i].cr, a[0],
+               a[1], a[2], k[i].rgb[0], k[i].rgb[1], k[i].rgb[2]);
     }
     /* RGB565: every code, round half up of c * 255 / max */
     long bad = 0;
@@ -142,7 +142,8 @@ static void one_format(const fcase_t *t, int bt709, int full)
     sim_source_t *s = NULL;
     sim_frame_t fr;
     memset(&fr, 0, sizeof fr);
-    ok = ok && sim_source_open(&s, path, &o, err, sizeof err) == 0 && sim_source_read(s, &fr, err, sizeof err) == 1;
+    ok = ok && sim_source_open(&s, path, &o, err, sizeof err) == 0 &&
+         sim_source_read(s, &fr, err, sizeof err) == 1;
     if (ok)
         sim_to_engine(&fr, BLOOM_FMT_RGB888, 0, eng);
     long diff = 0, over = 0;
@@ -152,8 +153,9 @@ static void one_format(const fcase_t *t, int bt709, int full)
         diff += memcmp(rgb, eng + (size_t)y * (size_t)t->w * 3, (size_t)t->w * 3) != 0;
         over += rgb[(size_t)t->w * 3] != 0xA5;
     }
-    CHECKF(ok && diff == 0 && over == 0, "%s %dx%d%s%s BT.%s %s: %ld rows differ from bloom_sim's reader, %ld overrun%s%s",
-           f->name, t->w, t->h, t->pad ? " padded" : "", t->two ? " (two planes)" : "", bt709 ? "709" : "601",
+    CHECKF(ok && diff == 0 && over == 0,
+           "%s %dx%d%s%s BT.%s %s: %ld rows differ from bloom_sim's reader, %ld overrun%s%s", f->name, t->w,
+           t->h, t->pad ? " padded" : "", t->two ? " (two planes)" : "", bt709 ? "709" : "601",
            full ? "full" : "limited", diff, over, err[0] ? ": " : "", err);
     sim_source_close(s);
     sim_frame_free(&fr);
@@ -231,8 +233,10 @@ static void colorimetry(void)
 
 static void choice(void)
 {
-    const cam_fmt_t *yuyv = cam_fmt_of_fourcc(V4L2_PIX_FMT_YUYV), *nv12 = cam_fmt_of_fourcc(V4L2_PIX_FMT_NV12),
-                    *rgb24 = cam_fmt_of_fourcc(V4L2_PIX_FMT_RGB24), *grey = cam_fmt_of_fourcc(V4L2_PIX_FMT_GREY),
+    const cam_fmt_t *yuyv = cam_fmt_of_fourcc(V4L2_PIX_FMT_YUYV),
+                    *nv12 = cam_fmt_of_fourcc(V4L2_PIX_FMT_NV12),
+                    *rgb24 = cam_fmt_of_fourcc(V4L2_PIX_FMT_RGB24),
+                    *grey = cam_fmt_of_fourcc(V4L2_PIX_FMT_GREY),
                     *nv12m = cam_fmt_of_fourcc(V4L2_PIX_FMT_NV12M);
     /* rank alone; the size first; then the frame rate; nothing to convert */
     const cam_fmt_cand_t a[] = {{grey, 1, 1}, {nv12, 1, 1}, {yuyv, 1, 1}, {rgb24, 1, 1}};

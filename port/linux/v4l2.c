@@ -169,8 +169,8 @@ static int fps_offered(cam_v4l2_t *c, uint32_t fourcc, int w, int h, int fps)
 static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int fps)
 {
     cam_fmt_cand_t cand[32];
-    char offered[200] = "";
-    int n = 0;
+    char offered[200] = "", usable[160] = ""; /* every fourcc (printable), the names converted */
+    int n = 0, others = 0;
     for (uint32_t i = 0; n < 32; i++) {
         struct v4l2_fmtdesc d;
         memset(&d, 0, sizeof d);
@@ -178,11 +178,21 @@ static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int 
         d.type = buf_type(c);
         if (xioctl(c, VIDIOC_ENUM_FMT, &d))
             break;
-        const size_t k = strlen(offered);
-        snprintf(offered + k, sizeof offered - k, "%s%.4s", k ? " " : "", (const char *)&d.pixelformat);
+        char cc[5];
+        for (int j = 0; j < 4; j++) { /* the big-endian flag (bit 31) and spaces shown as they read */
+            const char ch = (char)((d.pixelformat >> (8 * j)) & 0x7f);
+            cc[j] = ch > ' ' && ch < 127 ? ch : ch == ' ' ? '\0' : '?';
+        }
+        cc[4] = '\0';
+        size_t k = strlen(offered);
+        snprintf(offered + k, sizeof offered - k, "%s%s", k ? " " : "", cc);
         const cam_fmt_t *f = cam_fmt_of_fourcc(d.pixelformat);
-        if (!f || (f->planes == 2 && !c->mplane) || (d.flags & V4L2_FMT_FLAG_COMPRESSED))
+        if (!f || (f->planes == 2 && !c->mplane) || (d.flags & V4L2_FMT_FLAG_COMPRESSED)) {
+            others++;
             continue;
+        }
+        k = strlen(usable);
+        snprintf(usable + k, sizeof usable - k, "%s%s", k ? " " : "", f->name);
         cand[n].f = f;
         cand[n].size_ok = size_offered(c, f->fourcc, w, h);
         cand[n].fps_ok = fps_offered(c, f->fourcc, w, h, fps);
@@ -195,7 +205,8 @@ static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int 
         return 0;
     }
     if (!c->quiet) {
-        fprintf(stderr, "%s: --format auto: %s of %s (%dx%d %s", CAM_PROG, cand[b].f->name, offered, w, h,
+        fprintf(stderr, "%s: --format auto: %s of %s (and %d formats not converted here; %dx%d %s", CAM_PROG,
+                cand[b].f->name, usable, others, w, h,
                 cand[b].size_ok ? "offered" : "not offered: the driver's nearest");
         if (fps)
             fprintf(stderr, ", %d fps %s", fps, cand[b].fps_ok ? "offered" : "not offered");
