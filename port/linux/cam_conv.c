@@ -5,7 +5,13 @@
  * R'G'B' in integers"): BT.601 limited range, coefficients round(x * 65536),
  * each channel clamp((t + 32768) >> 16, 0, 255). GREY is full range,
  * R = G = B = Y. So a frame recorded with --record and run through
- * bloom_sim gives the same engine input, hence the same output.
+ * bloom_sim gives the same engine input, hence the same output. The other
+ * Y'CbCr layouts (packed 4:2:2 in any byte order, NV.. semi-planar) take
+ * the same rule with the coefficients of the driver's matrix and range
+ * (ycc_rules: BT.601 or BT.709, limited or full; bloom_sim --raw-ycbcr),
+ * chroma shared by the pixels it covers (nearest, no interpolation);
+ * RGB565 codes are widened as bloom_sim converts codes between ranges,
+ * round half up of c * 255 / (2^n - 1).
  *
  * RGB888 -> YUYV (the GStreamer element's YUY2 output) follows bloom_sim's
  * Y4M writer (sim/docs/simulator.md, "Y4M output"), BT.601 limited range:
