@@ -7,8 +7,10 @@
  * rows and odd widths) equal to what bloom_sim's raw reader makes of the
  * same bytes written to a file, fed to the engine as RGB888 (the QEMU
  * cases' comparison, here on random bytes); the edge pixels; the
- * colorimetry defaults of V4L2; --format auto's rule. */
+ * colorimetry defaults of V4L2; --format auto's rule; the multi-planar
+ * dequeue (data_offset, two buffers, short planes) through the ioctl seam. */
 #include <math.h>
+#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -253,12 +255,96 @@ static void choice(void)
     CHECK(!strcmp(cam_fmt_of_opt(CAM_FMT_NV16M)->raw, "nv16") && cam_fmt_of_opt(CAM_FMT_NV16M)->planes == 2);
 }
 
+/* The multi-planar dequeue through the ioctl/poll seam: each plane's data
+ * after its data_offset, the chroma in the second buffer, a plane whose
+ * bytesused cannot hold its rows after the offset flagged short (and
+ * requeued). */
+static uint32_t mp_used[2], mp_off[2];
+static int mp_qbufs, mp_bad_type, mp_planes = 2;
+static int mp_ioctl(int fd, unsigned long req, void *arg)
+{
+    (void)fd;
+    struct v4l2_buffer *b = arg;
+    mp_bad_type |=
+        b->type != V4L2_BUF_TYPE_VIDEO_CAPTURE_MPLANE || b->length != (uint32_t)mp_planes || !b->m.planes;
+    if (req == (unsigned long)VIDIOC_QBUF) {
+        mp_qbufs++;
+        return 0;
+    }
+    if (req != (unsigned long)VIDIOC_DQBUF)
+        return -1;
+    b->index = 1;
+    b->sequence = 7;
+    for (int p = 0; p < 2 && b->m.planes; p++) {
+        b->m.planes[p].bytesused = mp_used[p];
+        b->m.planes[p].data_offset = mp_off[p];
+    }
+    return 0;
+}
+static int mp_poll(struct pollfd *fds, nfds_t n, int timeout_ms, const sigset_t *mask)
+{
+    (void)n, (void)timeout_ms, (void)mask;
+    fds[0].revents = POLLIN;
+    return 1;
+}
+
+static void mplane_dequeue(void)
+{
+    enum { W = 8, H = 4 };
+    static uint8_t luma[2][W * H * 3 / 2 + 128], chroma[2][W * H / 2];
+    cam_v4l2_t c;
+    memset(&c, 0, sizeof c);
+    c.fd = -1;
+    c.ioctl_fn = mp_ioctl;
+    c.poll_fn = mp_poll;
+    c.width = W;
+    c.height = H;
+    c.pixelformat = V4L2_PIX_FMT_NV12M;
+    c.mplane = 1;
+    c.nplanes = 2;
+    c.bytesperline = c.bytesperline2 = W;
+    c.plane_bytes[0] = W * H;
+    c.plane_bytes[1] = W * H / 2;
+    c.nbufs = 2;
+    for (int i = 0; i < 2; i++) {
+        c.bufs[i].start = luma[i];
+        c.bufs[i].length = sizeof luma[i];
+        c.bufs[i].start2 = chroma[i];
+        c.bufs[i].length2 = sizeof chroma[i];
+    }
+    c.streaming = 1;
+    cam_frame_t f;
+    mp_used[0] = 128 + W * H, mp_off[0] = 128, mp_used[1] = W * H / 2, mp_off[1] = 0;
+    int r = cam_v4l2_dequeue(&c, 100, -1, NULL, &f);
+    CHECKF(r == 0 && f.index == 1 && f.data == luma[1] + 128 && f.data2 == chroma[1] &&
+               f.bad == CAM_BAD_NONE && f.bytesused == 128 + W * H + W * H / 2 && !mp_bad_type,
+           "two planes, data_offset 128: %d, index %d, bad %d", r, f.index, f.bad);
+    mp_used[1] = W * H / 2 - 1; /* the chroma plane one byte short */
+    mp_qbufs = 0;
+    r = cam_v4l2_dequeue(&c, 100, -1, NULL, &f);
+    CHECKF(r == 2 && f.bad == CAM_BAD_SHORT && mp_qbufs == 1, "short chroma plane: %d, bad %d, %d requeued",
+           r, f.bad, mp_qbufs);
+    mp_used[1] = W * H / 2, mp_used[0] = W * H + 100, mp_off[0] = 128; /* the offset eats the rows */
+    r = cam_v4l2_dequeue(&c, 100, -1, NULL, &f);
+    CHECKF(r == 2 && f.bad == CAM_BAD_SHORT, "data_offset past the rows: %d, bad %d", r, f.bad);
+    /* one plane (NV12 through the multi-planar API): the chroma after the luma */
+    c.nplanes = mp_planes = 1;
+    c.pixelformat = V4L2_PIX_FMT_NV12;
+    c.plane_bytes[0] = W * H * 3 / 2;
+    c.plane_bytes[1] = 0;
+    mp_used[0] = 128 + W * H * 3 / 2, mp_off[0] = 128;
+    r = cam_v4l2_dequeue(&c, 100, -1, NULL, &f);
+    CHECKF(r == 0 && f.data == luma[1] + 128 && f.data2 == luma[1] + 128 + W * H && !mp_bad_type,
+           "one plane: %d, bad %d", r, f.bad);
+}
+
 void test_conv(int *pass, int *fail)
 {
     rules();
     formats();
     colorimetry();
     choice();
+    mplane_dequeue();
     *pass += harness_pass;
     *fail += harness_fail;
 }
