@@ -142,9 +142,10 @@ fi
 # speed under emulation, 640x480 YUYV to the 32 bpp screen: without
 # --threads (the guest's CPUs), then row by row
 echo "cpus: $cpus" > /out/speed.txt
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats >> /out/speed.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --format yuyv --frames 16 --stats >> /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q --threads 1 > /out/speed-t1.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --format yuyv --frames 16 --stats -q --threads 1 \
+    > /out/speed-t1.txt 2>&1
 echo "exit $?" >> /out/speed-t1.txt
 
 # GPIO through gpio-sim (configfs), when run.sh could build it: a bank of two
