@@ -167,13 +167,37 @@ static int parse_raw_fmt(const char *s, sim_raw_fmt_t *f)
 }
 
 /* Options that take a value. */
-static const char *const with_value[] = {
-    "-o",           "--output",      "--side-by-side",  "--view",      "--diff-gain",      "--fps",
-    "--levels",     "--threshold",   "--knee",          "--intensity", "--format",         "--in-format",
-    "--out-format", "--frames",      "--repeat",        "--threads",   "--progress-after", "--raw-size",
-    "--raw-format", "--raw-stride",  "--raw-ycbcr",     "--decode16",  "--preset",         "--strength",
-    "--passes",     "--attenuation", "--max-reduction", "--aux",       "--tint",           "--weights",
-    "--radius"};
+static const char *const with_value[] = {"-o",
+                                         "--output",
+                                         "--side-by-side",
+                                         "--view",
+                                         "--diff-gain",
+                                         "--fps",
+                                         "--levels",
+                                         "--threshold",
+                                         "--knee",
+                                         "--intensity",
+                                         "--format",
+                                         "--in-format",
+                                         "--out-format",
+                                         "--frames",
+                                         "--repeat",
+                                         "--threads",
+                                         "--progress-after",
+                                         "--raw-size",
+                                         "--raw-format",
+                                         "--raw-stride",
+                                         "--decode16",
+                                         "--preset",
+                                         "--strength",
+                                         "--passes",
+                                         "--attenuation",
+                                         "--max-reduction",
+                                         "--aux",
+                                         "--tint",
+                                         "--weights",
+                                         "--radius",
+                                         "--raw-ycbcr"};
 
 static int takes_value(const char *name)
 {
