@@ -66,12 +66,27 @@ FILE *sim_spool(FILE *f, char *err, size_t errlen);
 int sim_img_rows(img_t *img, int rows, int *cap);
 
 /* ---- inputs ------------------------------------------------------------ */
-typedef enum { SIM_RAW_NONE = 0, SIM_RAW_YUYV, SIM_RAW_RGB24, SIM_RAW_GREY, SIM_RAW_RGB565 } sim_raw_fmt_t;
+typedef enum {
+    SIM_RAW_NONE = 0,
+    SIM_RAW_YUYV,
+    SIM_RAW_RGB24,
+    SIM_RAW_GREY,
+    SIM_RAW_RGB565,
+    SIM_RAW_UYVY,
+    SIM_RAW_YVYU,
+    SIM_RAW_NV12,
+    SIM_RAW_NV21,
+    SIM_RAW_NV16,
+    SIM_RAW_NV61
+} sim_raw_fmt_t;
+/* sim_ycbcr_to_rgb's rule: these bits or'ed (0: BT.601 limited range) */
+enum { SIM_YCC_FULL = 1, SIM_YCC_709 = 2 };
 
 typedef struct {
     sim_raw_fmt_t raw_fmt; /* SIM_RAW_NONE: detect the format from the content */
     int raw_w, raw_h;
     long raw_stride;   /* bytes per row of a raw dump; 0 = packed */
+    int raw_ycc;       /* --raw-ycbcr: SIM_YCC_* of a Y'CbCr dump */
     int decode16_srgb; /* 16-bit PPM/PGM/PNG: 0 linear light, 1 sRGB-encoded */
 } sim_input_opts_t;
 
@@ -104,8 +119,9 @@ int sim_exr_available(void); /* 0 when built without OpenEXR */
  * to linear Q16.16; one channel is replicated to R, G, B. */
 int sim_frame_from_img(const img_t *im, int decode16_srgb, sim_frame_t *f);
 
-/* Limited- (full = 0) or full-range BT.601 Y'CbCr to R'G'B' codes. */
-void sim_ycbcr_to_rgb(int y, int cb, int cr, int full, uint32_t rgb[3]);
+/* Y'CbCr to R'G'B' codes: how is SIM_YCC_* or'ed, 0 limited-range BT.601,
+ * SIM_YCC_FULL full range, SIM_YCC_709 the BT.709 matrix. */
+void sim_ycbcr_to_rgb(int y, int cb, int cr, int how, uint32_t rgb[3]);
 /* 8-bit RGB (w*h*3) to planar 4:2:0 limited-range BT.601 Y'CbCr: a w*h Y
  * plane then Cb and Cr planes of ceil(w/2)*ceil(h/2), each chroma sample the
  * average over its (up to) 2x2 block. */

@@ -186,9 +186,10 @@ int sim_frame_from_img(const img_t *im, int decode16_srgb, sim_frame_t *f)
     return 0;
 }
 
-/* ---- BT.601 Y'CbCr --------------------------------------------------------
+/* ---- Y'CbCr (BT.601, BT.709) ----------------------------------------------
  * Coefficients in Q16 (round(x * 65536)): limited range scales Y' by
- * 255/219 and chroma by 255/224; Kr = 0.299, Kb = 0.114. */
+ * 255/219 and chroma by 255/224; BT.601 Kr = 0.299, Kb = 0.114, BT.709
+ * Kr = 0.2126, Kb = 0.0722. */
 
 static uint32_t clamp_q16(int32_t t) /* Q16 value plus 1/2 -> 0..255 */
 {
@@ -198,20 +199,18 @@ static uint32_t clamp_q16(int32_t t) /* Q16 value plus 1/2 -> 0..255 */
     return t > 255 ? 255u : (uint32_t)t;
 }
 
-void sim_ycbcr_to_rgb(int y, int cb, int cr, int full, uint32_t rgb[3])
+void sim_ycbcr_to_rgb(int y, int cb, int cr, int how, uint32_t rgb[3])
 {
-    int32_t yy, u = cb - 128, v = cr - 128;
-    if (full) {
-        yy = y * 65536 + 32768;
-        rgb[0] = clamp_q16(yy + 91881 * v);
-        rgb[1] = clamp_q16(yy - 22553 * u - 46802 * v);
-        rgb[2] = clamp_q16(yy + 116130 * u);
-    } else {
-        yy = 76309 * (y - 16) + 32768;
-        rgb[0] = clamp_q16(yy + 104597 * v);
-        rgb[1] = clamp_q16(yy - 25675 * u - 53279 * v);
-        rgb[2] = clamp_q16(yy + 132201 * u);
-    }
+    /* [how]: Y' scale, R' from v, G' from u and v, B' from u */
+    static const int32_t k[4][5] = {{76309, 104597, 25675, 53279, 132201},
+                                    {65536, 91881, 22553, 46802, 116130},
+                                    {76309, 117489, 13975, 34925, 138438},
+                                    {65536, 103206, 12276, 30679, 121609}};
+    const int32_t *c = k[how & 3], u = cb - 128, v = cr - 128;
+    const int32_t yy = c[0] * (y - ((how & SIM_YCC_FULL) ? 0 : 16)) + 32768;
+    rgb[0] = clamp_q16(yy + c[1] * v);
+    rgb[1] = clamp_q16(yy - c[2] * u - c[3] * v);
+    rgb[2] = clamp_q16(yy + c[4] * u);
 }
 
 void sim_rgb8_to_yuv420(const uint8_t *rgb, int w, int h, uint8_t *out)

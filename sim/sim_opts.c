@@ -29,10 +29,12 @@ static const char usage_text[] =
     "                           BT.601 limited range (full with XCOLORRANGE=FULL) to RGB\n"
     "                           codes in integer arithmetic, chroma repeated (nearest);\n"
     "                           \"-\" reads a stream from standard input\n"
-    "  raw V4L2 dump            needs --raw-size WxH and --raw-format yuyv|rgb24|grey|rgb565\n"
-    "                           [--raw-stride BYTES]: frames back to back as v4l2-ctl\n"
-    "                           --stream-to writes them; frames = file size / frame size.\n"
-    "                           YUYV is BT.601 limited range, GREY full range (Y = R = G = B)\n"
+    "  raw V4L2 dump            needs --raw-size WxH and --raw-format yuyv|uyvy|yvyu|nv12|\n"
+    "                           nv21|nv16|nv61|rgb24|grey|rgb565 [--raw-stride BYTES]: frames\n"
+    "                           back to back as v4l2-ctl --stream-to writes them (NV..: the\n"
+    "                           chroma rows after the luma, same stride); frames = file size /\n"
+    "                           frame size. Y'CbCr by --raw-ycbcr bt601|bt709-limited|full\n"
+    "                           (default bt601-limited), GREY full range (Y = R = G = B)\n"
     "  Grey images are replicated to R, G, B.\n"
     "\n"
     "Outputs:\n"
@@ -155,9 +157,11 @@ static int parse_raw_fmt(const char *s, sim_raw_fmt_t *f)
     static const struct {
         const char *name;
         sim_raw_fmt_t fmt;
-    } names[] = {{"yuyv", SIM_RAW_YUYV},  {"rgb24", SIM_RAW_RGB24}, {"rgb3", SIM_RAW_RGB24},
-                 {"grey", SIM_RAW_GREY},  {"gray", SIM_RAW_GREY},   {"rgb565", SIM_RAW_RGB565},
-                 {"rgbp", SIM_RAW_RGB565}};
+    } names[] = {{"yuyv", SIM_RAW_YUYV},   {"rgb24", SIM_RAW_RGB24}, {"rgb3", SIM_RAW_RGB24},
+                 {"grey", SIM_RAW_GREY},   {"gray", SIM_RAW_GREY},   {"rgb565", SIM_RAW_RGB565},
+                 {"rgbp", SIM_RAW_RGB565}, {"uyvy", SIM_RAW_UYVY},   {"yvyu", SIM_RAW_YVYU},
+                 {"nv12", SIM_RAW_NV12},   {"nv21", SIM_RAW_NV21},   {"nv16", SIM_RAW_NV16},
+                 {"nv61", SIM_RAW_NV61}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcasecmp(s, names[i].name)) {
             *f = names[i].fmt;
@@ -196,7 +200,8 @@ static const char *const with_value[] = {"-o",
                                          "--aux",
                                          "--tint",
                                          "--weights",
-                                         "--radius"};
+                                         "--radius",
+                                         "--raw-ycbcr"};
 
 static int takes_value(const char *name)
 {
@@ -415,6 +420,11 @@ static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
     } else if (!strcmp(a, "--raw-stride")) {
         if (parse_long(v, 1, 1L << 20, &o->in.raw_stride))
             return bad(a, v);
+    } else if (!strcmp(a, "--raw-ycbcr")) { /* bt601|bt709, -limited (the default) or -full */
+        const int m = !strncmp(v, "bt601", 5) ? 0 : !strncmp(v, "bt709", 5) ? SIM_YCC_709 : -1;
+        if (m < 0 || (v[5] && strcmp(v + 5, "-limited") && strcmp(v + 5, "-full")))
+            return bad(a, v);
+        o->in.raw_ycc = m | (!strcmp(v + 5, "-full") ? SIM_YCC_FULL : 0);
     } else if (!strcmp(a, "--decode16")) {
         if (strcmp(v, "linear") && strcmp(v, "srgb"))
             return bad(a, v);

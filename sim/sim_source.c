@@ -243,29 +243,39 @@ static void y4m_convert(const sim_source_t *s, sim_frame_t *f)
 
 static const char *raw_name(sim_raw_fmt_t fmt)
 {
-    return fmt == SIM_RAW_YUYV    ? "YUYV"
-           : fmt == SIM_RAW_RGB24 ? "RGB24"
-           : fmt == SIM_RAW_GREY  ? "GREY"
-                                  : "RGB565";
+    static const char *const names[] = {"?",    "YUYV", "RGB24", "GREY", "RGB565", "UYVY",
+                                        "YVYU", "NV12", "NV21",  "NV16", "NV61"};
+    return names[fmt < sizeof names / sizeof names[0] ? fmt : 0];
+}
+
+/* NV..: the chroma rows' vertical shift (4:2:0 1, 4:2:2 0); -1 otherwise */
+static int nv_shift(sim_raw_fmt_t fmt)
+{
+    return fmt == SIM_RAW_NV12 || fmt == SIM_RAW_NV21   ? 1
+           : fmt == SIM_RAW_NV16 || fmt == SIM_RAW_NV61 ? 0
+                                                        : -1;
 }
 
 static int raw_setup(sim_source_t *s, off_t size, int regular, char *err)
 {
-    const int bpp = s->o.raw_fmt == SIM_RAW_RGB24 ? 3 : s->o.raw_fmt == SIM_RAW_GREY ? 1 : 2;
+    const sim_raw_fmt_t rf = s->o.raw_fmt;
+    const int nv = nv_shift(rf);
+    const int bpp = rf == SIM_RAW_RGB24 ? 3 : rf == SIM_RAW_GREY || nv >= 0 ? 1 : 2;
     s->w = s->o.raw_w;
     s->h = s->o.raw_h;
     if (s->w < 1 || s->h < 1 || s->w > BLOOM_MAX_DIM || s->h > BLOOM_MAX_DIM)
         return src_err(s, 0, err, "raw frames of %dx%d: each side must be 1..%d (the engine's limit)", s->w,
                        s->h, BLOOM_MAX_DIM);
-    if (s->o.raw_fmt == SIM_RAW_YUYV && s->w % 2)
-        return src_err(s, 0, err, "YUYV needs an even width (got %d)", s->w);
-    s->stride = s->o.raw_stride ? (size_t)s->o.raw_stride : (size_t)s->w * (size_t)bpp;
-    if (s->stride < (size_t)s->w * (size_t)bpp)
-        return src_err(s, 0, err, "--raw-stride %zu is less than %d pixels of %d bytes", s->stride, s->w,
-                       bpp);
-    if (s->stride > SIZE_MAX / 2 / (size_t)s->h)
+    if ((rf == SIM_RAW_YUYV || rf == SIM_RAW_UYVY || rf == SIM_RAW_YVYU) && s->w % 2)
+        return src_err(s, 0, err, "%s needs an even width (got %d)", raw_name(rf), s->w);
+    /* NV..: each row's chroma pairs cover an odd width's last pixel too */
+    const size_t row = nv >= 0 ? (size_t)(s->w + (s->w & 1)) : (size_t)s->w * (size_t)bpp;
+    s->stride = s->o.raw_stride ? (size_t)s->o.raw_stride : row;
+    if (s->stride < row)
+        return src_err(s, 0, err, "--raw-stride %zu is less than the %zu bytes of a row", s->stride, row);
+    if (s->stride > SIZE_MAX / 4 / (size_t)s->h)
         return src_err(s, 0, err, "frames of %zu x %d bytes are too large", s->stride, s->h);
-    s->frame_bytes = s->stride * (size_t)s->h;
+    s->frame_bytes = s->stride * ((size_t)s->h + (nv < 0 ? 0 : ((size_t)s->h + (size_t)nv) >> nv));
     snprintf(s->desc, sizeof s->desc, "raw %s %dx%d, %zu bytes per frame", raw_name(s->o.raw_fmt), s->w, s->h,
              s->frame_bytes);
     if (!regular)
@@ -285,19 +295,34 @@ static int raw_setup(sim_source_t *s, off_t size, int regular, char *err)
 
 static void raw_convert(const sim_source_t *s, sim_frame_t *f)
 {
-    const int is565 = s->o.raw_fmt == SIM_RAW_RGB565;
+    const int is565 = s->o.raw_fmt == SIM_RAW_RGB565, nv = nv_shift(s->o.raw_fmt), how = s->o.raw_ycc;
     f->max[0] = f->max[2] = is565 ? 31 : 255;
     f->max[1] = is565 ? 63 : 255;
+    const unsigned char *chroma = s->buf + s->stride * (size_t)s->h; /* NV..: after the luma rows */
     for (int y = 0; y < s->h; y++) {
         const unsigned char *r = s->buf + (size_t)y * s->stride;
+        const unsigned char *cr = nv >= 0 ? chroma + (size_t)(y >> nv) * s->stride : r;
         uint32_t *o = f->px + (size_t)y * (size_t)s->w * 3u;
-        for (int x = 0; x < s->w; x++, o += 3)
+        for (int x = 0; x < s->w; x++, o += 3) {
+            const size_t pair = (size_t)(x / 2); /* the pixel pair sharing a chroma sample */
             switch (s->o.raw_fmt) {
-            case SIM_RAW_YUYV: { /* Y0 U Y1 V: a pair shares its chroma */
-                const unsigned char *p = r + 4 * (size_t)(x / 2);
-                sim_ycbcr_to_rgb(p[2 * (x % 2)], p[1], p[3], 0, o);
+            case SIM_RAW_YUYV: /* Y0 U Y1 V: a pair shares its chroma */
+                sim_ycbcr_to_rgb(r[4 * pair + 2 * (size_t)(x % 2)], r[4 * pair + 1], r[4 * pair + 3], how, o);
                 break;
-            }
+            case SIM_RAW_UYVY: /* U Y0 V Y1 */
+                sim_ycbcr_to_rgb(r[4 * pair + 1 + 2 * (size_t)(x % 2)], r[4 * pair], r[4 * pair + 2], how, o);
+                break;
+            case SIM_RAW_YVYU: /* Y0 V Y1 U */
+                sim_ycbcr_to_rgb(r[4 * pair + 2 * (size_t)(x % 2)], r[4 * pair + 3], r[4 * pair + 1], how, o);
+                break;
+            case SIM_RAW_NV12: /* the chroma rows: Cb Cr pairs, nearest (each of 2 x 2^nv pixels) */
+            case SIM_RAW_NV16:
+                sim_ycbcr_to_rgb(r[x], cr[2 * pair], cr[2 * pair + 1], how, o);
+                break;
+            case SIM_RAW_NV21: /* Cr Cb pairs */
+            case SIM_RAW_NV61:
+                sim_ycbcr_to_rgb(r[x], cr[2 * pair + 1], cr[2 * pair], how, o);
+                break;
             case SIM_RAW_RGB24:
                 o[0] = r[3 * x];
                 o[1] = r[3 * x + 1];
@@ -314,6 +339,7 @@ static void raw_convert(const sim_source_t *s, sim_frame_t *f)
                 break;
             }
             }
+        }
     }
 }
 

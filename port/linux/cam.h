@@ -23,7 +23,26 @@
 #define CAM_MAX_BUFFERS 16
 
 /* ---- options (cam_opts.c) ------------------------------------------------ */
-enum cam_pixfmt { CAM_FMT_YUYV = 1, CAM_FMT_RGB24, CAM_FMT_GREY };
+/* --format: auto (the default) or one of the formats of cam_fmt.c's table;
+ * the ...M names ask for the two-plane variants (multi-planar devices). */
+enum cam_pixfmt {
+    CAM_FMT_AUTO = 0,
+    CAM_FMT_YUYV,
+    CAM_FMT_RGB24,
+    CAM_FMT_GREY,
+    CAM_FMT_UYVY,
+    CAM_FMT_YVYU,
+    CAM_FMT_NV12,
+    CAM_FMT_NV21,
+    CAM_FMT_NV16,
+    CAM_FMT_NV61,
+    CAM_FMT_RGB565,
+    CAM_FMT_NV12M,
+    CAM_FMT_NV21M,
+    CAM_FMT_NV16M,
+    CAM_FMT_NV61M,
+    CAM_FMT_COUNT
+};
 enum cam_mode { CAM_MODE_BLOOM = 0, CAM_MODE_OFF, CAM_MODE_BLOOM_ONLY, CAM_MODE_COUNT };
 
 typedef struct {
@@ -37,7 +56,8 @@ typedef struct {
     const char *fb;         /* --fb, default /dev/fb0; "none": off-screen */
     const char *vt;         /* --vt, default /dev/tty0; "off": the console's mode is not touched */
     int width, height;      /* --size WxH, default 640x480 */
-    enum cam_pixfmt format; /* --format, default yuyv */
+    enum cam_pixfmt format; /* --format, default auto */
+    int fps;                /* --fps N (VIDIOC_S_PARM), 0: the driver's */
     bloom_preset_t preset;  /* --preset NAME, default unity */
     int levels;             /* bloom parameters: the preset's defaults (bloom_config_preset) */
     uint32_t threshold, knee, intensity; /* Q16.16 */ /* unless given on the command line */
@@ -122,10 +142,38 @@ enum {
     CAM_EXIT_DISPLAY = 4 /* the framebuffer could not be opened or shown */
 };
 
+/* ---- capture formats (cam_fmt.c) ------------------------------------------ */
+typedef struct {
+    const char *name; /* --format NAME */
+    const char *raw;  /* the layout --record writes, as bloom_sim --raw-format names it */
+    uint32_t fourcc;  /* V4L2_PIX_FMT_* */
+    enum cam_pixfmt opt;
+    int planes; /* memory planes: 2 for the ...M variants (multi-planar API only) */
+    int bpp;    /* bytes per pixel of the first plane (the luma of NV..) */
+    int chroma; /* NV..: the chroma rows' vertical shift (1: 4:2:0, 0: 4:2:2); -1 none */
+    int rank;   /* --format auto: lower is better (README, formats) */
+} cam_fmt_t;
+const cam_fmt_t *cam_fmt_of_fourcc(uint32_t fourcc); /* NULL: not converted here */
+const cam_fmt_t *cam_fmt_of_opt(enum cam_pixfmt f);
+/* The rule a driver's colorimetry (v4l2_pix_format colorspace, ycbcr_enc,
+ * quantization) asks for, V4L2's defaults for DEFAULT: *bt709 and *full
+ * set; returns a note ("" or why an encoding was approximated). */
+const char *cam_colorimetry(uint32_t colorspace, uint32_t ycbcr_enc, uint32_t quantization, int *bt709,
+                            int *full);
+/* --format auto: a format the device offers, with whether it offers the
+ * size and the frame rate asked; the best index (cam_fmt_best's rule, README). */
+typedef struct {
+    const cam_fmt_t *f;
+    int size_ok, fps_ok;
+} cam_fmt_cand_t;
+int cam_fmt_best(const cam_fmt_cand_t *c, int n);
+
 /* ---- capture (v4l2.c) ------------------------------------------------------ */
 typedef struct {
     void *start;
     size_t length;
+    void *start2; /* the second plane's mapping (two-plane formats) */
+    size_t length2;
 } cam_vbuf_t;
 
 /* The system calls capture goes through: ioctl(2) and ppoll(2) unless a
@@ -144,6 +192,13 @@ typedef struct {
     cam_poll_fn poll_fn;
     int width, height;
     uint32_t pixelformat, bytesperline, sizeimage;
+    int mplane;              /* the multi-planar API (V4L2_BUF_TYPE_VIDEO_CAPTURE_MPLANE) */
+    int nplanes;             /* memory planes of the format (1 or 2; 0 read as 1) */
+    uint32_t bytesperline2;  /* the chroma rows' (NV..: the second plane's, or bytesperline) */
+    uint32_t plane_bytes[2]; /* what a frame's planes hold (bytesperline x rows each) */
+    int bt709, full;         /* the Y'CbCr rule (cam_colorimetry), 0 0: BT.601 limited */
+    const char *ycc_note;    /* why the driver's encoding was approximated, or "" */
+    int fps;                 /* the frame rate in force after VIDIOC_S_PARM (0 unknown) */
     cam_vbuf_t bufs[CAM_MAX_BUFFERS];
     int nbufs, streaming;
     char card[32], driver[16];
@@ -164,13 +219,23 @@ enum { CAM_BAD_NONE = 0, CAM_BAD_FLAGGED, CAM_BAD_SHORT };
 typedef struct {
     int index;
     uint32_t sequence, bytesused;
-    const uint8_t *data;
-    int bad; /* CAM_BAD_* (cam_v4l2_dequeue returned 2) */
+    const uint8_t *data;  /* the first plane (after its data_offset) */
+    const uint8_t *data2; /* the chroma plane of an NV.. format, else NULL */
+    int bad;              /* CAM_BAD_* (cam_v4l2_dequeue returned 2) */
 } cam_frame_t;
 
 /* Each returns 0, or -1 after printing "bloom_cam: CALL: reason" (and
  * c->lost says what kind). */
-int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int nbufs);
+/* fmt CAM_FMT_AUTO: the best the device offers (cam_fmt_best); fps > 0:
+ * asked with VIDIOC_S_PARM (a driver without it is told, not refused). */
+int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int fps, int nbufs);
+/* The capture's row y as RGB888 (any format of the table): data the first
+ * plane, data2 the chroma plane (NULL: right after the first, the
+ * single-planar layout). RGB24 is copied. */
+void cam_cap_row(const cam_v4l2_t *c, const uint8_t *data, const uint8_t *data2, int y, uint8_t *dst);
+/* "nv12, bytesperline 320, sizeimage 115200, BT.601 limited range" and the
+ * rest of the capture line main.c prints. */
+void cam_v4l2_describe(const cam_v4l2_t *c, char *buf, size_t len);
 int cam_v4l2_start(cam_v4l2_t *c);
 /* Wait for and dequeue one frame: 0 got one, 1 interrupted by a signal
  * (nothing dequeued), 2 a bad frame (flagged V4L2_BUF_FLAG_ERROR or
@@ -248,7 +313,7 @@ typedef struct {
     int tiles;                           /* of each pool (bloom_mt_tiles) */
     struct bloom_mt *mt[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show */
     void *buf[CAM_MODE_COUNT];           /* each pool's one buffer (bloom_mt_size) */
-    uint8_t *rgb;                        /* the converted frame (YUYV, GREY); NULL for RGB24 */
+    uint8_t *rgb;                        /* the converted frame (all but RGB24); NULL for RGB24 */
     uint8_t *out;                        /* the output frame when the screen shows part of it */
     size_t rgb_stride, out_stride, frame_bytes;
 } cam_mt_t;
@@ -263,7 +328,7 @@ int cam_mt_mode(cam_mt_t *t, enum cam_mode m, const bloom_config_t *cfg, int n, 
 /* One captured frame (data, as cap describes it) in mode m onto page, placed
  * as p says. 0, or -1 after a message. */
 int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const uint8_t *data,
-                   const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
+                   const uint8_t *data2, const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
 void cam_mt_close(cam_mt_t *t); /* joins every pool, frees everything; t zeroed */
 
 #endif

@@ -5,7 +5,13 @@
  * R'G'B' in integers"): BT.601 limited range, coefficients round(x * 65536),
  * each channel clamp((t + 32768) >> 16, 0, 255). GREY is full range,
  * R = G = B = Y. So a frame recorded with --record and run through
- * bloom_sim gives the same engine input, hence the same output.
+ * bloom_sim gives the same engine input, hence the same output. The other
+ * Y'CbCr layouts (packed 4:2:2 in any byte order, NV.. semi-planar) take
+ * the same rule with the coefficients of the driver's matrix and range
+ * (ycc_rules: BT.601 or BT.709, limited or full; bloom_sim --raw-ycbcr),
+ * chroma shared by the pixels it covers (nearest, no interpolation);
+ * RGB565 codes are widened as bloom_sim converts codes between ranges,
+ * round half up of c * 255 / (2^n - 1).
  *
  * RGB888 -> YUYV (the GStreamer element's YUY2 output) follows bloom_sim's
  * Y4M writer (sim/docs/simulator.md, "Y4M output"), BT.601 limited range:
@@ -27,13 +33,31 @@ static uint8_t clamp8(int32_t t) /* t already holds the + 1/2 */
     return (uint8_t)(t > 255 ? 255 : t);
 }
 
-void cam_ycbcr_to_rgb(int y, int cb, int cr, uint8_t rgb[3])
+/* [bt709][full]: limited range scales Y' by 255/219 and chroma by 255/224;
+ * R' = Y' + 2(1-Kr) V, G' = Y' - 2Kb(1-Kb)/Kg U - 2Kr(1-Kr)/Kg V,
+ * B' = Y' + 2(1-Kb) U, Kg = 1 - Kr - Kb; each coefficient round(x * 65536). */
+static const cam_ycc_t ycc_rules[2][2] = {
+    {{76309, 16, 104597, 25675, 53279, 132201}, {65536, 0, 91881, 22553, 46802, 116130}},
+    {{76309, 16, 117489, 13975, 34925, 138438}, {65536, 0, 103206, 12276, 30679, 121609}},
+};
+
+const cam_ycc_t *cam_ycc(int bt709, int full)
+{
+    return &ycc_rules[bt709 != 0][full != 0];
+}
+
+void cam_ycc_to_rgb(const cam_ycc_t *m, int y, int cb, int cr, uint8_t rgb[3])
 {
     const int32_t u = cb - 128, v = cr - 128;
-    const int32_t yy = 76309 * (y - 16) + 32768;
-    rgb[0] = clamp8(yy + 104597 * v);
-    rgb[1] = clamp8(yy - 25675 * u - 53279 * v);
-    rgb[2] = clamp8(yy + 132201 * u);
+    const int32_t yy = m->y * (y - m->y0) + 32768;
+    rgb[0] = clamp8(yy + m->rv * v);
+    rgb[1] = clamp8(yy - m->gu * u - m->gv * v);
+    rgb[2] = clamp8(yy + m->bu * u);
+}
+
+void cam_ycbcr_to_rgb(int y, int cb, int cr, uint8_t rgb[3])
+{
+    cam_ycc_to_rgb(&ycc_rules[0][0], y, cb, cr, rgb);
 }
 
 void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
@@ -41,6 +65,37 @@ void cam_yuyv_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
     for (int x = 0; x + 1 < width; x += 2, src += 4, dst += 6) {
         cam_ycbcr_to_rgb(src[0], src[1], src[3], dst);
         cam_ycbcr_to_rgb(src[2], src[1], src[3], dst + 3);
+    }
+}
+
+void cam_packed422_row_to_rgb888(const cam_ycc_t *m, int order, const uint8_t *src, uint8_t *dst, int width)
+{
+    /* where Y0, Cb and Cr are in the group (Y1 two bytes after Y0) */
+    static const uint8_t at[4][3] = {{0, 1, 3}, {1, 0, 2}, {0, 3, 1}, {1, 2, 0}};
+    const uint8_t *o = at[order & 3];
+    for (int x = 0; x < width; x++, dst += 3) {
+        const uint8_t *g = src + 4 * (x >> 1);
+        cam_ycc_to_rgb(m, g[o[0] + 2 * (x & 1)], g[o[1]], g[o[2]], dst);
+    }
+}
+
+void cam_nv_row_to_rgb888(const cam_ycc_t *m, int vu, const uint8_t *y, const uint8_t *uv, uint8_t *dst,
+                          int width)
+{
+    const int cb = vu ? 1 : 0, cr = 1 - cb;
+    for (int x = 0; x < width; x++, dst += 3) {
+        const uint8_t *c = uv + 2 * (x >> 1);
+        cam_ycc_to_rgb(m, y[x], c[cb], c[cr], dst);
+    }
+}
+
+void cam_rgb565_row_to_rgb888(const uint8_t *src, uint8_t *dst, int width)
+{
+    for (int x = 0; x < width; x++, src += 2, dst += 3) {
+        const unsigned w = (unsigned)src[0] | (unsigned)src[1] << 8;
+        dst[0] = (uint8_t)(((w >> 11) * 255u + 15u) / 31u);
+        dst[1] = (uint8_t)((((w >> 5) & 63u) * 255u + 31u) / 63u);
+        dst[2] = (uint8_t)(((w & 31u) * 255u + 15u) / 31u);
     }
 }
 

@@ -1,7 +1,7 @@
 /* bloom_cam --threads N > 1: whole frames over a pool of strip engines
  * (port/threads/bloom_mt). A strip engine reads its halo from its
  * neighbours' source columns, so the whole source frame must be in memory:
- * YUYV and GREY captures are converted once per frame into one RGB888
+ * captures other than RGB24 are converted once per frame into one RGB888
  * frame; an RGB24 capture is read where the driver put it (any
  * bytesperline: the engine takes a stride). The output goes straight into
  * the page when the screen shows the whole frame (the engine writes the
@@ -99,20 +99,14 @@ int cam_mt_mode(cam_mt_t *t, enum cam_mode m, const bloom_config_t *cfg, int n, 
 }
 
 int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const uint8_t *data,
-                   const cam_fb_t *fb, const cam_place_t *p, uint8_t *page)
+                   const uint8_t *data2, const cam_fb_t *fb, const cam_place_t *p, uint8_t *page)
 {
     const size_t ll = (size_t)fb->line_length, bpp = (size_t)fb->bpp;
     const uint8_t *src = data;
     ptrdiff_t src_stride = (ptrdiff_t)cap->bytesperline;
     if (t->rgb) {
-        for (int y = 0; y < cap->height; y++) {
-            const uint8_t *row = data + (size_t)y * cap->bytesperline;
-            uint8_t *rgb = t->rgb + (size_t)y * t->rgb_stride;
-            if (cap->pixelformat == V4L2_PIX_FMT_YUYV)
-                cam_yuyv_row_to_rgb888(row, rgb, cap->width);
-            else
-                cam_grey_row_to_rgb888(row, rgb, cap->width);
-        }
+        for (int y = 0; y < cap->height; y++)
+            cam_cap_row(cap, data, data2, y, t->rgb + (size_t)y * t->rgb_stride);
         src = t->rgb;
         src_stride = (ptrdiff_t)t->rgb_stride;
     }

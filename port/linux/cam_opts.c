@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "bloom_mt.h"
 #include "cam.h"
@@ -18,7 +19,10 @@ void cam_usage(void *stream)
           "                        that its text does not draw over the video (default\n"
           "                        /dev/tty0, the VT in front; off: left alone)\n"
           "  --size WxH            capture size asked of the driver (default 640x480)\n"
-          "  --format F            yuyv | rgb24 | grey (default yuyv)\n"
+          "  --format F            auto (default): the best the device offers for --size and\n"
+          "                        --fps (README, formats); or one of rgb24 yuyv uyvy yvyu\n"
+          "                        nv16 nv61 nv12 nv21 rgb565 grey, nv12m nv21m nv16m nv61m\n"
+          "  --fps N               frame rate asked of the driver (VIDIOC_S_PARM), 1..1000\n"
           "  --levels N            pyramid levels, 1..16 (default 5)\n"
           "  --threshold T         0..256 (default 1.0)\n"
           "  --knee S              0..1 (default 0.5)\n"
@@ -66,15 +70,8 @@ void cam_usage(void *stream)
 
 const char *cam_format_name(enum cam_pixfmt f)
 {
-    switch (f) {
-    case CAM_FMT_YUYV:
-        return "yuyv";
-    case CAM_FMT_RGB24:
-        return "rgb24";
-    case CAM_FMT_GREY:
-        return "grey";
-    }
-    return "?";
+    const cam_fmt_t *t = cam_fmt_of_opt(f);
+    return f == CAM_FMT_AUTO ? "auto" : t ? t->name : "?";
 }
 
 const char *cam_mode_name(enum cam_mode m)
@@ -155,11 +152,11 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
 }
 
 static const char *const with_value[] = {
-    "--device",     "--fb",          "--size",          "--format",  "--levels",   "--threshold",
-    "--knee",       "--intensity",   "--mode",          "--frames",  "--buffers",  "--timeout",
-    "--gpio-frame", "--gpio-button", "--record",        "--dump-fb", "--preset",   "--strength",
-    "--passes",     "--attenuation", "--max-reduction", "--aux",     "--tint",     "--weights",
-    "--radius",     "--threads",     "--reconnect",     "--latest",  "--debounce", NULL};
+    "--device",    "--fb",      "--size",    "--format",   "--levels",  "--threshold",   "--knee",
+    "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
+    "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
+    "--aux",       "--tint",    "--weights", "--radius",   "--threads", "--reconnect",   "--latest",
+    "--debounce",  "--fps",     NULL};
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -268,7 +265,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     o->vt = "/dev/tty0";
     o->width = 640;
     o->height = 480;
-    o->format = CAM_FMT_YUYV;
+    o->format = CAM_FMT_AUTO;
     o->levels = d.levels;
     o->threshold = d.threshold;
     o->knee = d.soft_knee;
@@ -330,14 +327,23 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             if (parse_size(v, &o->width, &o->height))
                 return fail(err, errlen, "--size: '%s' is not WxH (2..16384 x 1..16384)", v);
         } else if (!strcmp(name, "--format")) {
-            if (!strcmp(v, "yuyv") || !strcmp(v, "YUYV"))
-                o->format = CAM_FMT_YUYV;
-            else if (!strcmp(v, "rgb24") || !strcmp(v, "RGB3"))
-                o->format = CAM_FMT_RGB24;
-            else if (!strcmp(v, "grey") || !strcmp(v, "gray") || !strcmp(v, "GREY"))
-                o->format = CAM_FMT_GREY;
-            else
-                return fail(err, errlen, "--format: '%s' is not yuyv, rgb24 or grey", v);
+            int f = !strcasecmp(v, "auto") ? CAM_FMT_AUTO : !strcasecmp(v, "gray") ? CAM_FMT_GREY : -1;
+            for (int k = 1; f < 0 && k < CAM_FMT_COUNT; k++) { /* a name, or its fourcc ("RGB3") */
+                const uint32_t cc = cam_fmt_of_opt((enum cam_pixfmt)k)->fourcc;
+                const char s4[5] = {(char)cc, (char)(cc >> 8), (char)(cc >> 16), (char)(cc >> 24), 0};
+                if (!strcasecmp(v, cam_format_name((enum cam_pixfmt)k)) || !strcmp(v, s4))
+                    f = k;
+            }
+            if (f < 0)
+                return fail(err, errlen,
+                            "--format: '%s' is not auto, rgb24, yuyv, uyvy, yvyu, nv16, nv61, nv12, nv21, "
+                            "rgb565, grey, nv12m, nv21m, nv16m or nv61m",
+                            v);
+            o->format = (enum cam_pixfmt)f;
+        } else if (!strcmp(name, "--fps")) {
+            if (parse_long(v, 1, 1000, &l))
+                return fail(err, errlen, "--fps: '%s' is not 1..1000", v);
+            o->fps = (int)l;
         } else if (!strcmp(name, "--levels")) {
             if (parse_long(v, 1, BLOOM_MAX_LEVELS, &l))
                 return fail(err, errlen, "--levels: '%s' is not 1..16", v);
@@ -524,8 +530,10 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         if (st != BLOOM_OK)
             return fail(err, errlen, "--preset %s with these options: %s", pn, bloom_status_str(st));
     }
-    if (o->format == CAM_FMT_YUYV && (o->width & 1))
-        return fail(err, errlen, "--size: YUYV needs an even width, not %d", o->width);
+    if ((o->format == CAM_FMT_YUYV || o->format == CAM_FMT_UYVY || o->format == CAM_FMT_YVYU) &&
+        (o->width & 1))
+        return fail(err, errlen, "--size: %s needs an even width, not %d", cam_format_name(o->format),
+                    o->width);
     if ((o->gpio_frame.set || o->gpio_button.set) && !cam_gpio_available)
         return fail(err, errlen,
                     "--gpio-frame/--gpio-button: built without libgpiod "

@@ -21,7 +21,7 @@ CAM_DIR := port/linux
 # are expanded as it is read.
 CAM_MT_SRC := port/threads/bloom_mt.c
 CAM_MT_HDR := port/threads/bloom_mt.h
-CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/v4l2.c \
+CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c \
            $(CAM_DIR)/cam_aux.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
 CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_MT_HDR)
@@ -68,16 +68,21 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 # built out here so the refusal of --gpio-* is what is tested.
 # test_cam_mt: the --threads frame path (cam_mt.c on the real pool) against
 # the untiled engine, every format, placement and mode, under the sanitizers.
-CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/gpio.c \
+CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c \
+                $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/gpio.c \
                 $(CAM_DIR)/cam_aux.c \
                 $(CAM_DIR)/v4l2.c
-$(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) sim/sim_convert.c sim/sim.h \
+# (test_conv.c reads its frames back through bloom_sim's own raw reader:
+# sim_source.c and the decoders it links, with sim.mk's flags and libraries.)
+CAM_TEST_SIM := sim/sim_convert.c sim/sim_source.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c
+$(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) $(CAM_TEST_SIM) sim/sim.h \
                           $(SIM_SRC) $(SIM_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads -DCAM_NO_GPIOD $(CAM_TEST_SRC) \
-	  sim/sim_convert.c $(SIM_SRC) $(CORE_SRC) -lm -o $@
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads -DCAM_NO_GPIOD $(SIMTOOL_PNG_CFLAGS) $(SIMTOOL_EXR_CFLAGS) \
+	  $(CAM_TEST_SRC) $(CAM_TEST_SIM) $(SIM_SRC) $(CORE_SRC) $(SIMTOOL_LIBS) -o $@
 
-CAM_MT_TEST_SRC := $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_MT_SRC)
+CAM_MT_TEST_SRC := $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c \
+                   $(CAM_MT_SRC)
 $(B)/linux/test_cam_mt: $(CAM_MT_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) tests/harness.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads $(CAM_MT_TEST_SRC) $(CORE_SRC) -lm \
@@ -85,10 +90,11 @@ $(B)/linux/test_cam_mt: $(CAM_MT_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) te
 
 # make bench-cam: the two frame paths on this machine (port/linux/bench_cam.c),
 # 640x480 and 1920x1080 by default; BENCH_CAM_ARGS='1280x720 -t 3' for others.
-$(B)/linux/bench_cam: $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_MT_SRC) $(CAM_HDR) \
+BENCH_CAM_SRC := $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c
+$(B)/linux/bench_cam: $(BENCH_CAM_SRC) $(CAM_MT_SRC) $(CAM_HDR) \
                       sim/bench/timing.h $(B)/libbloom.a
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) -Isim/bench $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c \
+	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) -Isim/bench $(BENCH_CAM_SRC) \
 	  $(CAM_MT_SRC) $(B)/libbloom.a $(CAM_THREAD_LIBS) -o $@
 bench-cam: $(B)/linux/bench_cam
 	@$(B)/linux/bench_cam $(BENCH_CAM_ARGS)
@@ -98,7 +104,8 @@ linux-clang:
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_SRC)
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD $(CAM_SRC)
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -Isim/bench -DCAM_NO_GPIOD $(CAM_DIR)/bench_cam.c
-	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_cam_mt.c
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c \
+	  $(CAM_DIR)/test_cam_mt.c
 
 test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/bloom_cam
 	@$(MAKE) --no-print-directory linux-clang >/dev/null

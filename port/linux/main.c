@@ -1,6 +1,6 @@
 /* bloom_cam: camera -> bloom -> framebuffer. The frame loop: dequeue a
  * capture buffer, raise the frame-sync line, feed the rows to the engine
- * (YUYV and GREY converted one row at a time into a line buffer, the engine
+ * (every format but RGB24 converted one row at a time into a line buffer, the engine
  * copying what it keeps; RGB24 rows straight from the capture buffer), pull
  * output rows straight into the framebuffer page being drawn, drop the line,
  * pan, requeue. With --threads N > 1 the frame goes whole through a pool of
@@ -197,18 +197,15 @@ static int pull_rows(cam_t *c, bloom_t *b, uint8_t *page)
     }
 }
 
-static int process(cam_t *c, enum cam_mode mode, const uint8_t *data, uint8_t *page)
+static int process(cam_t *c, enum cam_mode mode, const cam_frame_t *f, uint8_t *page)
 {
     bloom_t *b = c->eng[mode];
     const uint8_t *aux = c->eng_aux[mode] ? c->aux : NULL;
     bloom_status_t st = bloom_begin(b);
     for (int y = 0; y < c->cap.height && st == BLOOM_OK; y++) {
-        const uint8_t *src = data + (size_t)y * c->cap.bytesperline;
-        if (c->cap.pixelformat == V4L2_PIX_FMT_YUYV) {
-            cam_yuyv_row_to_rgb888(src, c->line, c->cap.width);
-            src = c->line;
-        } else if (c->cap.pixelformat == V4L2_PIX_FMT_GREY) {
-            cam_grey_row_to_rgb888(src, c->line, c->cap.width);
+        const uint8_t *src = f->data + (size_t)y * c->cap.bytesperline;
+        if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24) {
+            cam_cap_row(&c->cap, f->data, f->data2, y, c->line);
             src = c->line;
         }
         const uint8_t *arow = aux ? aux + (size_t)y * c->aux_stride : NULL;
@@ -302,7 +299,8 @@ static int reconnect(cam_t *c, double lost_at)
         nap(c, delay);
         if (stop_signal)
             break;
-        int ok = !cam_v4l2_open(&c->cap, c->o.device, c->o.width, c->o.height, c->o.format, c->o.buffers);
+        int ok = !cam_v4l2_open(&c->cap, c->o.device, c->o.width, c->o.height, c->o.format, c->o.fps,
+                                c->o.buffers);
         if (ok && (c->cap.width != w || c->cap.height != h || c->cap.pixelformat != pf ||
                    c->cap.bytesperline != bpl)) {
             snprintf(c->cap.msg, sizeof c->cap.msg, "came back as %dx%d, bytesperline %u, not %dx%d, %u",
@@ -405,7 +403,8 @@ static int run(cam_t *c)
         last_seq = f.sequence;
         have_seq = 1;
         if (c->rec_fd >= 0 &&
-            write_all(c->rec_fd, f.data, (size_t)c->cap.bytesperline * (size_t)c->cap.height)) {
+            (write_all(c->rec_fd, f.data, c->cap.plane_bytes[0]) || /* then a second plane */
+             write_all(c->rec_fd, f.data2, c->cap.plane_bytes[1]))) {
             if (errno == EPIPE) { /* the reader of --record went away: SIGPIPE (blocked) says stop */
                 stop_signal = SIGPIPE;
             } else {
@@ -419,8 +418,9 @@ static int run(cam_t *c)
         uint8_t *page = cam_fb_draw_page(&c->fb);
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
-        int pr = c->threads > 1 ? cam_mt_process(&c->mt, mode, &c->cap, f.data, &c->fb, &c->place, page)
-                                : process(c, mode, f.data, page);
+        int pr = c->threads > 1
+                     ? cam_mt_process(&c->mt, mode, &c->cap, f.data, f.data2, &c->fb, &c->place, page)
+                     : process(c, mode, &f, page);
         double dt = now_s() - p0;
         cam_gpio_frame(c->gpio, 0);
         c->last_page = page;
@@ -523,7 +523,7 @@ int main(int argc, char **argv)
     c.cap.wait_mask = &wait_mask;
 
     int status = CAM_EXIT_FAULT;
-    if (cam_v4l2_open(&c.cap, c.o.device, c.o.width, c.o.height, c.o.format, c.o.buffers)) {
+    if (cam_v4l2_open(&c.cap, c.o.device, c.o.width, c.o.height, c.o.format, c.o.fps, c.o.buffers)) {
         status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
         goto out;
     }
@@ -556,13 +556,14 @@ int main(int argc, char **argv)
             goto out;
         }
     }
+    char desc[200];
+    cam_v4l2_describe(&c.cap, desc, sizeof desc);
     if (!c.o.quiet)
         fprintf(stderr,
-                "%s: %s (%s, %s): %dx%d %s, bytesperline %u, sizeimage %u, %d buffers\n"
+                "%s: %s (%s, %s): %dx%d %s\n"
                 "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown from %d,%d\n",
-                CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height,
-                cam_format_name(c.o.format), (unsigned)c.cap.bytesperline, (unsigned)c.cap.sizeimage,
-                c.cap.nbufs, CAM_PROG, c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
+                CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height, desc, CAM_PROG,
+                c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
                 c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
                 c.place.w, c.place.h, c.place.src_x, c.place.src_y);

@@ -35,7 +35,7 @@ static void test_opts(void)
     char err[256];
     CHECKF(parse(&o, err, NULL, NULL, NULL, NULL) == 0, "no options: %s", err);
     CHECKF(!strcmp(o.device, "/dev/video0") && !strcmp(o.fb, "/dev/fb0") && o.width == 640 &&
-               o.height == 480 && o.format == CAM_FMT_YUYV && o.levels == 5 &&
+               o.height == 480 && o.format == CAM_FMT_AUTO && o.fps == 0 && o.levels == 5 &&
                o.threshold == BLOOM_Q16(1.0) && o.knee == BLOOM_Q16(0.5) && o.intensity == BLOOM_Q16(1.0) &&
                o.frames == 0 && o.buffers == 4 && o.mode == CAM_MODE_BLOOM && !o.stats && !o.record &&
                o.threads == 0 && o.reconnect_s == 30 && o.latest == 1 && o.debounce_ms == 30,
@@ -91,8 +91,9 @@ static void test_opts(void)
     static const struct {
         const char *a0, *a1, *a2, *a3, *msg;
     } bad[] = {
-        {"--format", "nv12", NULL, NULL, "'nv12' is not yuyv, rgb24 or grey"},
-        {"--size", "641x480", NULL, NULL, "YUYV needs an even width"},
+        {"--format", "mjpeg", NULL, NULL, "'mjpeg' is not auto, rgb24, yuyv, uyvy"},
+        {"--size", "641x480", "--format", "uyvy", "uyvy needs an even width, not 641"},
+        {"--fps", "0", NULL, NULL, "--fps: '0' is not 1..1000"},
         {"--size", "640", NULL, NULL, "--size: '640' is not WxH"},
         {"--size", "0x0", NULL, NULL, "--size: '0x0'"},
         {"--levels", "0", NULL, NULL, "--levels: '0' is not 1..16"},
@@ -681,6 +682,8 @@ static void test_presets(void)
     rmdir(dir);
 }
 
+void test_conv(int *pass, int *fail); /* test_conv.c: the capture formats */
+
 int main(void)
 {
     test_opts();
@@ -691,9 +694,11 @@ int main(void)
     test_line_feed();
     test_dequeue_faults();
     test_debounce();
+    test_conv(&harness_pass, &harness_fail);
     printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, "
            "line feed,\n"
            "  capture faults (EINTR, EAGAIN, ENODEV, timeout: fatal, with their kind; short bytesused,\n"
-           "  V4L2_BUF_FLAG_ERROR: requeued and counted), --latest, the button's debounce\n");
+           "  V4L2_BUF_FLAG_ERROR: requeued and counted), --latest, the button's debounce;\n"
+           "  test_conv.c: every capture format and Y'CbCr rule against bloom_sim's reader, --format auto\n");
     return harness_finish();
 }

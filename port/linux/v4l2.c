@@ -1,5 +1,7 @@
-/* bloom_cam: V4L2 capture with mmap streaming. Every failure prints
- * "bloom_cam: CALL: reason" once; cam_v4l2_close undoes whatever was done
+/* bloom_cam: V4L2 capture with mmap streaming, single-planar or through
+ * the multi-planar API (one plane, or two for the NV..M formats); the
+ * format asked (--format) or chosen (auto, choose_format); --fps. Every
+ * failure prints "bloom_cam: CALL: reason" once; cam_v4l2_close undoes whatever was done
  * (STREAMOFF, munmap, REQBUFS 0, close) and is safe to call at any point. */
 #define _GNU_SOURCE /* ppoll(2), in glibc beside POSIX 2008 */
 #include <errno.h>
@@ -77,36 +79,207 @@ static int dev_fail(cam_v4l2_t *c, const char *call)
     return lost(c, CAM_LOST_DEVICE);
 }
 
-/* An mmap capture buffer descriptor, index set, everything else zero. */
-static struct v4l2_buffer mmap_buffer(int index)
-{
+/* A buffer descriptor and its planes (the multi-planar API points into
+ * p): built in place, never copied. */
+typedef struct {
     struct v4l2_buffer b;
-    memset(&b, 0, sizeof b);
-    b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-    b.memory = V4L2_MEMORY_MMAP;
-    b.index = (uint32_t)index;
-    return b;
+    struct v4l2_plane p[2];
+} vbuf_t;
+
+/* Y'CbCr: a matrix and a range apply (RGB565, RGB24 and GREY have none) */
+static int is_ycc(const cam_fmt_t *f)
+{
+    return f->chroma >= 0 || (f->bpp == 2 && f->opt != CAM_FMT_RGB565);
 }
 
-static uint32_t fourcc_of(enum cam_pixfmt f)
+static uint32_t buf_type(const cam_v4l2_t *c)
 {
-    switch (f) {
-    case CAM_FMT_YUYV:
-        return V4L2_PIX_FMT_YUYV;
-    case CAM_FMT_RGB24:
-        return V4L2_PIX_FMT_RGB24;
-    case CAM_FMT_GREY:
-        return V4L2_PIX_FMT_GREY;
+    return c->mplane ? V4L2_BUF_TYPE_VIDEO_CAPTURE_MPLANE : V4L2_BUF_TYPE_VIDEO_CAPTURE;
+}
+
+static int nplanes(const cam_v4l2_t *c)
+{
+    return c->nplanes == 2 ? 2 : 1;
+}
+
+/* An mmap capture buffer descriptor, index set, everything else zero. */
+static void mmap_buffer(const cam_v4l2_t *c, vbuf_t *v, int index)
+{
+    memset(v, 0, sizeof *v);
+    v->b.type = buf_type(c);
+    v->b.memory = V4L2_MEMORY_MMAP;
+    v->b.index = (uint32_t)index;
+    if (c->mplane) {
+        v->b.m.planes = v->p;
+        v->b.length = (uint32_t)nplanes(c);
     }
+}
+
+/* Whether the device offers fourcc at w x h (VIDIOC_ENUM_FRAMESIZES; a
+ * driver without it: yes, S_FMT will adjust). */
+static int size_offered(cam_v4l2_t *c, uint32_t fourcc, int w, int h)
+{
+    struct v4l2_frmsizeenum s;
+    for (uint32_t i = 0;; i++) {
+        memset(&s, 0, sizeof s);
+        s.index = i;
+        s.pixel_format = fourcc;
+        if (xioctl(c, VIDIOC_ENUM_FRAMESIZES, &s))
+            return i == 0;
+        if (s.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
+            if (s.discrete.width == (uint32_t)w && s.discrete.height == (uint32_t)h)
+                return 1;
+            continue;
+        }
+        const struct v4l2_frmsize_stepwise *t = &s.stepwise;
+        const uint32_t sw = t->step_width ? t->step_width : 1, sh = t->step_height ? t->step_height : 1;
+        return (uint32_t)w >= t->min_width && (uint32_t)w <= t->max_width && (uint32_t)h >= t->min_height &&
+               (uint32_t)h <= t->max_height && ((uint32_t)w - t->min_width) % sw == 0 &&
+               ((uint32_t)h - t->min_height) % sh == 0;
+    }
+}
+
+/* Whether fps is offered at fourcc, w x h (VIDIOC_ENUM_FRAMEINTERVALS; a
+ * driver without it: yes). */
+static int fps_offered(cam_v4l2_t *c, uint32_t fourcc, int w, int h, int fps)
+{
+    struct v4l2_frmivalenum s;
+    for (uint32_t i = 0; fps > 0; i++) {
+        memset(&s, 0, sizeof s);
+        s.index = i;
+        s.pixel_format = fourcc;
+        s.width = (uint32_t)w;
+        s.height = (uint32_t)h;
+        if (xioctl(c, VIDIOC_ENUM_FRAMEINTERVALS, &s))
+            return i == 0;
+        const uint64_t f = (uint64_t)fps;
+        if (s.type == V4L2_FRMIVAL_TYPE_DISCRETE) { /* an interval num/den s: fps = den/num */
+            if (s.discrete.numerator && f * s.discrete.numerator == s.discrete.denominator)
+                return 1;
+            continue;
+        }
+        const struct v4l2_fract *lo = &s.stepwise.min, *hi = &s.stepwise.max;
+        return f * lo->numerator <= lo->denominator && hi->denominator <= f * hi->numerator;
+    }
+    return 1;
+}
+
+/* --format auto: the best of what VIDIOC_ENUM_FMT lists (cam_fmt_best),
+ * said on one line. 0 when there is none to convert (message printed). */
+static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int fps)
+{
+    cam_fmt_cand_t cand[32];
+    char offered[200] = "", usable[160] = ""; /* every fourcc (printable), the names converted */
+    int n = 0, others = 0;
+    for (uint32_t i = 0; n < 32; i++) {
+        struct v4l2_fmtdesc d;
+        memset(&d, 0, sizeof d);
+        d.index = i;
+        d.type = buf_type(c);
+        if (xioctl(c, VIDIOC_ENUM_FMT, &d))
+            break;
+        char cc[5];
+        for (int j = 0; j < 4; j++) { /* the big-endian flag (bit 31) and spaces shown as they read */
+            const char ch = (char)((d.pixelformat >> (8 * j)) & 0x7f);
+            cc[j] = ch > ' ' && ch < 127 ? ch : ch == ' ' ? '\0' : '?';
+        }
+        cc[4] = '\0';
+        size_t k = strlen(offered);
+        snprintf(offered + k, sizeof offered - k, "%s%s", k ? " " : "", cc);
+        const cam_fmt_t *f = cam_fmt_of_fourcc(d.pixelformat);
+        if (!f || (f->planes == 2 && !c->mplane) || (d.flags & V4L2_FMT_FLAG_COMPRESSED)) {
+            others++;
+            continue;
+        }
+        k = strlen(usable);
+        snprintf(usable + k, sizeof usable - k, "%s%s", k ? " " : "", f->name);
+        cand[n].f = f;
+        cand[n].size_ok = size_offered(c, f->fourcc, w, h);
+        cand[n].fps_ok = fps_offered(c, f->fourcc, w, h, fps);
+        n++;
+    }
+    const int b = cam_fmt_best(cand, n);
+    if (b < 0) {
+        say(c, "VIDIOC_ENUM_FMT: %s offers %s: none of them converted here (--format)", dev,
+            offered[0] ? offered : "no format");
+        return 0;
+    }
+    if (!c->quiet) {
+        fprintf(stderr, "%s: --format auto: %s of %s (and %d formats not converted here; %dx%d %s", CAM_PROG,
+                cand[b].f->name, usable, others, w, h,
+                cand[b].size_ok ? "offered" : "not offered: the driver's nearest");
+        if (fps)
+            fprintf(stderr, ", %d fps %s", fps, cand[b].fps_ok ? "offered" : "not offered");
+        fputs(")\n", stderr);
+    }
+    return cand[b].f->fourcc;
+}
+
+/* The planes' sizes of the format in force, from S_FMT's answer: 0, or -1
+ * (message said) when the driver's numbers cannot hold a frame. */
+static int layout(cam_v4l2_t *c, const cam_fmt_t *f, const struct v4l2_format *fm)
+{
+    uint32_t size[2] = {0, 0};
+    if (c->mplane) {
+        const struct v4l2_pix_format_mplane *mp = &fm->fmt.pix_mp;
+        c->nplanes = mp->num_planes;
+        c->bytesperline = mp->plane_fmt[0].bytesperline;
+        c->bytesperline2 = mp->num_planes == 2 ? mp->plane_fmt[1].bytesperline : 0;
+        size[0] = mp->plane_fmt[0].sizeimage;
+        size[1] = mp->num_planes == 2 ? mp->plane_fmt[1].sizeimage : 0;
+        c->sizeimage = size[0] + size[1];
+        if (mp->num_planes != f->planes) {
+            say(c, "VIDIOC_S_FMT: %s in %u planes, not %d", f->name, (unsigned)mp->num_planes, f->planes);
+            return -1;
+        }
+    } else {
+        c->nplanes = 1;
+        c->bytesperline = fm->fmt.pix.bytesperline;
+        c->sizeimage = size[0] = fm->fmt.pix.sizeimage;
+    }
+    const uint32_t minline = (uint32_t)c->width * (uint32_t)f->bpp;
+    if (c->bytesperline < minline)
+        c->bytesperline = minline; /* some drivers leave it 0 */
+    const uint32_t luma = c->bytesperline * (uint32_t)c->height;
+    c->plane_bytes[0] = luma;
+    c->plane_bytes[1] = 0;
+    if (f->chroma >= 0) { /* NV..: the chroma rows, in the first plane or the second */
+        const uint32_t rows = ((uint32_t)c->height + (uint32_t)f->chroma) >> f->chroma;
+        if (c->bytesperline2 < minline + (minline & 1))
+            c->bytesperline2 = c->nplanes == 2 ? minline + (minline & 1) : c->bytesperline;
+        c->plane_bytes[c->nplanes - 1] += c->bytesperline2 * rows;
+    }
+    for (int p = 0; p < c->nplanes; p++)
+        if (size[p] < c->plane_bytes[p]) {
+            say(c,
+                "VIDIOC_S_FMT: unusable format %dx%d %s, bytesperline %u, plane %d of %u bytes (%u needed)",
+                c->width, c->height, f->name, (unsigned)c->bytesperline, p, (unsigned)size[p],
+                (unsigned)c->plane_bytes[p]);
+            return -1;
+        }
     return 0;
 }
 
-static int bytes_per_pixel(uint32_t fourcc)
+/* --fps: VIDIOC_S_PARM; what the driver set is kept (c->fps), a driver
+ * without frame rates is said, not refused. */
+static void set_fps(cam_v4l2_t *c, int fps)
 {
-    return fourcc == V4L2_PIX_FMT_YUYV ? 2 : fourcc == V4L2_PIX_FMT_RGB24 ? 3 : 1;
+    struct v4l2_streamparm sp;
+    memset(&sp, 0, sizeof sp);
+    sp.type = buf_type(c);
+    sp.parm.capture.timeperframe.numerator = 1;
+    sp.parm.capture.timeperframe.denominator = (uint32_t)fps;
+    if (xioctl(c, VIDIOC_S_PARM, &sp) || !(sp.parm.capture.capability & V4L2_CAP_TIMEPERFRAME)) {
+        if (!c->quiet)
+            fprintf(stderr, "%s: --fps %d: the driver sets no frame rate (VIDIOC_S_PARM: %s)\n", CAM_PROG,
+                    fps, errno ? strerror(errno) : "no V4L2_CAP_TIMEPERFRAME");
+        return;
+    }
+    const struct v4l2_fract *t = &sp.parm.capture.timeperframe;
+    c->fps = t->numerator ? (int)((t->denominator + t->numerator / 2) / t->numerator) : 0;
 }
 
-int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int nbufs)
+int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int fps, int nbufs)
 {
     const sigset_t *mask = c->wait_mask; /* (the caller's, kept) */
     const int quiet = c->quiet;
@@ -115,6 +288,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     c->quiet = quiet;
     c->ioctl_fn = sys_ioctl;
     c->poll_fn = sys_ppoll;
+    c->ycc_note = "";
     c->fd = open(dev, O_RDWR | O_NONBLOCK | O_CLOEXEC);
     if (c->fd < 0) {
         say(c, "open %s: %s", dev, strerror(errno));
@@ -131,54 +305,79 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
     snprintf(c->card, sizeof c->card, "%s", (const char *)cap.card);
     snprintf(c->driver, sizeof c->driver, "%s", (const char *)cap.driver);
-    if (!(caps & V4L2_CAP_VIDEO_CAPTURE)) {
-        say(c, "VIDIOC_QUERYCAP: %s is not a single-planar video capture device", dev);
+    if (!(caps & (V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_VIDEO_CAPTURE_MPLANE))) {
+        say(c, "VIDIOC_QUERYCAP: %s is not a video capture device", dev);
         return lost(c, CAM_LOST_CONFIG);
     }
+    c->mplane = !(caps & V4L2_CAP_VIDEO_CAPTURE); /* single-planar when it offers both */
     if (!(caps & V4L2_CAP_STREAMING)) {
         say(c, "VIDIOC_QUERYCAP: %s does not support streaming I/O", dev);
         return lost(c, CAM_LOST_CONFIG);
     }
 
-    struct v4l2_format f;
-    memset(&f, 0, sizeof f);
-    f.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-    f.fmt.pix.width = (uint32_t)w;
-    f.fmt.pix.height = (uint32_t)h;
-    f.fmt.pix.pixelformat = fourcc_of(fmt);
-    f.fmt.pix.field = V4L2_FIELD_NONE;
-    if (xioctl(c, VIDIOC_S_FMT, &f))
+    const cam_fmt_t *want = cam_fmt_of_opt(fmt);
+    if (want && want->planes == 2 && !c->mplane) {
+        say(c, "--format %s: %s is single-planar (two-plane formats need the multi-planar API)", want->name,
+            dev);
+        return lost(c, CAM_LOST_CONFIG);
+    }
+    const uint32_t fourcc = want ? want->fourcc : choose_format(c, dev, w, h, fps);
+    if (!fourcc)
+        return lost(c, CAM_LOST_CONFIG);
+    const cam_fmt_t *f = cam_fmt_of_fourcc(fourcc);
+    struct v4l2_format fm;
+    memset(&fm, 0, sizeof fm);
+    fm.type = buf_type(c);
+    if (c->mplane) {
+        fm.fmt.pix_mp.width = (uint32_t)w;
+        fm.fmt.pix_mp.height = (uint32_t)h;
+        fm.fmt.pix_mp.pixelformat = fourcc;
+        fm.fmt.pix_mp.field = V4L2_FIELD_NONE;
+        fm.fmt.pix_mp.num_planes = (uint8_t)f->planes;
+    } else {
+        fm.fmt.pix.width = (uint32_t)w;
+        fm.fmt.pix.height = (uint32_t)h;
+        fm.fmt.pix.pixelformat = fourcc;
+        fm.fmt.pix.field = V4L2_FIELD_NONE;
+    }
+    if (xioctl(c, VIDIOC_S_FMT, &fm))
         return errno == EINVAL ? (sys_fail(c, "VIDIOC_S_FMT"), lost(c, CAM_LOST_CONFIG))
                                : dev_fail(c, "VIDIOC_S_FMT");
-    /* What the driver chose is what counts. */
-    if (f.fmt.pix.pixelformat != fourcc_of(fmt)) {
-        say(c, "VIDIOC_S_FMT: %s does not deliver %s", dev, cam_format_name(fmt));
+    /* What the driver chose is what counts (the two layouts share these
+     * fields' places only in part: read each from its own). */
+    const uint32_t got = c->mplane ? fm.fmt.pix_mp.pixelformat : fm.fmt.pix.pixelformat;
+    const uint32_t field = c->mplane ? fm.fmt.pix_mp.field : fm.fmt.pix.field;
+    if (got != fourcc) {
+        say(c, "VIDIOC_S_FMT: %s does not deliver %s", dev, f->name);
         return lost(c, CAM_LOST_CONFIG);
     }
-    if (f.fmt.pix.field != V4L2_FIELD_NONE && f.fmt.pix.field != V4L2_FIELD_ANY) {
-        say(c, "VIDIOC_S_FMT: interlaced field order %u is not supported", (unsigned)f.fmt.pix.field);
+    if (field != V4L2_FIELD_NONE && field != V4L2_FIELD_ANY) {
+        say(c, "VIDIOC_S_FMT: interlaced field order %u is not supported", (unsigned)field);
         return lost(c, CAM_LOST_CONFIG);
     }
-    c->width = (int)f.fmt.pix.width;
-    c->height = (int)f.fmt.pix.height;
-    c->pixelformat = f.fmt.pix.pixelformat;
-    c->bytesperline = f.fmt.pix.bytesperline;
-    c->sizeimage = f.fmt.pix.sizeimage;
-    const uint32_t minline = (uint32_t)c->width * (uint32_t)bytes_per_pixel(c->pixelformat);
-    if (c->bytesperline < minline)
-        c->bytesperline = minline; /* some drivers leave it 0 */
+    c->width = (int)(c->mplane ? fm.fmt.pix_mp.width : fm.fmt.pix.width);
+    c->height = (int)(c->mplane ? fm.fmt.pix_mp.height : fm.fmt.pix.height);
+    c->pixelformat = got;
+    if (is_ycc(f) && c->mplane)
+        c->ycc_note = cam_colorimetry(fm.fmt.pix_mp.colorspace, fm.fmt.pix_mp.ycbcr_enc,
+                                      fm.fmt.pix_mp.quantization, &c->bt709, &c->full);
+    else if (is_ycc(f))
+        c->ycc_note = cam_colorimetry(fm.fmt.pix.colorspace, fm.fmt.pix.ycbcr_enc, fm.fmt.pix.quantization,
+                                      &c->bt709, &c->full);
     if (c->width < 2 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM ||
-        (c->pixelformat == V4L2_PIX_FMT_YUYV && (c->width & 1)) ||
-        c->sizeimage < c->bytesperline * (uint32_t)c->height) {
-        say(c, "VIDIOC_S_FMT: unusable format %dx%d, bytesperline %u, sizeimage %u", c->width, c->height,
-            (unsigned)c->bytesperline, (unsigned)c->sizeimage);
+        (is_ycc(f) && f->chroma < 0 && (c->width & 1))) { /* packed 4:2:2: whole pairs */
+        say(c, "VIDIOC_S_FMT: unusable format %dx%d %s", c->width, c->height, f->name);
         return lost(c, CAM_LOST_CONFIG);
     }
+    if (layout(c, f, &fm))
+        return lost(c, CAM_LOST_CONFIG);
+    if (fps > 0)
+        set_fps(c, fps);
 
     struct v4l2_requestbuffers rb;
     memset(&rb, 0, sizeof rb);
     rb.count = (uint32_t)nbufs;
-    rb.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    rb.type = buf_type(c);
     rb.memory = V4L2_MEMORY_MMAP;
     if (xioctl(c, VIDIOC_REQBUFS, &rb))
         return dev_fail(c, "VIDIOC_REQBUFS");
@@ -190,27 +389,52 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     }
     c->nbufs = (int)rb.count;
     for (int i = 0; i < c->nbufs; i++) {
-        struct v4l2_buffer b = mmap_buffer(i);
-        if (xioctl(c, VIDIOC_QUERYBUF, &b))
+        vbuf_t v;
+        mmap_buffer(c, &v, i);
+        if (xioctl(c, VIDIOC_QUERYBUF, &v.b))
             return dev_fail(c, "VIDIOC_QUERYBUF");
-        if (b.length < c->sizeimage) {
-            say(c, "VIDIOC_QUERYBUF: buffer %d holds %u bytes, a frame %u", i, (unsigned)b.length,
-                (unsigned)c->sizeimage);
-            return lost(c, CAM_LOST_CONFIG);
+        for (int p = 0; p < nplanes(c); p++) {
+            const uint32_t len = c->mplane ? v.p[p].length : v.b.length;
+            const uint32_t off = c->mplane ? v.p[p].m.mem_offset : v.b.m.offset;
+            if (len < c->plane_bytes[p]) {
+                say(c, "VIDIOC_QUERYBUF: buffer %d plane %d holds %u bytes, a frame %u", i, p, (unsigned)len,
+                    (unsigned)c->plane_bytes[p]);
+                return lost(c, CAM_LOST_CONFIG);
+            }
+            void *m = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_SHARED, c->fd, off);
+            if (m == MAP_FAILED)
+                return dev_fail(c, "mmap");
+            if (p == 0) {
+                c->bufs[i].start = m;
+                c->bufs[i].length = len;
+            } else {
+                c->bufs[i].start2 = m;
+                c->bufs[i].length2 = len;
+            }
         }
-        void *p = mmap(NULL, b.length, PROT_READ | PROT_WRITE, MAP_SHARED, c->fd, b.m.offset);
-        if (p == MAP_FAILED)
-            return dev_fail(c, "mmap");
-        c->bufs[i].start = p;
-        c->bufs[i].length = b.length;
     }
     return 0;
 }
 
+void cam_v4l2_describe(const cam_v4l2_t *c, char *buf, size_t len)
+{
+    const cam_fmt_t *f = cam_fmt_of_fourcc(c->pixelformat);
+    int k =
+        snprintf(buf, len, "%s, bytesperline %u, sizeimage %u, %d buffers, %.4s%s%s", f ? f->raw : "?",
+                 (unsigned)c->bytesperline, (unsigned)c->sizeimage, c->nbufs, (const char *)&c->pixelformat,
+                 nplanes(c) == 2 ? " in 2 planes" : "", c->mplane ? " (multi-planar API)" : "");
+    if (k > 0 && (size_t)k < len && f && is_ycc(f))
+        k += snprintf(buf + k, len - (size_t)k, ", ycbcr %s-%s%s", c->bt709 ? "bt709" : "bt601",
+                      c->full ? "full" : "limited", c->ycc_note);
+    if (k > 0 && (size_t)k < len && c->fps)
+        snprintf(buf + k, len - (size_t)k, ", %d fps", c->fps);
+}
+
 static int queue(cam_v4l2_t *c, int index)
 {
-    struct v4l2_buffer b = mmap_buffer(index);
-    if (xioctl(c, VIDIOC_QBUF, &b))
+    vbuf_t v;
+    mmap_buffer(c, &v, index);
+    if (xioctl(c, VIDIOC_QBUF, &v.b))
         return dev_fail(c, "VIDIOC_QBUF");
     return 0;
 }
@@ -220,7 +444,7 @@ int cam_v4l2_start(cam_v4l2_t *c)
     for (int i = 0; i < c->nbufs; i++)
         if (queue(c, i))
             return -1;
-    enum v4l2_buf_type t = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    enum v4l2_buf_type t = (enum v4l2_buf_type)buf_type(c);
     if (xioctl(c, VIDIOC_STREAMON, &t))
         return dev_fail(c, "VIDIOC_STREAMON");
     c->streaming = 1;
@@ -228,20 +452,34 @@ int cam_v4l2_start(cam_v4l2_t *c)
 }
 
 /* The buffer just dequeued as a frame: 0, 2 when it is bad (requeued), -1
- * on a fault. */
-static int take(cam_v4l2_t *c, const struct v4l2_buffer *b, cam_frame_t *f)
+ * on a fault. Each plane's data starts at its data_offset (multi-planar)
+ * and must hold the plane's bytes after it. */
+static int take(cam_v4l2_t *c, const vbuf_t *v, cam_frame_t *f)
 {
+    const struct v4l2_buffer *b = &v->b;
     if (b->index >= (uint32_t)c->nbufs) {
         say(c, "VIDIOC_DQBUF: buffer index %u out of range", (unsigned)b->index);
         return lost(c, CAM_LOST_DEVICE);
     }
+    const cam_vbuf_t *m = &c->bufs[b->index];
     f->index = (int)b->index;
     f->sequence = b->sequence;
-    f->bytesused = b->bytesused;
-    f->data = c->bufs[b->index].start;
-    f->bad = (b->flags & V4L2_BUF_FLAG_ERROR)                       ? CAM_BAD_FLAGGED
-             : b->bytesused < c->bytesperline * (uint32_t)c->height ? CAM_BAD_SHORT
-                                                                    : CAM_BAD_NONE;
+    f->bytesused = 0;
+    int shortf = 0;
+    const uint8_t *start[2] = {m->start, m->start2}, *plane[2] = {NULL, NULL};
+    const size_t mlen[2] = {m->length, m->length2};
+    const uint32_t luma = c->bytesperline * (uint32_t)c->height;
+    for (int p = 0; p < nplanes(c); p++) {
+        const uint32_t used = c->mplane ? v->p[p].bytesused : b->bytesused;
+        const uint32_t off = c->mplane ? v->p[p].data_offset : 0;
+        const uint32_t need = c->plane_bytes[p] ? c->plane_bytes[p] : luma; /* (set by hand: packed) */
+        f->bytesused += used;
+        shortf |= off > used || used - off < need || (size_t)off + need > mlen[p];
+        plane[p] = start[p] && off <= mlen[p] ? start[p] + off : start[p];
+    }
+    f->data = plane[0];
+    f->data2 = nplanes(c) == 2 ? plane[1] : c->plane_bytes[0] > luma ? plane[0] + luma : NULL;
+    f->bad = (b->flags & V4L2_BUF_FLAG_ERROR) ? CAM_BAD_FLAGGED : shortf ? CAM_BAD_SHORT : CAM_BAD_NONE;
     if (!f->bad)
         return 0;
     return queue(c, f->index) ? -1 : 2;
@@ -267,8 +505,9 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             continue; /* only the button: wait again */
         /* POLLERR: DQBUF tells why (ENODEV after a disconnect, EPIPE, ...) */
 
-        struct v4l2_buffer b = mmap_buffer(0);
-        if (xioctl(c, VIDIOC_DQBUF, &b)) {
+        vbuf_t v;
+        mmap_buffer(c, &v, 0);
+        if (xioctl(c, VIDIOC_DQBUF, &v.b)) {
             if (errno == EAGAIN && !(p[0].revents & (POLLERR | POLLHUP | POLLNVAL)))
                 continue; /* nothing after all: wait again */
             if (errno == EAGAIN) {
@@ -277,15 +516,16 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             }
             return dev_fail(c, "VIDIOC_DQBUF");
         }
-        return take(c, &b, f);
+        return take(c, &v, f);
     }
 }
 
 int cam_v4l2_latest(cam_v4l2_t *c, cam_frame_t *f, long *skipped, long bad[3])
 {
     for (;;) {
-        struct v4l2_buffer b = mmap_buffer(0);
-        if (xioctl(c, VIDIOC_DQBUF, &b)) { /* the descriptor is non-blocking */
+        vbuf_t v;
+        mmap_buffer(c, &v, 0);
+        if (xioctl(c, VIDIOC_DQBUF, &v.b)) { /* the descriptor is non-blocking */
             if (errno == EAGAIN)
                 return 0; /* f is the newest */
             const int e = errno;
@@ -295,7 +535,7 @@ int cam_v4l2_latest(cam_v4l2_t *c, cam_frame_t *f, long *skipped, long bad[3])
         }
         cam_frame_t next;
         memset(&next, 0, sizeof next);
-        const int r = take(c, &b, &next);
+        const int r = take(c, &v, &next);
         if (r < 0) {
             queue(c, f->index);
             return -1;
@@ -321,20 +561,22 @@ void cam_v4l2_close(cam_v4l2_t *c)
     if (c->fd <= 0 && !c->nbufs)
         return;
     if (c->streaming) {
-        enum v4l2_buf_type t = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+        enum v4l2_buf_type t = (enum v4l2_buf_type)buf_type(c);
         if (xioctl(c, VIDIOC_STREAMOFF, &t) && errno != ENODEV)
             sys_fail(c, "VIDIOC_STREAMOFF");
         c->streaming = 0;
     }
-    for (int i = 0; i < c->nbufs; i++)
-        if (c->bufs[i].start) {
+    for (int i = 0; i < c->nbufs; i++) {
+        if (c->bufs[i].start)
             munmap(c->bufs[i].start, c->bufs[i].length);
-            c->bufs[i].start = NULL;
-        }
+        if (c->bufs[i].start2)
+            munmap(c->bufs[i].start2, c->bufs[i].length2);
+        c->bufs[i].start = c->bufs[i].start2 = NULL;
+    }
     if (c->nbufs && c->fd > 0) {
         struct v4l2_requestbuffers rb;
         memset(&rb, 0, sizeof rb);
-        rb.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+        rb.type = buf_type(c);
         rb.memory = V4L2_MEMORY_MMAP;
         xioctl(c, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
     }

@@ -263,6 +263,21 @@ void test_errors(void)
     CHECK(st_write_file(st_path("e.rgb"), raw, 0) == 0);
     RUN(NULL, st_path("e.rgb"), "--raw-size", "16x8", "--raw-format", "rgb24", "-o", st_path("keep.ppm"));
     expect_failure("empty raw", st_path("e.rgb"), 0, "empty", "keep.ppm", NULL);
+    /* NV12: a frame is the luma rows then half as many chroma rows (16x8:
+     * 192 bytes), so 288 bytes are a frame and half; NV16's 256-byte frames
+     * make 288 partial too; --raw-ycbcr names a matrix and a range */
+    CHECK(st_write_file(st_path("p.nv"), raw, 288) == 0);
+    RUN(NULL, st_path("p.nv"), "--raw-size", "16x8", "--raw-format", "nv12", "-o", st_path("keep.ppm"));
+    expect_failure("partial NV12", st_path("p.nv"), 1, "byte offset 192: 96 of 192 bytes", "keep.ppm", NULL);
+    RUN(NULL, st_path("p.nv"), "--raw-size", "16x8", "--raw-format", "nv16", "--raw-ycbcr", "bt709-full",
+        "-o", st_path("keep.ppm"));
+    expect_failure("partial NV16", st_path("p.nv"), 1, "byte offset 256: 32 of 256 bytes", "keep.ppm", NULL);
+    RUN(NULL, st_path("p.nv"), "--raw-size", "16x8", "--raw-format", "nv12", "--raw-ycbcr", "bt2020");
+    CHECKF(R.status == 2 && strstr(R.err, "--raw-ycbcr: bad value 'bt2020'"), "--raw-ycbcr bt2020: %d %s",
+           R.status, R.err);
+    RUN(NULL, st_path("p.nv"), "--raw-size", "15x8", "--raw-format", "uyvy");
+    CHECKF(R.status == 1 && strstr(R.err, "UYVY needs an even width (got 15)"), "odd UYVY: %d %s", R.status,
+           R.err);
 
     /* PNG: a damaged byte (CRC error), and cut short */
     CHECK(st_write_png(st_path("c.png"), px, w, h, 3, 0) == 0);

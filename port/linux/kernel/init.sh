@@ -24,17 +24,18 @@ for v in /sys/class/vtconsole/vtcon*/bind; do echo 0 > "$v" 2>/dev/null; done
 # devices by name, not by number
 fb_by_id() { for f in /sys/class/graphics/fb[0-9]*; do
     [ "$(cat "$f/name")" = "$1" ] && { echo "/dev/${f##*/}"; return; }; done; }
-vid=""
+vid=""; vidmp=""  # vivid's instances: 0 single-planar, 1 multi-planar (multiplanar=1,2)
 for v in /sys/class/video4linux/video*; do
-    case "$(cat "$v/name")" in *vid-cap*) vid="/dev/${v##*/}"; break;; esac
+    case "$(cat "$v/name")" in *000-vid-cap*) vid="/dev/${v##*/}";; *001-vid-cap*) vidmp="/dev/${v##*/}";; esac
 done
 fb16=$(fb_by_id "$FB16_ID"); fb32=$(fb_by_id "$FB32_ID"); fbx=$(fb_by_id "$FBX_ID")
-log "capture $vid, 16 bpp $fb16 ($FB16_ID), 32 bpp $fb32 ($FB32_ID), XBGR $fbx ($FBX_ID)"
+log "capture $vid, multi-planar $vidmp, 16 bpp $fb16 ($FB16_ID), 32 bpp $fb32 ($FB32_ID), XBGR $fbx ($FBX_ID)"
 cpus=$(grep -c '^processor' /proc/cpuinfo)
 log "cpus: $cpus"
 for f in /sys/class/graphics/fb[0-9]*; do log "${f##*/}: $(cat $f/name) $(cat $f/virtual_size) $(cat $f/bits_per_pixel) bpp"; done
-[ -n "$vid" ] && [ -n "$fb16" ] && [ -n "$fb32" ] && [ -n "$fbx" ] || { log "devices missing"; finish 1; }
+[ -n "$vid" ] && [ -n "$vidmp" ] && [ -n "$fb16" ] && [ -n "$fb32" ] && [ -n "$fbx" ] || { log "devices missing"; finish 1; }
 /vctl "$vid" "OSD Text Mode" 2 2>>/out/guest.log
+/vctl "$vidmp" "OSD Text Mode" 2 2>>/out/guest.log
 
 # name format fb extra-options...: capture -> bloom -> framebuffer, row by
 # row (--threads 1) unless the options say otherwise
@@ -83,6 +84,32 @@ for p in $PRESETS; do run "preset-$p-t2" yuyv "$fb16" --preset "$p" --threads 2;
 # centre, through the scratch row (row by row) or the output frame (threads)
 run crop-16 yuyv "$fb16" --size 1280x720
 run crop-16-t2 yuyv "$fb16" --size 1280x720 --threads 2
+# the other capture formats (cam_fmt.c), single-planar and through the
+# multi-planar API (vivid's second instance: one plane, or two for NV..M);
+# BT.709 and full range set with vivid's colorimetry controls; --format
+# auto with a size and a frame rate vivid's webcam input offers
+run nv12-16 nv12 "$fb16"
+run nv21-32 nv21 "$fb32"
+run nv16-32 nv16 "$fb32"
+run nv61-16 nv61 "$fb16"
+run uyvy-16 uyvy "$fb16"
+run yvyu-32 yvyu "$fb32"
+run rgb565-16 rgb565 "$fb16"
+run nv12-16-t2 nv12 "$fb16" --threads 2
+run auto-32 auto "$fb32" --size 320x180 --fps 30
+/vctl "$vid" "Y'CbCr Encoding" 2 2>>/out/guest.log  # V4L2_YCBCR_ENC_709
+/vctl "$vid" "Quantization" 1 2>>/out/guest.log     # V4L2_QUANTIZATION_FULL_RANGE
+run nv12-709f-16 nv12 "$fb16"
+/vctl "$vid" "Quantization" 0 2>>/out/guest.log
+run uyvy-709-32 uyvy "$fb32"
+/vctl "$vid" "Y'CbCr Encoding" 0 2>>/out/guest.log
+run mp-yuyv-16 yuyv "$fb16" --device "$vidmp"
+run mp-nv12-32 nv12 "$fb32" --device "$vidmp"
+run mp-nv12m-16 nv12m "$fb16" --device "$vidmp"
+run mp-nv12m-16-t2 nv12m "$fb16" --device "$vidmp" --threads 2
+run mp-nv16m-32 nv16m "$fb32" --device "$vidmp"
+run mp-nv61m-16 nv61m "$fb16" --device "$vidmp"
+run mp-auto-16 auto "$fb16" --device "$vidmp" --size 320x180 --fps 30
 # the GStreamer element (gst_cases.sh): vivid in the screen's own format ->
 # tee -> the frames recorded, and bloom -> fbdevsink on the zeroed screen,
 # read back after (fbgrab: "fb: xres yres xoffset yoffset line_length bpp");
@@ -115,9 +142,10 @@ fi
 # speed under emulation, 640x480 YUYV to the 32 bpp screen: without
 # --threads (the guest's CPUs), then row by row
 echo "cpus: $cpus" > /out/speed.txt
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats >> /out/speed.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --format yuyv --frames 16 --stats >> /out/speed.txt 2>&1
 echo "exit $?" >> /out/speed.txt
-/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --frames 16 --stats -q --threads 1 > /out/speed-t1.txt 2>&1
+/bloom_cam --device "$vid" --fb "$fb32" --size 640x480 --format yuyv --frames 16 --stats -q --threads 1 \
+    > /out/speed-t1.txt 2>&1
 echo "exit $?" >> /out/speed-t1.txt
 
 # GPIO through gpio-sim (configfs), when run.sh could build it: a bank of two

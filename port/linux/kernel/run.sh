@@ -302,7 +302,7 @@ echo "$order" | tr ' ' '\n' | grep . > "$work/root/modules.order"
 # module options (insmod does not read them from the kernel command line, so
 # drm_kms_helper.drm_fbdev_overalloc=200 there would be ignored: it is here)
 cat > "$work/root/modules.args" <<ARGS
-vivid n_devs=1 node_types=0x10101 num_inputs=1 input_types=0x00
+vivid n_devs=2 node_types=0x10101,0x1 num_inputs=1,1 input_types=0x00,0x00 multiplanar=1,2
 vfb vfb_enable=1 mode_option=640x480-32 videomemorysize=2457600
 drm_kms_helper drm_fbdev_overalloc=200
 ARGS
@@ -366,13 +366,15 @@ frame_check() { # case fbformat sim-options...
     [ -n "$eng" ] || { bad "$c: not on $nt thread(s)"; sed 's/^/       /' "$t"; return; }
     how=row-by-row; [ "$nt" = 1 ] || how="$nt threads, $(echo "$eng" | sed 's/.*bytes (\(.*\))$/\1/')"
     geo=$(sed -n 's/.*): \([0-9]*x[0-9]*\) \([a-z0-9]*\), bytesperline \([0-9]*\),.*/\1 \2 \3/p' "$t" | head -n 1)
+    # the Y'CbCr rule the capture was converted with (the driver's colorimetry)
+    ycc=$(sed -n 's/.*, ycbcr \(bt[0-9]*-[a-z]*\).*/\1/p' "$t" | head -n 1)
     # the part of the frame the screen shows: its size and first pixel
     shown=$(sed -n 's/.*, \([0-9]*\)x\([0-9]*\) shown from \([0-9]*\),\([0-9]*\)$/\1 \2 \3 \4/p' "$t" | head -n 1)
     [ -n "$geo" ] && [ -n "$shown" ] || { bad "$c: no capture or screen line"; sed 's/^/       /' "$t"; return; }
     set -- $geo $shown "$@"; wh=$1; fmt=$2; bpl=$3; sw=$4; sh=$5; sx=$6; sy=$7; shift 7
     w=${wh%x*}
     rm -rf "$work/sim" && mkdir -p "$work/sim"
-    if ! "$B/bloom_sim" "$r/$c.raw" --raw-size "$wh" --raw-format "$fmt" --raw-stride "$bpl" \
+    if ! "$B/bloom_sim" "$r/$c.raw" --raw-size "$wh" --raw-format "$fmt" --raw-stride "$bpl" ${ycc:+--raw-ycbcr $ycc} \
         --in-format rgb888 --out-format "$ff" -q -o "$work/sim/f%04d.ppm" "$@" > "$work/sim.log" 2>&1; then
         bad "$c: bloom_sim failed"; sed 's/^/       /' "$work/sim.log"; return
     fi
@@ -381,7 +383,7 @@ frame_check() { # case fbformat sim-options...
     part=""; [ "${sw}x$sh" = "$wh" ] || { part="part $sx $sy $sh"; w=$sw; }
     cp "$last" "$work/last-$c.ppm"  # for the negative control
     if res=$("$work/fbcmp" "$r/$c.fb" "$ff" "$w" "$last" $part 2>&1); then
-        ok "$c: $wh $fmt ($how), framebuffer = bloom_sim on the recorded frame $n of $n: $res"
+        ok "$c: $wh $fmt${ycc:+ $ycc} ($how), framebuffer = bloom_sim on the recorded frame $n of $n: $res"
     else
         bad "$c: $res"
     fi
@@ -426,6 +428,11 @@ done
 # a 1280x720 capture on the 720x576 screen: the shown part of the frame
 frame_check crop-16 rgb565 $P
 frame_check crop-16-t2 rgb565 $P
+# the other capture formats, single-planar and multi-planar (init.sh)
+for c in nv12-16 nv21-32 nv16-32 nv61-16 uyvy-16 yvyu-32 rgb565-16 nv12-16-t2 auto-32 nv12-709f-16 \
+    uyvy-709-32 mp-yuyv-16 mp-nv12-32 mp-nv12m-16 mp-nv12m-16-t2 mp-nv16m-32 mp-nv61m-16 mp-auto-16; do
+    case "$c" in *-16*) frame_check "$c" rgb565 $P;; *) frame_check "$c" xrgb8888 $P;; esac
+done
 # negative control: the comparison must see the lowest bit of one pixel of
 # yuyv-16-t2's screen flipped (pixel 160,90 of 320x180 RGB565: its blue LSB)
 at=$((2 * (320 * 90 + 160)))
@@ -466,6 +473,18 @@ fault_check() { # case exit-status text
 }
 # exit statuses (port/linux/README.md): 0 stopped or done, 2 configuration,
 # 3 camera lost, 4 display
+# what the format cases must have gone through: vivid's colorimetry
+# controls, the multi-planar API with one and two planes, --format auto's
+# choice and --fps
+fault_check nv12-709f-16 0 "ycbcr bt709-full"
+fault_check uyvy-709-32 0 "ycbcr bt709-limited"
+fault_check mp-nv12m-16 0 "NM12 in 2 planes (multi-planar API)"
+fault_check mp-nv16m-32 0 "NM16 in 2 planes (multi-planar API)"
+fault_check mp-yuyv-16 0 "YUYV (multi-planar API)"
+fault_check auto-32 0 "bloom_cam: --format auto: rgb24 of "
+fault_check auto-32 0 "formats not converted here; 320x180 offered, 30 fps offered)"
+fault_check auto-32 0 ", 30 fps"
+fault_check mp-auto-16 0 "formats not converted here; 320x180 offered, 30 fps offered)"
 fault_check xbgr 4 "is 32 bpp XBGR8888; only 16 bpp RGB565 and 32 bpp XRGB8888 are supported"
 for sig in SIGTERM SIGHUP SIGQUIT SIGPIPE; do
     c=$(echo $sig | tr 'A-Z' 'a-z')
