@@ -193,6 +193,8 @@ typedef struct {
     double progress_after; /* seconds before a progress line appears */
 } sim_opts_t;
 
+/* The --help text, with the presets this build has (sim_usage.c). */
+void sim_usage(FILE *f);
 /* Parses argv into o. Returns 0 to run, 1 when --help was printed (exit
  * 0), -1 after printing a usage error to stderr (exit 2). */
 int sim_opts_parse(int argc, char **argv, sim_opts_t *o);

@@ -6,7 +6,7 @@
 # Debian packages: libpng-dev, libjpeg62-turbo-dev (libjpeg-dev), libopenexr-dev,
 # pkg-config. Without the OpenEXR headers the tool builds without EXR input.
 
-SIMTOOL_SRC := sim/bloom_sim.c sim/sim_opts.c sim/sim_source.c sim/sim_convert.c \
+SIMTOOL_SRC := sim/bloom_sim.c sim/sim_opts.c sim/sim_usage.c sim/sim_source.c sim/sim_convert.c \
                sim/sim_out.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c sim/sim_aux.c \
                port/threads/bloom_mt.c
 SIMTOOL_HDR := sim/sim.h port/threads/bloom_mt.h

@@ -6,111 +6,6 @@
 #include <string.h>
 #include <strings.h>
 
-static const char usage_text[] =
-    "usage: bloom_sim [options] INPUT...\n"
-    "\n"
-    "Runs recorded frames through the fixed-point bloom engine (bloom_process) and,\n"
-    "with --compare, the float reference model side by side; prints the engine time\n"
-    "per frame and the error against the model; writes the results.\n"
-    "\n"
-    "Inputs (format found from the content; several INPUTs form one sequence;\n"
-    "frames are numbered from 0):\n"
-    "  PPM/PGM 8-bit (P6/P5)    sRGB codes (maxval < 255: round(code * 255 / maxval))\n"
-    "  PPM/PGM/PNG 16-bit       linear light: code/maxval, to RGBQ16 as\n"
-    "                           round(code * 65536 / maxval); with --decode16 srgb the\n"
-    "                           codes are sRGB-encoded: round(srgb_to_linear(code/maxval)*65536)\n"
-    "  PFM (PF/Pf)              linear floats, given to the engine as RGBF32 (the engine\n"
-    "                           rounds v * 2^20 half to even); as RGBQ16 (--in-format rgbq16):\n"
-    "                           NaN and negative -> 0, >= 256 and +Inf -> 2^24-1\n"
-    "                           (255.99998), else round(v * 65536)\n"
-    "  PNG 8-bit, JPEG          sRGB codes; palette expanded, alpha and colour chunks ignored\n"
-    "  OpenEXR                  R, G, B (or Y) of part 0, half/float, as PFM floats\n"
-    "  Y4M (YUV4MPEG2)          8-bit C420jpeg, C420paldv, C420mpeg2, C420, C422, C444, Cmono;\n"
-    "                           BT.601 limited range (full with XCOLORRANGE=FULL) to RGB\n"
-    "                           codes in integer arithmetic, chroma repeated (nearest);\n"
-    "                           \"-\" reads a stream from standard input\n"
-    "  raw V4L2 dump            needs --raw-size WxH and --raw-format yuyv|uyvy|yvyu|nv12|\n"
-    "                           nv21|nv16|nv61|rgb24|grey|rgb565 [--raw-stride BYTES]: frames\n"
-    "                           back to back as v4l2-ctl --stream-to writes them (NV..: the\n"
-    "                           chroma rows after the luma, same stride); frames = file size /\n"
-    "                           frame size. Y'CbCr by --raw-ycbcr bt601|bt709-limited|full\n"
-    "                           (default bt601-limited), GREY full range (Y = R = G = B)\n"
-    "  Grey images are replicated to R, G, B.\n"
-    "\n"
-    "Outputs:\n"
-    "  -o, --output PATTERN     engine output per frame: name%04d.ppm, .png or .pfm (%d is the\n"
-    "                           frame number), or name.y4m: one 4:2:0 stream (BT.601 limited)\n"
-    "  --side-by-side PATTERN   input | fixed-point | float | |fixed - float| * gain, per\n"
-    "                           frame (.ppm, .png or .y4m); implies --compare\n"
-    "  --view final|bloom       the composite S + I*B (default) or the bloom-only view I*B\n"
-    "  --diff-gain N            difference amplification of the side-by-side (default 64)\n"
-    "  --fps N[:D]              Y4M output rate when the input has none (default 25)\n"
-    "  PPM, PNG and Y4M show rgb565 output as round(code * 255 / max) and rgbq16 output\n"
-    "  sRGB-encoded (linear with --linear), clipped at 1.0; PFM holds linear floats.\n"
-    "\n"
-    "Engine (as bloom_demo):\n"
-    "  --levels N               pyramid levels, 1..16 (default 5)\n"
-    "  --threshold T            0..256 (default 1.0)      --knee S    0..1 (default 0.5)\n"
-    "  --intensity I            0..10 (default 1.0)       --linear    codes are linear light\n"
-    "  --copy-source            BLOOM_FLAG_COPY_SOURCE (the engine copies its source rows)\n"
-    "  --format F               engine input and output format: rgb888, xrgb8888, rgb565,\n"
-    "                           rgbq16 (as your board's framebuffer or camera delivers them);\n"
-    "                           rgbf32 (linear floats) is an input format only\n"
-    "  --in-format F, --out-format F   one side only. Defaults: input rgbf32 for float inputs\n"
-    "                           (PFM, OpenEXR), rgbq16 for 16-bit ones, rgb565 for RGB565\n"
-    "                           dumps, rgb888\n"
-    "                           otherwise; output rgb888. A forced conversion follows the\n"
-    "                           engine's own rules: codes to rgbq16 decode to Q16.16, HDR\n"
-    "                           to 8/5/6-bit codes encodes clipped at 1.0\n"
-    "\n";
-
-static const char usage_presets[] =
-    "Presets (sim/docs/presets.md): the options above and below apply on top of the\n"
-    "preset's own defaults, whatever their order on the command line.\n"
-    "  --preset NAME            unity (default), gamedev, xna, attenuation, arm, cod\n"
-    "  --strength S             gamedev: scene + S*bloom; arm with --baked: the map's\n"
-    "                           strength; 0..16\n"
-    "  --passes P               xna: Kawase passes, 1..8\n"
-    "  --saturate               xna: clamp at 1.0 between passes, as 8-bit targets did\n"
-    "  --attenuation A          attenuation: a of max(lerp(1, depth, a), r), 0..1\n"
-    "  --max-reduction R        attenuation: r, 0..1\n"
-    "  --aux FILE               the preset's one-channel plane, read once and used for\n"
-    "                           every frame: attenuation's depth (0 near .. max far), arm's\n"
-    "                           mask (which pixels may bloom) or with --baked its bloom map;\n"
-    "                           a grey PGM or PNG of the frames' size, 8-bit or 16-bit\n"
-    "  --tint R,G,B             cod, arm: glow colour, each 0..1\n"
-    "  --weights c0,c1,...      cod: level weights c_k, each 0..1 (k = 0: the final\n"
-    "                           composite); levels not given keep the preset's weights\n"
-    "  --additive               cod: additive levels instead of energy-conserving\n"
-    "  --baked                  arm: no pyramid, out = S + S*map*strength with --aux as map\n"
-    "  --radius PX              cod: the level count whose glow reaches about PX output\n"
-    "                           pixels at any frame size (instead of --levels)\n";
-
-static const char usage_rest[] =
-    "\n"
-    "Checks:\n"
-    "  --compare                also run the preset's float model: per frame the peak and\n"
-    "                           mean error in output LSB and the share of exact samples,\n"
-    "                           and a summary\n"
-    "  --bittrue                also run the preset's bit-true model; any differing sample\n"
-    "                           fails the run\n"
-    "\n"
-    "Run:\n"
-    "  --frames N               at most N frames\n"
-    "  --repeat N               run the engine N times per frame, report the fastest\n"
-    "  --threads N              N strips on N threads, the same bytes (0, default: the CPUs)\n"
-    "  -q, --quiet              no per-frame lines (the summary is still printed)\n"
-    "  --progress-after S       on a terminal, show a progress line on stderr once the run\n"
-    "                           has taken S seconds (default 1); quiet when not a terminal\n"
-    "  -h, --help\n"
-    "\n"
-    "Exit status: 0 done; 1 a malformed or truncated input (the message names the file\n"
-    "and the frame), an output that could not be written, an engine error or a bit-true\n"
-    "mismatch; 2 a bad command line. Every output goes to a temp file renamed into\n"
-    "place when complete (a Y4M stream at the end of the run), so a failed run never\n"
-    "leaves a partial file in place of a good one; Y4M and raw files are checked whole\n"
-    "before the first frame is processed. Details: sim/docs/simulator.md\n";
-
 static int bad(const char *opt, const char *val)
 {
     fprintf(stderr, "bloom_sim: %s: bad value '%s' (see bloom_sim --help)\n", opt, val);
@@ -551,10 +446,7 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
         if (!strcmp(a, "--")) {
             only_inputs = 1;
         } else if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            fputs(usage_text, stdout);
-            fputs(usage_presets, stdout);
-            printf("  This build has: %s.\n", sim_presets_available());
-            fputs(usage_rest, stdout);
+            sim_usage(stdout);
             return 1;
         } else if (!strcmp(a, "--linear")) {
             g->flags |= BLOOM_FLAG_LINEAR;
