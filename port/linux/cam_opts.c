@@ -13,6 +13,12 @@ void cam_usage(void *stream)
 {
     fputs("usage: bloom_cam [options]\n"
           "  --device DEV          V4L2 capture device (default /dev/video0)\n"
+          "  --display D           drm | fbdev | auto (default auto: the fbdev when --fb is\n"
+          "                        given, else DRM when a /dev/dri/card* has a connected\n"
+          "                        connector, else the fbdev)\n"
+          "  --drm-card CARD       the DRM device (default: the first with a connected connector)\n"
+          "  --drm-mode WxH        the mode to set (default: the connector's preferred mode)\n"
+          "  --drm-format F        auto | xrgb8888 | rgb565 (auto: XRGB8888 if the plane takes it)\n"
           "  --fb FB               framebuffer (default /dev/fb0); 'none' draws off-screen\n"
           "  --vt TTY|off          the console's VT, kept in graphics mode while drawing so\n"
           "                        that its text does not draw over the video (default\n"
@@ -161,6 +167,60 @@ static const char *const with_value[] = {
     "--passes",     "--attenuation", "--max-reduction", "--aux",     "--tint",     "--weights",
     "--radius",     "--threads",     "--reconnect",     "--latest",  "--debounce", NULL};
 
+/* The display's options (drm.c), apart from the table above: 0 when name
+ * is not one of them, 1 when taken, -1 on an error. */
+static const char *const display_value[] = {"--display", "--drm-card", "--drm-mode", "--drm-format", NULL};
+static int display_opt(cam_opts_t *o, const char *name, const char *v, char *err, size_t errlen,
+                       int *drm_given)
+{
+    if (!strcmp(name, "--display")) {
+        if (!strcmp(v, "drm"))
+            o->display = CAM_DISPLAY_DRM;
+        else if (!strcmp(v, "fbdev"))
+            o->display = CAM_DISPLAY_FBDEV;
+        else if (!strcmp(v, "auto"))
+            o->display = CAM_DISPLAY_AUTO;
+        else
+            return fail(err, errlen, "--display: '%s' is not drm, fbdev or auto", v);
+    } else if (!strcmp(name, "--drm-card")) {
+        o->drm_card = v;
+    } else if (!strcmp(name, "--drm-mode")) {
+        if (parse_size(v, &o->drm_w, &o->drm_h))
+            return fail(err, errlen, "--drm-mode: '%s' is not WxH", v);
+    } else if (!strcmp(name, "--drm-format")) {
+        if (!strcmp(v, "auto"))
+            o->drm_format = (bloom_format_t)0;
+        else if (!strcmp(v, "xrgb8888") || !strcmp(v, "XR24"))
+            o->drm_format = BLOOM_FMT_XRGB8888;
+        else if (!strcmp(v, "rgb565") || !strcmp(v, "RG16"))
+            o->drm_format = BLOOM_FMT_RGB565;
+        else
+            return fail(err, errlen, "--drm-format: '%s' is not auto, xrgb8888 or rgb565", v);
+    } else {
+        return 0;
+    }
+    if (name[2] == 'd' && name[3] == 'r')
+        *drm_given = 1;
+    return 1;
+}
+
+/* The display options together: --drm-* ask for DRM (auto becomes drm),
+ * --fb for the fbdev. */
+static int display_check(cam_opts_t *o, int drm_given, char *err, size_t errlen)
+{
+    if (drm_given && o->display == CAM_DISPLAY_FBDEV)
+        return fail(err, errlen, "--drm-card/--drm-mode/--drm-format are for --display drm, not fbdev");
+    if (drm_given && o->fb_given)
+        return fail(err, errlen, "--fb is the fbdev output, --drm-* the DRM one: give one of them");
+    if (o->display == CAM_DISPLAY_DRM && o->fb_given)
+        return fail(err, errlen, "--fb is the fbdev output: not with --display drm");
+    if (drm_given)
+        o->display = CAM_DISPLAY_DRM;
+    if (o->display == CAM_DISPLAY_DRM && !cam_drm_available)
+        return fail(err, errlen, "--display drm: built without libdrm (install libdrm-dev and rebuild)");
+    return 0;
+}
+
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
 {
@@ -285,6 +345,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     long radius = 0;
     bloom_config_t gv; /* values given */
     memset(&gv, 0, sizeof gv);
+    int drm_given = 0;
 
     for (int i = 1; i < argc; i++) {
         char name[32];
@@ -312,6 +373,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         int known = 0;
         for (int k = 0; with_value[k]; k++)
             known |= !strcmp(name, with_value[k]);
+        for (int k = 0; display_value[k]; k++)
+            known |= !strcmp(name, display_value[k]);
         if (!known)
             return fail(err, errlen, "unknown option '%s'", a);
         if (eq)
@@ -322,10 +385,16 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             return fail(err, errlen, "%s needs a value", name);
 
         long l;
+        const int dr = display_opt(o, name, v, err, errlen, &drm_given);
+        if (dr < 0)
+            return -1;
+        if (dr)
+            continue;
         if (!strcmp(name, "--device")) {
             o->device = v;
         } else if (!strcmp(name, "--fb")) {
             o->fb = v;
+            o->fb_given = 1;
         } else if (!strcmp(name, "--size")) {
             if (parse_size(v, &o->width, &o->height))
                 return fail(err, errlen, "--size: '%s' is not WxH (2..16384 x 1..16384)", v);
@@ -451,6 +520,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             o->dump_fb = v;
         }
     }
+    if (display_check(o, drm_given, err, errlen))
+        return -1;
     /* the preset's defaults, then what was given */
     const char *pn = bloom_preset_name(o->preset);
     for (size_t k = 0; k < sizeof param_opt / sizeof param_opt[0]; k++)

@@ -417,6 +417,11 @@ static int run(cam_t *c)
         }
 
         uint8_t *page = cam_fb_draw_page(&c->fb);
+        if (!page) { /* DRM: the last flip never completed */
+            cam_v4l2_requeue(&c->cap, &f);
+            status = CAM_EXIT_DISPLAY;
+            break;
+        }
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
         int pr = c->threads > 1 ? cam_mt_process(&c->mt, mode, &c->cap, f.data, &c->fb, &c->place, page)
@@ -462,6 +467,25 @@ static int run(cam_t *c)
     if (c->o.stats || !c->o.quiet)
         stats_line("total", &n, t_start, n.frames ? now_s() : t_start, psum, pmin, pmax);
     return status;
+}
+
+/* The screen the options ask for (fbdev, DRM, or auto's choice: drm_pick.c's
+ * cam_display_use_drm) for a w x h frame: 0, or -1 after a message. */
+static int display_open(cam_fb_t *fb, const cam_opts_t *o, int w, int h)
+{
+    char found[32];
+    const char *card = o->drm_card;
+    int connected = 0;
+    if (o->display == CAM_DISPLAY_AUTO && !o->fb_given) {
+        card = cam_drm_find(found, sizeof found);
+        connected = card != NULL;
+    }
+    if (cam_display_use_drm(o, connected))
+        return cam_drm_open(fb, card, o->drm_w, o->drm_h, o->drm_format, o->quiet);
+    if (cam_fb_open(fb, o->fb, w, h))
+        return -1;
+    snprintf(fb->path, sizeof fb->path, "%s", o->fb);
+    return 0;
 }
 
 static int dump_fb(cam_t *c)
@@ -527,7 +551,7 @@ int main(int argc, char **argv)
         status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
         goto out;
     }
-    if (cam_fb_open(&c.fb, c.o.fb, c.cap.width, c.cap.height)) {
+    if (display_open(&c.fb, &c.o, c.cap.width, c.cap.height)) {
         status = CAM_EXIT_DISPLAY;
         goto out;
     }
@@ -562,12 +586,17 @@ int main(int argc, char **argv)
                 "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown from %d,%d\n",
                 CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height,
                 cam_format_name(c.o.format), (unsigned)c.cap.bytesperline, (unsigned)c.cap.sizeimage,
-                c.cap.nbufs, CAM_PROG, c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
+                c.cap.nbufs, CAM_PROG, c.fb.path, c.fb.id, c.fb.xres, c.fb.yres,
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
-                c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
-                c.place.w, c.place.h, c.place.src_x, c.place.src_y);
+                c.fb.drm          ? "two dumb buffers flipped on the vertical blank"
+                : c.fb.pages == 2 ? "double-buffered"
+                                  : "single-buffered",
+                c.place.dst_x, c.place.dst_y, c.place.w, c.place.h, c.place.src_x, c.place.src_y);
     status = run(&c);
-    if (c.fb.pages == 2 && !c.o.quiet)
+    if (c.fb.drm && !c.o.quiet)
+        fprintf(stderr, "%s: %ld page flips (drmModePageFlip), each drawn after the last one's event\n",
+                CAM_PROG, cam_drm_flips(&c.fb));
+    else if (c.fb.pages == 2 && !c.o.quiet)
         fprintf(stderr, "%s: pages shown %s\n", CAM_PROG,
                 c.fb.vsync ? "after the vertical blank (FBIO_WAITFORVSYNC)"
                            : "without waiting for the vertical blank (the driver refused FBIO_WAITFORVSYNC)");
