@@ -161,11 +161,11 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
 }
 
 static const char *const with_value[] = {
-    "--device",     "--fb",          "--size",          "--format",  "--levels",   "--threshold",
-    "--knee",       "--intensity",   "--mode",          "--frames",  "--buffers",  "--timeout",
-    "--gpio-frame", "--gpio-button", "--record",        "--dump-fb", "--preset",   "--strength",
-    "--passes",     "--attenuation", "--max-reduction", "--aux",     "--tint",     "--weights",
-    "--radius",     "--threads",     "--reconnect",     "--latest",  "--debounce", NULL};
+    "--device",    "--fb",      "--size",    "--format",   "--levels",  "--threshold",   "--knee",
+    "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
+    "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
+    "--aux",       "--tint",    "--weights", "--radius",   "--threads", "--reconnect",   "--latest",
+    "--debounce",  "--vt",      NULL};
 
 /* The display's options (drm.c), apart from the table above: 0 when name
  * is not one of them, 1 when taken, -1 on an error. */

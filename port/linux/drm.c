@@ -302,7 +302,8 @@ int cam_drm_open(cam_fb_t *fb, const char *card, int mode_w, int mode_h, bloom_f
         nt = cam_drm_pick_formats((const uint32_t[]){CAM_DRM_XRGB8888, CAM_DRM_RGB565}, 2, fmt, try);
     if (nt == 0) {
         fprintf(stderr, "%s: %s (%s): the primary plane scans out %s; bloom_cam writes XRGB8888 or RGB565\n",
-                CAM_PROG, card, fb->id, fmt ? "neither of the formats asked for" : "neither XRGB8888 nor RGB565");
+                CAM_PROG, card, fb->id,
+                fmt ? "neither of the formats asked for" : "neither XRGB8888 nor RGB565");
         goto done;
     }
     d->saved = drmModeGetCrtc(d->fd, d->crtc_id);
@@ -394,9 +395,10 @@ void cam_drm_close(cam_fb_t *fb)
             drmModeCrtc *s = d->saved;
             /* the CRTC as found: its framebuffer and mode (the fbdev
              * emulation's, or another program's), or off */
-            const int r = s->buffer_id && s->mode_valid
-                              ? drmModeSetCrtc(d->fd, s->crtc_id, s->buffer_id, s->x, s->y, &d->conn_id, 1, &s->mode)
-                              : drmModeSetCrtc(d->fd, s->crtc_id, 0, 0, 0, NULL, 0, NULL);
+            const int r =
+                s->buffer_id && s->mode_valid
+                    ? drmModeSetCrtc(d->fd, s->crtc_id, s->buffer_id, s->x, s->y, &d->conn_id, 1, &s->mode)
+                    : drmModeSetCrtc(d->fd, s->crtc_id, 0, 0, 0, NULL, 0, NULL);
             if (r)
                 drm_fail("drmModeSetCrtc (restoring the CRTC)");
         }

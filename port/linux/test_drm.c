@@ -72,10 +72,13 @@ static void test_options(void)
     CHECK(parse(&o, "--fb none", err, sizeof err) == 0 && cam_display_use_drm(&o, 1) == 0);
     CHECK(parse(&o, "--display fbdev", err, sizeof err) == 0 && cam_display_use_drm(&o, 1) == 0);
     CHECK(parse(&o, "--display=auto", err, sizeof err) == 0 && o.display == CAM_DISPLAY_AUTO);
+    /* the VT option (left alone with either display) */
+    CHECK(parse(&o, "--vt off", err, sizeof err) == 0 && !strcmp(o.vt, "off"));
+    CHECK(parse(&o, "--vt=/dev/tty2", err, sizeof err) == 0 && !strcmp(o.vt, "/dev/tty2"));
     if (cam_drm_available) {
         CHECK(parse(&o, "--display drm", err, sizeof err) == 0 && cam_display_use_drm(&o, 0) == 1);
-        CHECK(parse(&o, "--drm-mode 1280x720 --drm-card /dev/dri/card1 --drm-format rgb565", err, sizeof err) ==
-                  0 &&
+        CHECK(parse(&o, "--drm-mode 1280x720 --drm-card /dev/dri/card1 --drm-format rgb565", err,
+                    sizeof err) == 0 &&
               o.drm_w == 1280 && o.drm_h == 720 && !strcmp(o.drm_card, "/dev/dri/card1") &&
               o.drm_format == BLOOM_FMT_RGB565 && o.display == CAM_DISPLAY_DRM); /* --drm-* ask for DRM */
         CHECK(parse(&o, "--drm-format=xrgb8888", err, sizeof err) == 0 && o.drm_format == BLOOM_FMT_XRGB8888);
