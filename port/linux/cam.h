@@ -213,9 +213,10 @@ typedef struct {
 
 /* path "none": an off-screen XRGB8888 surface of w x h (for measuring). */
 int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h);
-uint8_t *cam_fb_draw_page(cam_fb_t *fb); /* first byte of the page to draw */
-int cam_fb_show(cam_fb_t *fb);           /* pan to the page just drawn */
-void cam_fb_close(cam_fb_t *fb);         /* restore pan and var, unmap, close */
+uint8_t *cam_fb_draw_page(cam_fb_t *fb);          /* first byte of the page to draw */
+int cam_fb_show(cam_fb_t *fb);                    /* pan to the page just drawn */
+void cam_fb_close(cam_fb_t *fb);                  /* restore pan and var, unmap, close */
+const char *cam_fb_buffering(const cam_fb_t *fb); /* "double-buffered", ... (the startup line) */
 
 /* The console's VT while drawing (--vt, default /dev/tty0: the VT in the
  * foreground): KD_GRAPHICS, so that fbcon's cursor, kernel messages and a
@@ -231,7 +232,7 @@ void cam_vt_graphics(cam_vt_t *vt, const char *path, int quiet);
 void cam_vt_restore(cam_vt_t *vt);
 
 /* ---- DRM/KMS (drm.c; the pure rules in drm_pick.c) ------------------------
- * The screen is a cam_fb_t either way: main.c's display_open fills it from a
+ * The screen is a cam_fb_t either way: cam_display_open fills it from a
  * DRM device (fb->drm set: two dumb buffers, flipped on the vertical blank)
  * or the fbdev, and cam_fb_draw_page / cam_fb_show / cam_fb_close go to
  * the one opened. */
@@ -266,6 +267,15 @@ int cam_drm_pick_formats(const uint32_t *fmts, int n, bloom_format_t want, bloom
  * takes the fbdev when --fb was given, else DRM when a card has a connected
  * connector (drm_connected), else the fbdev. 1 DRM, 0 fbdev. */
 int cam_display_use_drm(const cam_opts_t *o, int drm_connected);
+/* The display's options (cam_parse_opts): 0 when name is not one of them,
+ * 1 when taken, -1 on an error (err). */
+int cam_display_opt(cam_opts_t *o, const char *name, const char *v, char *err, size_t errlen, int *drm_given);
+/* Them together, after the rest: --drm-* ask for DRM (auto becomes drm), and
+ * --fb for the fbdev. 0, or -1 on an error (err). */
+int cam_display_check(cam_opts_t *o, int drm_given, char *err, size_t errlen);
+/* The screen the options ask for (fbdev, DRM, or auto's choice by
+ * cam_display_use_drm) for a w x h frame: 0, or -1 after a message. */
+int cam_display_open(cam_fb_t *fb, const cam_opts_t *o, int w, int h);
 
 /* ---- GPIO (gpio.c) ------------------------------------------------------- */
 typedef struct cam_gpio cam_gpio_t;

@@ -167,59 +167,8 @@ static const char *const with_value[] = {
     "--aux",       "--tint",    "--weights", "--radius",   "--threads", "--reconnect",   "--latest",
     "--debounce",  "--vt",      NULL};
 
-/* The display's options (drm.c), apart from the table above: 0 when name
- * is not one of them, 1 when taken, -1 on an error. */
+/* The display's options (drm_pick.c), apart from the table above. */
 static const char *const display_value[] = {"--display", "--drm-card", "--drm-mode", "--drm-format", NULL};
-static int display_opt(cam_opts_t *o, const char *name, const char *v, char *err, size_t errlen,
-                       int *drm_given)
-{
-    if (!strcmp(name, "--display")) {
-        if (!strcmp(v, "drm"))
-            o->display = CAM_DISPLAY_DRM;
-        else if (!strcmp(v, "fbdev"))
-            o->display = CAM_DISPLAY_FBDEV;
-        else if (!strcmp(v, "auto"))
-            o->display = CAM_DISPLAY_AUTO;
-        else
-            return fail(err, errlen, "--display: '%s' is not drm, fbdev or auto", v);
-    } else if (!strcmp(name, "--drm-card")) {
-        o->drm_card = v;
-    } else if (!strcmp(name, "--drm-mode")) {
-        if (parse_size(v, &o->drm_w, &o->drm_h))
-            return fail(err, errlen, "--drm-mode: '%s' is not WxH", v);
-    } else if (!strcmp(name, "--drm-format")) {
-        if (!strcmp(v, "auto"))
-            o->drm_format = (bloom_format_t)0;
-        else if (!strcmp(v, "xrgb8888") || !strcmp(v, "XR24"))
-            o->drm_format = BLOOM_FMT_XRGB8888;
-        else if (!strcmp(v, "rgb565") || !strcmp(v, "RG16"))
-            o->drm_format = BLOOM_FMT_RGB565;
-        else
-            return fail(err, errlen, "--drm-format: '%s' is not auto, xrgb8888 or rgb565", v);
-    } else {
-        return 0;
-    }
-    if (name[2] == 'd' && name[3] == 'r')
-        *drm_given = 1;
-    return 1;
-}
-
-/* The display options together: --drm-* ask for DRM (auto becomes drm),
- * --fb for the fbdev. */
-static int display_check(cam_opts_t *o, int drm_given, char *err, size_t errlen)
-{
-    if (drm_given && o->display == CAM_DISPLAY_FBDEV)
-        return fail(err, errlen, "--drm-card/--drm-mode/--drm-format are for --display drm, not fbdev");
-    if (drm_given && o->fb_given)
-        return fail(err, errlen, "--fb is the fbdev output, --drm-* the DRM one: give one of them");
-    if (o->display == CAM_DISPLAY_DRM && o->fb_given)
-        return fail(err, errlen, "--fb is the fbdev output: not with --display drm");
-    if (drm_given)
-        o->display = CAM_DISPLAY_DRM;
-    if (o->display == CAM_DISPLAY_DRM && !cam_drm_available)
-        return fail(err, errlen, "--display drm: built without libdrm (install libdrm-dev and rebuild)");
-    return 0;
-}
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -385,7 +334,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             return fail(err, errlen, "%s needs a value", name);
 
         long l;
-        const int dr = display_opt(o, name, v, err, errlen, &drm_given);
+        const int dr = cam_display_opt(o, name, v, err, errlen, &drm_given);
         if (dr < 0)
             return -1;
         if (dr)
@@ -520,7 +469,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             o->dump_fb = v;
         }
     }
-    if (display_check(o, drm_given, err, errlen))
+    if (cam_display_check(o, drm_given, err, errlen))
         return -1;
     /* the preset's defaults, then what was given */
     const char *pn = bloom_preset_name(o->preset);

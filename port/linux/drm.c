@@ -6,13 +6,13 @@
  * the flip's event has come, so no frame is ever shown half-drawn. The
  * CRTC as found (drmModeGetCrtc) is set again by cam_drm_close, which the
  * one teardown of main.c runs on every exit path (stop signals included:
- * they only set a flag).
+ * they only set a flag). cam_display_open (at the end) chooses this or
+ * the fbdev, by drm_pick.c's rule.
  *
  * libdrm rather than the bare ioctls: Debian's libdrm-dev ships libdrm.a
  * (bookworm: /usr/lib/x86_64-linux-gnu/libdrm.a, needing only -lm), so the
  * static build for the test initramfs links it too. Built without libdrm
- * (CAM_NO_DRM), --display drm is refused and auto means the fbdev. The
- * choice itself is main.c's (display_open), by drm_pick.c's rule. */
+ * (CAM_NO_DRM), --display drm is refused and auto means the fbdev. */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -412,3 +412,20 @@ void cam_drm_close(cam_fb_t *fb)
     fb->fd = -1;
 }
 #endif
+
+int cam_display_open(cam_fb_t *fb, const cam_opts_t *o, int w, int h)
+{
+    char found[32];
+    const char *card = o->drm_card;
+    int connected = 0;
+    if (o->display == CAM_DISPLAY_AUTO && !o->fb_given) {
+        card = cam_drm_find(found, sizeof found);
+        connected = card != NULL;
+    }
+    if (cam_display_use_drm(o, connected))
+        return cam_drm_open(fb, card, o->drm_w, o->drm_h, o->drm_format, o->quiet);
+    if (cam_fb_open(fb, o->fb, w, h))
+        return -1;
+    snprintf(fb->path, sizeof fb->path, "%s", o->fb);
+    return 0;
+}

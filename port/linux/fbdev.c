@@ -197,6 +197,13 @@ int cam_fb_show(cam_fb_t *fb)
     return 0;
 }
 
+const char *cam_fb_buffering(const cam_fb_t *fb)
+{
+    return fb->drm          ? "two dumb buffers flipped on the vertical blank"
+           : fb->pages == 2 ? "double-buffered"
+                            : "single-buffered";
+}
+
 void cam_fb_close(cam_fb_t *fb)
 {
     if (fb->drm) {

@@ -469,25 +469,6 @@ static int run(cam_t *c)
     return status;
 }
 
-/* The screen the options ask for (fbdev, DRM, or auto's choice: drm_pick.c's
- * cam_display_use_drm) for a w x h frame: 0, or -1 after a message. */
-static int display_open(cam_fb_t *fb, const cam_opts_t *o, int w, int h)
-{
-    char found[32];
-    const char *card = o->drm_card;
-    int connected = 0;
-    if (o->display == CAM_DISPLAY_AUTO && !o->fb_given) {
-        card = cam_drm_find(found, sizeof found);
-        connected = card != NULL;
-    }
-    if (cam_display_use_drm(o, connected))
-        return cam_drm_open(fb, card, o->drm_w, o->drm_h, o->drm_format, o->quiet);
-    if (cam_fb_open(fb, o->fb, w, h))
-        return -1;
-    snprintf(fb->path, sizeof fb->path, "%s", o->fb);
-    return 0;
-}
-
 static int dump_fb(cam_t *c)
 {
     int fd = open(c->o.dump_fb, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -551,7 +532,7 @@ int main(int argc, char **argv)
         status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
         goto out;
     }
-    if (display_open(&c.fb, &c.o, c.cap.width, c.cap.height)) {
+    if (cam_display_open(&c.fb, &c.o, c.cap.width, c.cap.height)) {
         status = CAM_EXIT_DISPLAY;
         goto out;
     }
@@ -588,10 +569,8 @@ int main(int argc, char **argv)
                 cam_format_name(c.o.format), (unsigned)c.cap.bytesperline, (unsigned)c.cap.sizeimage,
                 c.cap.nbufs, CAM_PROG, c.fb.path, c.fb.id, c.fb.xres, c.fb.yres,
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
-                c.fb.drm          ? "two dumb buffers flipped on the vertical blank"
-                : c.fb.pages == 2 ? "double-buffered"
-                                  : "single-buffered",
-                c.place.dst_x, c.place.dst_y, c.place.w, c.place.h, c.place.src_x, c.place.src_y);
+                cam_fb_buffering(&c.fb), c.place.dst_x, c.place.dst_y, c.place.w, c.place.h, c.place.src_x,
+                c.place.src_y);
     status = run(&c);
     if (c.fb.drm && !c.o.quiet)
         fprintf(stderr, "%s: %ld page flips (drmModePageFlip), each drawn after the last one's event\n",
