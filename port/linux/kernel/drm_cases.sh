@@ -6,7 +6,7 @@
 # the last or the one before the last frame recorded when it was stopped
 # (the last one may still be being drawn in the other buffer): never a
 # frame half-drawn. The CRTC must be the one found after every way out.
-drm_cases_n=22  # the cases drm_checks counts, run or skipped
+drm_cases_n=23  # the cases drm_checks counts, run or skipped
 drm_off=""
 drm_guest() { # root: drmgrab and drm_init.sh into the initramfs; sets drm_off
     if ! grep -aq drmModePageFlip "$B/linux/bloom_cam.static"; then
@@ -45,12 +45,32 @@ drm_grabs() {
         differ="frames $((n - 1)) and $n differ"
         cmp -s "$work/sim/f$(printf %04d $((n - 2))).ppm" "$work/sim/f$(printf %04d $((n - 1))).ppm" 2>/dev/null &&
             differ="frames $((n - 1)) and $n are the same"
+        [ -z "$m" ] || [ "$k" != 1 ] || drm_ctl="$c $k $pitch $m $at"  # for the negative control
         if [ -n "$m" ]; then
             ok "$c grab $k: fb $fbid ${sw}x$sh ${bpp} bpp = bloom_sim's frame $m ($n recorded; $differ): $res"
         else
             bad "$c grab $k: fb $fbid ${sw}x$sh matches neither frame $n nor $((n - 1)) of bloom_sim: $res"
         fi
     done
+}
+# negative control: drm-32's first grab with the lowest bit of one pixel
+# of the frame flipped (its centre's blue) must no longer match
+drm_ctl=""
+drm_negative() {
+    set -- $drm_ctl
+    if [ $# = 6 ]; then
+        at=$(( ($6 + 90) * $3 + ($5 + 160) * 4 ))
+        v=$(od -An -tu1 -j "$at" -N 1 "$r/$1.g$2" | tr -d ' ')
+        cp "$r/$1.g$2" "$work/flip.g" &&
+            printf "\\$(printf %03o $((v ^ 1)))" | dd of="$work/flip.g" bs=1 seek="$at" conv=notrunc 2>/dev/null
+        p=$work/sim/f$(printf %04d $(($4 - 1))).ppm
+        if ! cmp -s "$work/flip.g" "$r/$1.g$2" && ! "$work/fbcmp" "$work/flip.g" xrgb8888 320 "$p" "$3" "$5" "$6" \
+            > "$work/flip.log" 2>&1 && grep -q '^fbcmp: 1 pixels differ$' "$work/flip.log"; then
+            ok "negative control: one pixel of $1's grab $2 changed, fbcmp finds it ($(head -n 1 "$work/flip.log"))"
+            return
+        fi
+    fi
+    bad "negative control: a changed pixel of drm-32's grab was not found (or no grab matched: '$drm_ctl')"
 }
 drm_restored() { # name what: the CRTC after = the one before (held by drmgrab, or the console's)
     c=$1; t=$r/$c.txt
@@ -79,6 +99,7 @@ drm_checks() {
         bad "drm-32: the VT not graphics during, text after"; grep '^vt' "$r/drm-32.txt" | sed 's/^/       /'
     fi
     fault_check drm-32 0 "bloom_cam: --vt /dev/tty0: graphics mode while drawing"
+    drm_negative
     drm_grabs drm-32-t2 xrgb8888
     drm_restored drm-32-t2 "after its frames"
     if grep -q '^grab 1: .* geo 640 480 ' "$r/drm-32-t2.txt" && grep -q ', mode 640x480 640x480@' "$r/drm-32-t2.txt"; then

@@ -14,7 +14,7 @@
 drm_by_driver() { for d in /sys/class/drm/card[0-9]*; do
     [ "$(basename "$(readlink "$d/device/driver")")" = "$1" ] && { echo "/dev/dri/${d##*/}"; return; }; done; }
 bochs=$(drm_by_driver bochs-drm); cirrus=$(drm_by_driver cirrus)
-log "drm: bochs-drm $bochs, cirrus $cirrus; $(ls /dev/dri 2>&1 | tr '\n' ' ')"
+log "drm: bochs-drm $bochs, cirrus $cirrus; $(ls /dev/dri 2>&1 | tr '\n' ' ')at $(cut -d' ' -f1 /proc/uptime) s"
 /vctl "$vid" "Horizontal Movement" 0 2>>/out/guest.log  # each frame differs from the last
 # name card hold(WxH|-) end(TERM|exit) bloom_cam-options...
 drmcase() {
@@ -53,7 +53,7 @@ drmcase() {
     echo "after: $(/drmgrab "$card" crtc 2>&1 | head -n 1)" >> "$t"
     echo "vt after: $(/vtmode /dev/tty0 2>&1)" >> "$t"
     [ -z "$hpid" ] || { kill -TERM $hpid; wait $hpid; }
-    log "$dn: $(grep '^exit' "$t"), $(grep -c '^grab' "$t") grabs"
+    log "$dn: $(grep '^exit' "$t"), $(grep -c '^grab' "$t") grabs, at $(cut -d' ' -f1 /proc/uptime) s"
 }
 if [ -n "$bochs" ]; then
     # the connector's preferred mode, row by row, the VT in graphics mode, stopped by SIGTERM
@@ -75,3 +75,4 @@ if [ -n "$bochs" ]; then
 fi
 [ -z "$cirrus" ] || drmcase drm-16 "$cirrus" 640x480 TERM --threads 1 --drm-format rgb565 --drm-mode 640x480 --vt off
 /vctl "$vid" "Horizontal Movement" 3 2>>/out/guest.log
+log "drm: done at $(cut -d' ' -f1 /proc/uptime) s"
