@@ -59,7 +59,7 @@ if [ -n "$bochs" ]; then
     # the connector's preferred mode, row by row, the VT in graphics mode, stopped by SIGTERM
     drmcase drm-32 "$bochs" - TERM --threads 1
     # --drm-mode, on two threads, to the end of its frames
-    drmcase drm-32-t2 "$bochs" 800x600 exit --threads 2 --drm-mode 640x480 --frames 30 --vt off
+    drmcase drm-32-t2 "$bochs" 800x600 exit --threads 2 --drm-mode 640x480 --frames 90 --vt off
     # refused: a mode the connector lacks; RGB565, which bochs cannot scan out
     /bloom_cam --device "$vid" --display drm --drm-card "$bochs" --size "$SIZE" --frames 3 \
         --drm-mode 123x45 > /out/drm-nomode.txt 2>&1
