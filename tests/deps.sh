@@ -18,6 +18,8 @@ command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 [ -d /usr/include/OpenEXR ] || need="$need libopenexr-dev"
 # the Linux camera tool's GPIO module (libgpiod v1 on bookworm)
 [ -f /usr/include/gpiod.h ] || need="$need libgpiod-dev"
+# its DRM/KMS output (libdrm; libdrm.a for the static build of make test-linux)
+[ -f /usr/include/xf86drmMode.h ] || need="$need libdrm-dev"
 # the GStreamer element (port/gstreamer, make test-gst): headers, gstcheck,
 # gst-inspect-1.0, and appsrc/appsink/videotestsrc/videoconvert
 [ -f /usr/include/gstreamer-1.0/gst/check/gstcheck.h ] || need="$need libgstreamer1.0-dev"

@@ -3,6 +3,7 @@
  *
  * Modules: cam_opts.c (command line), cam_conv.c (row conversion, pure
  * framebuffer logic), cam_aux.c (the --aux plane of the presets), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
+ * drm.c (DRM/KMS output, the choice of display), drm_pick.c (its pure rules),
  * main.c (frame loop, signals, statistics, recording), cam_mt.c (whole
  * frames on threads, --threads N > 1). Everything is allocated before the
  * first frame; the frame loop allocates nothing. */
@@ -44,6 +45,7 @@ enum cam_pixfmt {
     CAM_FMT_COUNT
 };
 enum cam_mode { CAM_MODE_BLOOM = 0, CAM_MODE_OFF, CAM_MODE_BLOOM_ONLY, CAM_MODE_COUNT };
+enum cam_display { CAM_DISPLAY_AUTO = 0, CAM_DISPLAY_FBDEV, CAM_DISPLAY_DRM };
 
 typedef struct {
     char chip[64]; /* "gpiochip0", "0", or a chip label */
@@ -81,6 +83,11 @@ typedef struct {
     const char *record;         /* --record FILE */
     const char *dump_fb;        /* --dump-fb FILE: the last frame shown, as drawn */
     cam_gpio_spec_t gpio_frame, gpio_button;
+    enum cam_display display;  /* --display drm|fbdev|auto (default auto: cam_display_use_drm) */
+    int fb_given;              /* --fb was given: auto means that framebuffer */
+    const char *drm_card;      /* --drm-card PATH; NULL: the first /dev/dri/card* connected */
+    int drm_w, drm_h;          /* --drm-mode WxH; 0: the connector's preferred mode */
+    bloom_format_t drm_format; /* --drm-format; 0 (auto): XRGB8888, else RGB565 */
 } cam_opts_t;
 
 /* Parse argv into o (defaults first). Returns 0 to run, 1 when help was
@@ -265,13 +272,16 @@ typedef struct {
     int vsync;                          /* FBIO_WAITFORVSYNC before each pan (1 until it fails) */
     struct fb_var_screeninfo saved_var; /* as found */
     char id[17];
+    struct cam_drm *drm; /* the DRM output (drm.c), NULL for the fbdev */
+    char path[32];       /* what was opened (the fbdev, or the DRM card) */
 } cam_fb_t;
 
 /* path "none": an off-screen XRGB8888 surface of w x h (for measuring). */
 int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h);
-uint8_t *cam_fb_draw_page(cam_fb_t *fb); /* first byte of the page to draw */
-int cam_fb_show(cam_fb_t *fb);           /* pan to the page just drawn */
-void cam_fb_close(cam_fb_t *fb);         /* restore pan and var, unmap, close */
+uint8_t *cam_fb_draw_page(cam_fb_t *fb);          /* first byte of the page to draw */
+int cam_fb_show(cam_fb_t *fb);                    /* pan to the page just drawn */
+void cam_fb_close(cam_fb_t *fb);                  /* restore pan and var, unmap, close */
+const char *cam_fb_buffering(const cam_fb_t *fb); /* "double-buffered", ... (the startup line) */
 
 /* The console's VT while drawing (--vt, default /dev/tty0: the VT in the
  * foreground): KD_GRAPHICS, so that fbcon's cursor, kernel messages and a
@@ -285,6 +295,52 @@ typedef struct {
 } cam_vt_t;
 void cam_vt_graphics(cam_vt_t *vt, const char *path, int quiet);
 void cam_vt_restore(cam_vt_t *vt);
+
+/* ---- DRM/KMS (drm.c; the pure rules in drm_pick.c) ------------------------
+ * The screen is a cam_fb_t either way: cam_display_open fills it from a
+ * DRM device (fb->drm set: two dumb buffers, flipped on the vertical blank)
+ * or the fbdev, and cam_fb_draw_page / cam_fb_show / cam_fb_close go to
+ * the one opened. */
+struct cam_drm;
+extern const int cam_drm_available; /* 0 when built without libdrm (drm_pick.c) */
+/* The first /dev/dri/cardN with a connected connector, written to path;
+ * NULL when none (or built without libdrm). */
+const char *cam_drm_find(char *path, size_t len);
+int cam_drm_open(cam_fb_t *fb, const char *card, int mode_w, int mode_h, bloom_format_t fmt, int quiet);
+uint8_t *cam_drm_draw_page(cam_fb_t *fb); /* NULL when the last flip never completed */
+int cam_drm_show(cam_fb_t *fb);
+void cam_drm_close(cam_fb_t *fb);
+long cam_drm_flips(const cam_fb_t *fb);
+
+/* A connector's mode, as far as the choice needs it. */
+typedef struct {
+    int w, h, refresh, preferred;
+} cam_drm_mode_t;
+/* The mode to set: with want_w > 0 the first of that size (the preferred
+ * one if it is that size, else the highest refresh); without, the
+ * preferred, else the first listed. The index, or -1 (no mode of that size). */
+int cam_drm_pick_mode(const cam_drm_mode_t *m, int n, int want_w, int want_h);
+/* DRM fourccs (drm_fourcc.h's values, spelt here so the rules need no libdrm). */
+#define CAM_FOURCC(a, b, c, d)                                                                               \
+    ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
+#define CAM_DRM_XRGB8888 CAM_FOURCC('X', 'R', '2', '4')
+#define CAM_DRM_RGB565 CAM_FOURCC('R', 'G', '1', '6')
+/* The formats to try, best first, of those the plane offers (fmts): want
+ * (0: XRGB8888 then RGB565) when offered. The count written to out (0..2). */
+int cam_drm_pick_formats(const uint32_t *fmts, int n, bloom_format_t want, bloom_format_t out[2]);
+/* Auto's rule: DRM with --display drm, fbdev with --display fbdev; auto
+ * takes the fbdev when --fb was given, else DRM when a card has a connected
+ * connector (drm_connected), else the fbdev. 1 DRM, 0 fbdev. */
+int cam_display_use_drm(const cam_opts_t *o, int drm_connected);
+/* The display's options (cam_parse_opts): 0 when name is not one of them,
+ * 1 when taken, -1 on an error (err). */
+int cam_display_opt(cam_opts_t *o, const char *name, const char *v, char *err, size_t errlen, int *drm_given);
+/* Them together, after the rest: --drm-* ask for DRM (auto becomes drm), and
+ * --fb for the fbdev. 0, or -1 on an error (err). */
+int cam_display_check(cam_opts_t *o, int drm_given, char *err, size_t errlen);
+/* The screen the options ask for (fbdev, DRM, or auto's choice by
+ * cam_display_use_drm) for a w x h frame: 0, or -1 after a message. */
+int cam_display_open(cam_fb_t *fb, const cam_opts_t *o, int w, int h);
 
 /* ---- GPIO (gpio.c) ------------------------------------------------------- */
 typedef struct cam_gpio cam_gpio_t;

@@ -14,6 +14,12 @@ void cam_usage(void *stream)
 {
     fputs("usage: bloom_cam [options]\n"
           "  --device DEV          V4L2 capture device (default /dev/video0)\n"
+          "  --display D           drm | fbdev | auto (default auto: the fbdev when --fb is\n"
+          "                        given, else DRM when a /dev/dri/card* has a connected\n"
+          "                        connector, else the fbdev)\n"
+          "  --drm-card CARD       the DRM device (default: the first with a connected connector)\n"
+          "  --drm-mode WxH        the mode to set (default: the connector's preferred mode)\n"
+          "  --drm-format F        auto | xrgb8888 | rgb565 (auto: XRGB8888 if the plane takes it)\n"
           "  --fb FB               framebuffer (default /dev/fb0); 'none' draws off-screen\n"
           "  --vt TTY|off          the console's VT, kept in graphics mode while drawing so\n"
           "                        that its text does not draw over the video (default\n"
@@ -156,7 +162,10 @@ static const char *const with_value[] = {
     "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
     "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
     "--aux",       "--tint",    "--weights", "--radius",   "--threads", "--reconnect",   "--latest",
-    "--debounce",  "--fps",     NULL};
+    "--debounce",  "--fps",     "--vt",      NULL};
+
+/* The display's options (drm_pick.c), apart from the table above. */
+static const char *const display_value[] = {"--display", "--drm-card", "--drm-mode", "--drm-format", NULL};
 
 /* "a,b,c": up to max values in 0..1 to Q16.16; the count, or -1. */
 static int parse_list01(const char *s, uint32_t *out, int max)
@@ -282,6 +291,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     long radius = 0;
     bloom_config_t gv; /* values given */
     memset(&gv, 0, sizeof gv);
+    int drm_given = 0;
 
     for (int i = 1; i < argc; i++) {
         char name[32];
@@ -309,6 +319,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         int known = 0;
         for (int k = 0; with_value[k]; k++)
             known |= !strcmp(name, with_value[k]);
+        for (int k = 0; display_value[k]; k++)
+            known |= !strcmp(name, display_value[k]);
         if (!known)
             return fail(err, errlen, "unknown option '%s'", a);
         if (eq)
@@ -319,10 +331,16 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             return fail(err, errlen, "%s needs a value", name);
 
         long l;
+        const int dr = cam_display_opt(o, name, v, err, errlen, &drm_given);
+        if (dr < 0)
+            return -1;
+        if (dr)
+            continue;
         if (!strcmp(name, "--device")) {
             o->device = v;
         } else if (!strcmp(name, "--fb")) {
             o->fb = v;
+            o->fb_given = 1;
         } else if (!strcmp(name, "--size")) {
             if (parse_size(v, &o->width, &o->height))
                 return fail(err, errlen, "--size: '%s' is not WxH (2..16384 x 1..16384)", v);
@@ -457,6 +475,8 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             o->dump_fb = v;
         }
     }
+    if (cam_display_check(o, drm_given, err, errlen))
+        return -1;
     /* the preset's defaults, then what was given */
     const char *pn = bloom_preset_name(o->preset);
     for (size_t k = 0; k < sizeof param_opt / sizeof param_opt[0]; k++)

@@ -166,12 +166,16 @@ int cam_fb_open(cam_fb_t *fb, const char *path, int w, int h)
 
 uint8_t *cam_fb_draw_page(cam_fb_t *fb)
 {
+    if (fb->drm)
+        return cam_drm_draw_page(fb);
     size_t y0 = fb->pages == 2 ? (size_t)fb->page * (size_t)fb->yres : fb->saved_var.yoffset;
     return fb->mem + y0 * (size_t)fb->line_length + (size_t)fb->saved_var.xoffset * fb->bpp;
 }
 
 int cam_fb_show(cam_fb_t *fb)
 {
+    if (fb->drm)
+        return cam_drm_show(fb);
     if (fb->pages != 2)
         return 0;
     /* the new page from the next frame on, not half-way down this one; a
@@ -193,8 +197,19 @@ int cam_fb_show(cam_fb_t *fb)
     return 0;
 }
 
+const char *cam_fb_buffering(const cam_fb_t *fb)
+{
+    return fb->drm          ? "two dumb buffers flipped on the vertical blank"
+           : fb->pages == 2 ? "double-buffered"
+                            : "single-buffered";
+}
+
 void cam_fb_close(cam_fb_t *fb)
 {
+    if (fb->drm) {
+        cam_drm_close(fb);
+        return;
+    }
     if (fb->fd < 0) {
         free(fb->mem); /* the off-screen surface, or NULL */
         fb->mem = NULL;

@@ -416,6 +416,11 @@ static int run(cam_t *c)
         }
 
         uint8_t *page = cam_fb_draw_page(&c->fb);
+        if (!page) { /* DRM: the last flip never completed */
+            cam_v4l2_requeue(&c->cap, &f);
+            status = CAM_EXIT_DISPLAY;
+            break;
+        }
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
         int pr = c->threads > 1
@@ -527,7 +532,7 @@ int main(int argc, char **argv)
         status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
         goto out;
     }
-    if (cam_fb_open(&c.fb, c.o.fb, c.cap.width, c.cap.height)) {
+    if (cam_display_open(&c.fb, &c.o, c.cap.width, c.cap.height)) {
         status = CAM_EXIT_DISPLAY;
         goto out;
     }
@@ -563,12 +568,15 @@ int main(int argc, char **argv)
                 "%s: %s (%s, %s): %dx%d %s\n"
                 "%s: %s (%s): %dx%d %s, line_length %d, %s; frame at %d,%d, %dx%d shown from %d,%d\n",
                 CAM_PROG, c.o.device, c.cap.driver, c.cap.card, c.cap.width, c.cap.height, desc, CAM_PROG,
-                c.o.fb, c.fb.id, c.fb.xres, c.fb.yres,
+                c.fb.path, c.fb.id, c.fb.xres, c.fb.yres,
                 c.fb.format == BLOOM_FMT_RGB565 ? "RGB565" : "XRGB8888", c.fb.line_length,
-                c.fb.pages == 2 ? "double-buffered" : "single-buffered", c.place.dst_x, c.place.dst_y,
-                c.place.w, c.place.h, c.place.src_x, c.place.src_y);
+                cam_fb_buffering(&c.fb), c.place.dst_x, c.place.dst_y, c.place.w, c.place.h, c.place.src_x,
+                c.place.src_y);
     status = run(&c);
-    if (c.fb.pages == 2 && !c.o.quiet)
+    if (c.fb.drm && !c.o.quiet)
+        fprintf(stderr, "%s: %ld page flips (drmModePageFlip), each drawn after the last one's event\n",
+                CAM_PROG, cam_drm_flips(&c.fb));
+    else if (c.fb.pages == 2 && !c.o.quiet)
         fprintf(stderr, "%s: pages shown %s\n", CAM_PROG,
                 c.fb.vsync ? "after the vertical blank (FBIO_WAITFORVSYNC)"
                            : "without waiting for the vertical blank (the driver refused FBIO_WAITFORVSYNC)");

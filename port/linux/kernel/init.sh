@@ -216,6 +216,8 @@ if [ "$GPIO" = 1 ]; then
     button button-t2 --threads 2
 fi
 
+# DRM/KMS (drm_init.sh): bochs-drm and cirrus, the screen read back while running
+[ "$DRM" != 1 ] || . /drm_init.sh
 # faults: a stop signal ends the run cleanly (exit 0, the screen restored);
 # a bad frame is skipped and counted; a lost device is opened again
 # (--reconnect) and the run goes on, or ends with exit 3 when it does not

@@ -45,7 +45,7 @@
 B=${B:-build}
 PIN=6.1.0-56-amd64
 KVER=${LINUX_TEST_KVER:-$PIN}
-TIMEOUT=${LINUX_TEST_TIMEOUT:-300}
+TIMEOUT=${LINUX_TEST_TIMEOUT:-480}
 SMP=${LINUX_TEST_SMP:-2}
 SIZE=320x240
 FRAMES=3
@@ -72,6 +72,7 @@ closing() { echo "$pass passed, $fail failed, $nskip skipped"; [ "$fail" -eq 0 ]
 whole() { need "(the whole test)" "$1"; closing; }     # nothing can run
 die() { bad "test-linux: $1"; closing; }                # a step that cannot fail did
 . "$here/gst_cases.sh"
+. "$here/drm_cases.sh"
 
 QEMU=${LINUX_TEST_QEMU:-qemu-system-x86_64}
 static_busybox() { # the path of a statically linked busybox, or nothing
@@ -183,7 +184,7 @@ fetch_image() {
 resolve_image || whole "$why"
 fetch_image || { refresh "$why" && resolve_image && fetch_image; } || whole "$why"
 moddir=$kroot/lib/modules/$KVER/kernel
-for m in vivid vfb bochs; do
+for m in vivid vfb bochs cirrus; do
     [ -n "$(find "$moddir" -name "$m.ko*" | head -n 1)" ] || whole "$KVER has no $m module"
 done
 
@@ -296,7 +297,7 @@ add_mod() { # dependencies first, each once (n and f set again after the recursi
                  *.ko.zst) zstd -qdc "$f" > "$work/root/modules/$n.ko";; esac
     order="$order $n"
 }
-for m in virtio_pci virtio_blk vivid vfb bochs; do add_mod $m || die "$why"; done
+for m in virtio_pci virtio_blk vivid vfb bochs cirrus; do add_mod $m || die "$why"; done
 [ -n "$gpio_off" ] || add_mod gpio-sim || die "$why"
 echo "$order" | tr ' ' '\n' | grep . > "$work/root/modules.order"
 # module options (insmod does not read them from the kernel command line, so
@@ -329,14 +330,16 @@ fi
 gpio_on=1; [ -z "$gpio_off" ] || gpio_on=0
 gst_guest "$work/root"
 gst_on=1; [ -z "$gst_off$gst_bad" ] || gst_on=0
-{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB' GST=$gst_on GSIZE=$GST_SIZE";
+drm_guest "$work/root"
+drm_on=1; [ -z "$drm_off" ] || drm_on=0
+{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB' GST=$gst_on GSIZE=$GST_SIZE DRM=$drm_on";
   sed 1d "$here/init.sh"; } > "$work/root/init"
 chmod +x "$work/root/init" "$work/root/bin/busybox"
 (cd "$work/root" && find . | "$bb" cpio -o -H newc 2>/dev/null) > "$work/initrd.cpio" || die "cannot write the initramfs"
-dd if=/dev/zero of="$work/disk.img" bs=1M count=64 2>/dev/null
+dd if=/dev/zero of="$work/disk.img" bs=1M count=128 2>/dev/null
 
 # ---- boot ------------------------------------------------------------------
-timeout "$TIMEOUT" "$QEMU" -accel tcg -cpu max -m 512M -smp "$SMP" -nographic -vga std -nic none \
+timeout "$TIMEOUT" "$QEMU" -accel tcg -cpu max -m 512M -smp "$SMP" -nographic -vga std -device cirrus-vga -nic none \
     -no-reboot -kernel "$kroot/boot/vmlinuz-$KVER" -initrd "$work/initrd.cpio" \
     -append "console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init" \
     -device isa-debug-exit,iobase=0xf4,iosize=0x04 \
@@ -578,6 +581,7 @@ if grep -q '^exit 0$' "$r/speed.txt" 2>/dev/null && grep -q '^exit 0$' "$r/speed
 else
     bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" "$r/speed-t1.txt" 2>/dev/null
 fi
+drm_checks  # drm_cases.sh
 # the count port/linux/README.md states ("74 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
 want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/port/linux/README.md" | head -n 1)
