@@ -26,7 +26,8 @@
 #endif
 
 typedef struct {
-    int32_t preset, levels, width, height, strip; /* strip: columns per strip, 0 = whole frame */
+    /* levels 0 = the preset's own; strip = columns per strip, 0 = whole frame */
+    int32_t preset, levels, width, height, strip;
 } fw_cost_job_t;
 
 /* volatile: the values are read at run time, not folded from the
@@ -63,7 +64,8 @@ static bloom_status_t config(bloom_config_t *c, const fw_cost_job_t *j, int s)
         if (st != BLOOM_OK)
             return st;
     }
-    c->levels = j->levels;
+    if (j->levels > 0) /* 0: the preset's own level count */
+        c->levels = j->levels;
     if (j->strip > 0 && j->strip < j->width) {
         c->tile_x = s * j->strip;
         c->tile_w = j->width - c->tile_x < j->strip ? j->width - c->tile_x : j->strip;
@@ -103,11 +105,13 @@ int fw_cost_app(const fw_platform_t *pf)
         }
 
     const int strips = j.strip > 0 && j.strip < j.width ? (j.width + j.strip - 1) / j.strip : 1;
+    int levels = 0;
     for (int s = 0; s < strips; s++) {
         bloom_config_t c;
         bloom_t *b;
         uint32_t stack = 0;
         bloom_status_t st = config(&c, &j, s);
+        levels = c.levels;
         if (st == BLOOM_OK)
             st = pf->init(&b, cost_ws, sizeof cost_ws, &c, &stack);
         if (st == BLOOM_OK && c.aux_fmt != BLOOM_AUX_NONE)
@@ -125,7 +129,7 @@ int fw_cost_app(const fw_platform_t *pf)
     fw_str(&l, "frame cost preset ");
     fw_dec(&l, (uint32_t)j.preset);
     fw_str(&l, " levels ");
-    fw_dec(&l, (uint32_t)j.levels);
+    fw_dec(&l, (uint32_t)levels);
     fw_str(&l, " ");
     fw_dec(&l, (uint32_t)j.width);
     fw_str(&l, "x");
