@@ -7,7 +7,11 @@
 #   make target-cost     regenerate sim/docs/targets.md (installs
 #                        python3-unicorn, python3-capstone, qemu-user and
 #                        the cross compilers if missing: port/mcu/cost_deps.sh)
+#   make target-cost-page  rewrite the page from the last run's results
+#                        ($(B)/cost/results.json), running nothing
 #   make cost-build      only build $(B)/cost/
+# COST_JOBS=N runs N emulations at once (935 s for the whole page with
+# COST_JOBS=2 on this 2-core machine, shared).
 #
 # Sample widths: COST_WIDTHS lists the row sample widths costed, each built
 # with COST_CFLAGS_<width> added to the core's and the bench's flags (today
@@ -23,7 +27,7 @@ COST_FW := fw_main startup semihost fw_app fw_cost
 COST_A_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgio.c
 COST_HDR := $(MCU_HDR) $(MCU_CORE_HDR)
 
-.PHONY: target-cost cost-build cost-selftest
+.PHONY: target-cost target-cost-page cost-build cost-selftest
 
 # $(1) width, $(2) cpu, $(3) build: the bench firmware, core and firmware
 # objects compiled as mcu.mk compiles the firmware's, plus the width's flags.
@@ -73,6 +77,9 @@ target-cost:
 	@$(MAKE) --no-print-directory cost-build
 	@/usr/bin/python3 sim/bench/targets.py --build $(COST_B) --widths '$(COST_WIDTHS)' \
 	  --builds '$(COST_MCU_BUILDS)' --archs '$(COST_A_ARCHS)' --out sim/docs/targets.md
+
+target-cost-page:
+	@/usr/bin/python3 sim/bench/targets.py --build $(COST_B) --page-only --out sim/docs/targets.md
 
 # The counters checked on hand-written programs of known counts (run by
 # make test-runner through tests/selftest/selftest.sh).
