@@ -26,6 +26,7 @@ extension's packed and saturating arithmetic, SEL, USAD8...), it, other.
 An instruction inside an IT block is counted whether or not its condition
 passes (it is issued either way).
 """
+import bisect
 import struct
 import sys
 
@@ -55,17 +56,19 @@ def read_elf(path):
         if p_type == 1:
             segs.append((p_vaddr, p_paddr, data[p_off:p_off + p_filesz], p_memsz))
     secs = [struct.unpack_from("<IIIIIIIIII", data, e_shoff + i * e_shentsize) for i in range(e_shnum)]
-    syms = {}
+    syms, funcs = {}, []
     for s in secs:
         if s[1] != 2:  # SHT_SYMTAB
             continue
         strtab = secs[s[6]]
         for off in range(s[4], s[4] + s[5], 16):
-            name, value, _size, info = struct.unpack_from("<IIIB", data, off)
+            name, value, size, info = struct.unpack_from("<IIIB", data, off)
             if name and (info & 15) in (1, 2):  # object, function
                 end = data.index(b"\0", strtab[4] + name)
                 syms[data[strtab[4] + name:end].decode()] = value
-    return segs, syms
+                if info & 15 == 2 and size:
+                    funcs.append((value & ~1, size, data[strtab[4] + name:end].decode()))
+    return segs, syms, sorted(funcs)
 
 
 # ---- decoding and classes --------------------------------------------------
@@ -209,7 +212,8 @@ MODELS = {"m4": m4_block_cycles, "m7": m7_block_cycles}
 # ---- the run -----------------------------------------------------------------
 class Run:
     def __init__(self, elf, cpu, regions=("bloom_init", "bloom_process"), method="block", patch=None):
-        self.segs, self.syms = read_elf(elf)
+        self.segs, self.syms, self.funcs = read_elf(elf)
+        self.func_starts = [f[0] for f in self.funcs]
         self.cpu, self.method = cpu, method
         self.entry = {}
         for r in regions:
@@ -315,6 +319,21 @@ class Run:
         if k not in self.blocks:
             self.blocks[k] = decode(bytes(self.uc.mem_read(addr, size)), addr)
         return self.blocks[k]
+
+    def function_of(self, addr):
+        i = bisect.bisect_right(self.func_starts, addr) - 1
+        if i >= 0 and addr < self.funcs[i][0] + self.funcs[i][1]:
+            return self.funcs[i][2]
+        return "?"
+
+    def by_function(self, counts):
+        """Instructions of one call's counts per function (blocks never
+        straddle functions)."""
+        f = {}
+        for ((addr, size), _nxt), n in counts.items():
+            name = self.function_of(addr)
+            f[name] = f.get(name, 0) + n * len(self._decoded(addr, size))
+        return f
 
     def tally(self, counts):
         """Classes and cycle bounds of one call's counts."""

@@ -61,7 +61,7 @@ expect "check_layout.sh catches planted breaks, no false ones" 'B=$B sh tests/se
 skip=0
 if make -s cost-selftest B="$B" >"$sb/cost.out" 2>&1; then
     if grep -q '^skipped:' "$sb/cost.out"; then
-        skip=$((skip + 1)); sed 's/^/  /' "$sb/cost.out" | grep 'skipped:'
+        skip=$((skip + 1)); grep '^skipped:' "$sb/cost.out" # named, as tests/verdict.sh wants
     else
         pass=$((pass + 1)); echo "  ok   the cost counters count known programs exactly ($(tail -n 1 "$sb/cost.out"))"
     fi
