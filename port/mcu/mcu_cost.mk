@@ -10,8 +10,8 @@
 #   make target-cost-page  rewrite the page from the last run's results
 #                        ($(B)/cost/results.json), running nothing
 #   make cost-build      only build $(B)/cost/
-# COST_JOBS=N runs N emulations at once (935 s for the whole page with
-# COST_JOBS=2 on this 2-core machine, shared).
+# COST_JOBS=N runs N emulations at once (500 to 940 s for the whole page
+# with COST_JOBS=2 on this 2-core machine, shared with other work).
 #
 # Sample widths: COST_WIDTHS lists the row sample widths costed, each built
 # with COST_CFLAGS_<width> added to the core's and the bench's flags (today

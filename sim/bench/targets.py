@@ -60,6 +60,12 @@ def m_run(elf, cpu, job):
                 tot[k] = tot.get(k, 0) + v
         res[name] = tot
         res[name + "_calls"] = len(calls)
+        if name == "bloom_process":
+            fn = {}
+            for c in calls:
+                for k, v in r.by_function(c).items():
+                    fn[k] = fn.get(k, 0) + v
+            res["functions"] = fn
     return res
 
 
@@ -290,7 +296,17 @@ def page(a, mres, ares, secs):
             if job[6] == label:
                 o.append(mrow(w, cpu, job, r, name(job)))
         o.append("")
-    o += ["## Cortex-M: `bloom_init`", "",
+    o += ["## Cortex-M: where the instructions go", "",
+          "`bloom_process` by function (its callees, each counted alone; inlined code is its caller's), "
+          "Cortex-M4, full build, 320×240, 5 levels: the default preset and cod, the dearest.", "",
+          "| preset | function | instructions | % of the frame | / pixel |", "|---|---|---|---|---|"]
+    for (w, cpu, job), r in mres.items():
+        if cpu == "m4" and job[0] == "full" and job[1] in (0, 5) and job[2] in (5, 0) and "functions" in r:
+            fn, tot = r["functions"], r["bloom_process"]["insns"]
+            for name, n in sorted(fn.items(), key=lambda kv: -kv[1])[:8]:
+                o.append(f"| {PRESETS[job[1]]} ({w}-bit) | `{name}` | {fmt(n)} | {100.0 * n / tot:.1f} | "
+                         f"{f1(n / (job[3] * job[4]))} |")
+    o += ["", "## Cortex-M: `bloom_init`", "",
           "Instructions of one `bloom_init` (its dry run plans the engine in the workspace), full build, "
           "default preset, 320×240; once per engine, not per frame (except in strips).", "",
           "| CPU | samples | levels | instructions | M4/M7 cycles (band) |", "|---|---|---|---|---|"]
