@@ -46,6 +46,10 @@ int fw_app(const fw_platform_t *pf);
  * the same "frame ..." lines. Returns 0 on success. */
 int fw_tiles_app(const fw_platform_t *pf);
 
+/* The cost bench (fw_cost.c, issue 21): one frame of the job the harness
+ * writes into the image (port/mcu/mcu_count.py). Returns 0 on success. */
+int fw_cost_app(const fw_platform_t *pf);
+
 /* A line under construction, for targets without printf. */
 typedef struct {
     char s[120];
