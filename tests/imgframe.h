@@ -26,18 +26,26 @@ static inline frame_t frame_from_img(const img_t *im)
     return f;
 }
 
-/* tests/data/<name> (or $BLOOM_DATA_DIR/<name>) as a frame; 0 (with a
+/* tests/data/<name> (or $BLOOM_DATA_DIR/<name>) decoded; 0 (with a
  * message) if it cannot be read. */
-static inline int imgframe_load(const char *name, frame_t *out)
+static inline int imgframe_read(const char *name, img_t *im)
 {
     const char *dir = getenv("BLOOM_DATA_DIR");
     char path[512], err[512];
-    img_t im;
     snprintf(path, sizeof path, "%s/%s", dir ? dir : "tests/data", name);
-    if (img_read(path, &im, err, sizeof err) != 0) {
+    if (img_read(path, im, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 0;
     }
+    return 1;
+}
+
+/* The same as a frame. */
+static inline int imgframe_load(const char *name, frame_t *out)
+{
+    img_t im;
+    if (!imgframe_read(name, &im))
+        return 0;
     *out = frame_from_img(&im);
     img_free(&im);
     return 1;
@@ -48,16 +56,11 @@ static inline int imgframe_load(const char *name, frame_t *out)
  * not clamp them) and negative ones at 0. 0 if it is not a float image. */
 static inline int imgframe_load_f32(const char *name, double scale, frame_t *out)
 {
-    const char *dir = getenv("BLOOM_DATA_DIR");
-    char path[512], err[512];
     img_t im;
-    snprintf(path, sizeof path, "%s/%s", dir ? dir : "tests/data", name);
-    if (img_read(path, &im, err, sizeof err) != 0) {
-        fprintf(stderr, "%s\n", err);
+    if (!imgframe_read(name, &im))
         return 0;
-    }
     if (!im.f32) {
-        fprintf(stderr, "%s: not a float image\n", path);
+        fprintf(stderr, "%s: not a float image\n", name);
         img_free(&im);
         return 0;
     }

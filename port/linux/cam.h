@@ -93,6 +93,8 @@ typedef struct {
 /* Parse argv into o (defaults first). Returns 0 to run, 1 when help was
  * printed, -1 on an error (message written to err, at most errlen bytes). */
 int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errlen);
+/* Writes a message into err (size errlen); returns -1 (cam_opts.c). */
+int cam_errf(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 void cam_usage(void *stream);
 const char *cam_format_name(enum cam_pixfmt f);
 const char *cam_mode_name(enum cam_mode m);

@@ -12,15 +12,6 @@
 
 #include "cam.h"
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
 static int is_space(int c)
 {
     return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
@@ -58,7 +49,7 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
     *data = NULL;
     FILE *f = fopen(path, "rb");
     if (!f)
-        return fail(err, errlen, "--aux %s: %s", path, strerror(errno));
+        return cam_errf(err, errlen, "--aux %s: %s", path, strerror(errno));
     char m[2];
     long pw = -1, ph = -1, mv = -1;
     /* the magic, then whitespace or a comment */
@@ -71,17 +62,17 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
          mv <= 65535;
     if (!ok) {
         fclose(f);
-        return fail(err, errlen,
-                    "--aux %s: not a binary PGM (P5, maxval 1..65535): bloom_cam reads the aux "
-                    "plane as an 8-bit or 16-bit grey PGM",
-                    path);
+        return cam_errf(err, errlen,
+                        "--aux %s: not a binary PGM (P5, maxval 1..65535): bloom_cam reads the aux "
+                        "plane as an 8-bit or 16-bit grey PGM",
+                        path);
     }
     if (pw != w || ph != h) {
         fclose(f);
-        return fail(err, errlen,
-                    "--aux %s: the plane is %ldx%ld but the capture is %dx%d (the size the "
-                    "driver set with VIDIOC_S_FMT); it must be the same",
-                    path, pw, ph, w, h);
+        return cam_errf(err, errlen,
+                        "--aux %s: the plane is %ldx%ld but the capture is %dx%d (the size the "
+                        "driver set with VIDIOC_S_FMT); it must be the same",
+                        path, pw, ph, w, h);
     }
     const int wide = mv > 255, in_bps = wide ? 2 : 1;
     const size_t n = (size_t)w * (size_t)h;
@@ -94,21 +85,21 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
         const unsigned long long have =
             st.st_size > at ? (unsigned long long)(st.st_size - at) / (unsigned)in_bps : 0;
         fclose(f);
-        return fail(err, errlen, "--aux %s: truncated: %llu of %zu samples", path, have, n);
+        return cam_errf(err, errlen, "--aux %s: truncated: %llu of %zu samples", path, have, n);
     }
     uint8_t *raw = malloc(n * (size_t)in_bps), *out = malloc(n * (size_t)in_bps);
     if (!raw || !out) {
         free(raw);
         free(out);
         fclose(f);
-        return fail(err, errlen, "--aux %s: out of memory", path);
+        return cam_errf(err, errlen, "--aux %s: out of memory", path);
     }
     size_t got = fread(raw, (size_t)in_bps, n, f);
     fclose(f);
     if (got != n) {
         free(raw);
         free(out);
-        return fail(err, errlen, "--aux %s: truncated: %zu of %zu samples", path, got, n);
+        return cam_errf(err, errlen, "--aux %s: truncated: %zu of %zu samples", path, got, n);
     }
     const uint32_t top = wide ? 65535u : 255u;
     for (size_t i = 0; i < n; i++) {
@@ -116,8 +107,8 @@ int cam_aux_load(const char *path, int w, int h, bloom_aux_format_t *fmt, uint8_
         if (c > (uint32_t)mv) {
             free(raw);
             free(out);
-            return fail(err, errlen, "--aux %s: sample %zu is %u, above maxval %ld", path, i, (unsigned)c,
-                        mv);
+            return cam_errf(err, errlen, "--aux %s: sample %zu is %u, above maxval %ld", path, i, (unsigned)c,
+                            mv);
         }
         if ((uint32_t)mv != top)
             c = (c * top + (uint32_t)mv / 2u) / (uint32_t)mv; /* round half up */

@@ -95,7 +95,7 @@ const char *cam_mode_name(enum cam_mode m)
     return "?";
 }
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
+int cam_errf(char *err, size_t errlen, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -313,7 +313,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         }
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
         if (n >= sizeof name)
-            return fail(err, errlen, "unknown option '%s'", a);
+            return cam_errf(err, errlen, "unknown option '%s'", a);
         memcpy(name, a, n);
         name[n] = '\0';
         int known = 0;
@@ -322,13 +322,13 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         for (int k = 0; display_value[k]; k++)
             known |= !strcmp(name, display_value[k]);
         if (!known)
-            return fail(err, errlen, "unknown option '%s'", a);
+            return cam_errf(err, errlen, "unknown option '%s'", a);
         if (eq)
             v = eq + 1;
         else if (i + 1 < argc)
             v = argv[++i];
         else
-            return fail(err, errlen, "%s needs a value", name);
+            return cam_errf(err, errlen, "%s needs a value", name);
 
         long l;
         const int dr = cam_display_opt(o, name, v, err, errlen, &drm_given);
@@ -343,7 +343,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             o->fb_given = 1;
         } else if (!strcmp(name, "--size")) {
             if (parse_size(v, &o->width, &o->height))
-                return fail(err, errlen, "--size: '%s' is not WxH (2..16384 x 1..16384)", v);
+                return cam_errf(err, errlen, "--size: '%s' is not WxH (2..16384 x 1..16384)", v);
         } else if (!strcmp(name, "--format")) {
             int f = !strcasecmp(v, "auto") ? CAM_FMT_AUTO : !strcasecmp(v, "gray") ? CAM_FMT_GREY : -1;
             for (int k = 1; f < 0 && k < CAM_FMT_COUNT; k++) { /* a name, or its fourcc ("RGB3") */
@@ -353,73 +353,74 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
                     f = k;
             }
             if (f < 0)
-                return fail(err, errlen,
-                            "--format: '%s' is not auto, rgb24, yuyv, uyvy, yvyu, nv16, nv61, nv12, nv21, "
-                            "rgb565, grey, nv12m, nv21m, nv16m or nv61m",
-                            v);
+                return cam_errf(
+                    err, errlen,
+                    "--format: '%s' is not auto, rgb24, yuyv, uyvy, yvyu, nv16, nv61, nv12, nv21, "
+                    "rgb565, grey, nv12m, nv21m, nv16m or nv61m",
+                    v);
             o->format = (enum cam_pixfmt)f;
         } else if (!strcmp(name, "--fps")) {
             if (parse_long(v, 1, 1000, &l))
-                return fail(err, errlen, "--fps: '%s' is not 1..1000", v);
+                return cam_errf(err, errlen, "--fps: '%s' is not 1..1000", v);
             o->fps = (int)l;
         } else if (!strcmp(name, "--levels")) {
             if (parse_long(v, 1, BLOOM_MAX_LEVELS, &l))
-                return fail(err, errlen, "--levels: '%s' is not 1..16", v);
+                return cam_errf(err, errlen, "--levels: '%s' is not 1..16", v);
             gv.levels = (int)l;
             given |= G_LEVELS;
         } else if (!strcmp(name, "--threshold")) {
             if (parse_q16(v, 0, 256, &gv.threshold))
-                return fail(err, errlen, "--threshold: '%s' is not 0..256", v);
+                return cam_errf(err, errlen, "--threshold: '%s' is not 0..256", v);
             given |= G_THRESHOLD;
         } else if (!strcmp(name, "--knee")) {
             if (parse_q16(v, 0, 1, &gv.soft_knee))
-                return fail(err, errlen, "--knee: '%s' is not 0..1", v);
+                return cam_errf(err, errlen, "--knee: '%s' is not 0..1", v);
             given |= G_KNEE;
         } else if (!strcmp(name, "--intensity")) {
             if (parse_q16(v, 0, 10, &gv.intensity))
-                return fail(err, errlen, "--intensity: '%s' is not 0..10", v);
+                return cam_errf(err, errlen, "--intensity: '%s' is not 0..10", v);
             given |= G_INTENSITY;
         } else if (!strcmp(name, "--preset")) {
             const int p = bloom_preset_from_name(v);
             char list[128];
             available(list, sizeof list);
             if (p < 0)
-                return fail(err, errlen, "--preset: unknown preset '%s' (this build has: %s)", v, list);
+                return cam_errf(err, errlen, "--preset: unknown preset '%s' (this build has: %s)", v, list);
             if (!bloom_preset_available((bloom_preset_t)p))
-                return fail(err, errlen,
-                            "--preset: '%s' is compiled out of this build (BLOOM_USE_*); this "
-                            "build has: %s",
-                            v, list);
+                return cam_errf(err, errlen,
+                                "--preset: '%s' is compiled out of this build (BLOOM_USE_*); this "
+                                "build has: %s",
+                                v, list);
             o->preset = (bloom_preset_t)p;
         } else if (!strcmp(name, "--strength")) {
             if (parse_q16(v, 0, 16, &gv.p.strength))
-                return fail(err, errlen, "--strength: '%s' is not 0..16", v);
+                return cam_errf(err, errlen, "--strength: '%s' is not 0..16", v);
             given |= G_STRENGTH;
         } else if (!strcmp(name, "--passes")) {
             if (parse_long(v, 1, 8, &l))
-                return fail(err, errlen, "--passes: '%s' is not 1..8", v);
+                return cam_errf(err, errlen, "--passes: '%s' is not 1..8", v);
             gv.p.passes = (int)l;
             given |= G_PASSES;
         } else if (!strcmp(name, "--attenuation") || !strcmp(name, "--max-reduction")) {
             const int att = name[2] == 'a';
             if (parse_q16(v, 0, 1, att ? &gv.p.attenuation : &gv.p.max_reduction))
-                return fail(err, errlen, "%s: '%s' is not 0..1", name, v);
+                return cam_errf(err, errlen, "%s: '%s' is not 0..1", name, v);
             given |= att ? G_ATTENUATION : G_MAX_REDUCTION;
         } else if (!strcmp(name, "--aux")) {
             o->aux = v;
             given |= G_AUX;
         } else if (!strcmp(name, "--tint")) {
             if (parse_list01(v, gv.p.tint, 3) != 3)
-                return fail(err, errlen, "--tint: '%s' is not R,G,B (each 0..1)", v);
+                return cam_errf(err, errlen, "--tint: '%s' is not R,G,B (each 0..1)", v);
             given |= G_TINT;
         } else if (!strcmp(name, "--weights")) {
             nweights = parse_list01(v, gv.p.level_weight, BLOOM_MAX_LEVELS);
             if (nweights < 1)
-                return fail(err, errlen, "--weights: '%s' is not c0,c1,... (1..16 values, each 0..1)", v);
+                return cam_errf(err, errlen, "--weights: '%s' is not c0,c1,... (1..16 values, each 0..1)", v);
             given |= G_WEIGHTS;
         } else if (!strcmp(name, "--radius")) {
             if (parse_long(v, 1, 1L << 20, &radius))
-                return fail(err, errlen, "--radius: '%s' is not 1..1048576 pixels", v);
+                return cam_errf(err, errlen, "--radius: '%s' is not 1..1048576 pixels", v);
             given |= G_RADIUS;
         } else if (!strcmp(name, "--mode")) {
             if (!strcmp(v, "bloom"))
@@ -429,17 +430,17 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             else if (!strcmp(v, "bloom-only"))
                 o->mode = CAM_MODE_BLOOM_ONLY;
             else
-                return fail(err, errlen, "--mode: '%s' is not bloom, off or bloom-only", v);
+                return cam_errf(err, errlen, "--mode: '%s' is not bloom, off or bloom-only", v);
         } else if (!strcmp(name, "--frames")) {
             if (parse_long(v, 0, 2000000000L, &o->frames))
-                return fail(err, errlen, "--frames: '%s' is not a count", v);
+                return cam_errf(err, errlen, "--frames: '%s' is not a count", v);
         } else if (!strcmp(name, "--buffers")) {
             if (parse_long(v, 2, CAM_MAX_BUFFERS, &l))
-                return fail(err, errlen, "--buffers: '%s' is not 2..%d", v, CAM_MAX_BUFFERS);
+                return cam_errf(err, errlen, "--buffers: '%s' is not 2..%d", v, CAM_MAX_BUFFERS);
             o->buffers = (int)l;
         } else if (!strcmp(name, "--timeout")) {
             if (parse_long(v, 1, 3600000L, &l))
-                return fail(err, errlen, "--timeout: '%s' is not 1..3600000 ms", v);
+                return cam_errf(err, errlen, "--timeout: '%s' is not 1..3600000 ms", v);
             o->timeout_ms = (int)l;
         } else if (!strcmp(name, "--vt")) {
             o->vt = v;
@@ -449,26 +450,26 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             else if (!strcmp(v, "on"))
                 o->reconnect_s = 30;
             else if (parse_long(v, 1, 86400L * 365, &l))
-                return fail(err, errlen, "--reconnect: '%s' is not off, on or 1..31536000 seconds", v);
+                return cam_errf(err, errlen, "--reconnect: '%s' is not off, on or 1..31536000 seconds", v);
             else
                 o->reconnect_s = l;
         } else if (!strcmp(name, "--latest")) {
             if (strcmp(v, "on") && strcmp(v, "off"))
-                return fail(err, errlen, "--latest: '%s' is not on or off", v);
+                return cam_errf(err, errlen, "--latest: '%s' is not on or off", v);
             o->latest = !strcmp(v, "on");
         } else if (!strcmp(name, "--debounce")) {
             if (parse_long(v, 0, 10000L, &l))
-                return fail(err, errlen, "--debounce: '%s' is not 0..10000 ms", v);
+                return cam_errf(err, errlen, "--debounce: '%s' is not 0..10000 ms", v);
             o->debounce_ms = (int)l;
         } else if (!strcmp(name, "--threads")) {
             if (parse_long(v, 0, BLOOM_MT_MAX_THREADS, &l))
-                return fail(err, errlen, "--threads: '%s' is not 0..%d (0: the online CPUs)", v,
-                            BLOOM_MT_MAX_THREADS);
+                return cam_errf(err, errlen, "--threads: '%s' is not 0..%d (0: the online CPUs)", v,
+                                BLOOM_MT_MAX_THREADS);
             o->threads = (int)l;
         } else if (!strcmp(name, "--gpio-frame") || !strcmp(name, "--gpio-button")) {
             cam_gpio_spec_t *g = name[7] == 'f' ? &o->gpio_frame : &o->gpio_button;
             if (parse_gpio(v, g))
-                return fail(err, errlen, "%s: '%s' is not CHIP:LINE", name, v);
+                return cam_errf(err, errlen, "%s: '%s' is not CHIP:LINE", name, v);
         } else if (!strcmp(name, "--record")) {
             o->record = v;
         } else if (!strcmp(name, "--dump-fb")) {
@@ -487,11 +488,11 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
                 if (bloom_preset_params((bloom_preset_t)q) & param_opt[k].bit)
                     n += (size_t)snprintf(who + n, sizeof who - n, "%s%s", n ? " or " : "",
                                           bloom_preset_name((bloom_preset_t)q));
-            return fail(err, errlen, "%s applies to the %s preset, not %s (give --preset)", param_opt[k].opt,
-                        who, pn);
+            return cam_errf(err, errlen, "%s applies to the %s preset, not %s (give --preset)",
+                            param_opt[k].opt, who, pn);
         }
     if ((given & G_RADIUS) && (given & G_LEVELS))
-        return fail(err, errlen, "--radius chooses the level count: give --radius or --levels");
+        return cam_errf(err, errlen, "--radius chooses the level count: give --radius or --levels");
     bloom_config_default(&d, o->width, o->height); /* the size asked for; the
                                                        driver's is used at run time */
     bloom_config_preset(&d, o->preset);
@@ -515,7 +516,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     if (given & G_RADIUS) {
         const int lv = bloom_levels_for_radius((int)radius);
         if (lv < 1 || lv > BLOOM_MAX_LEVELS)
-            return fail(err, errlen, "--radius %ld: no level count reaches it", radius);
+            return cam_errf(err, errlen, "--radius %ld: no level count reaches it", radius);
         o->levels = lv;
     }
 #else
@@ -531,13 +532,13 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         t.aux_fmt = BLOOM_AUX_NONE;
         const bloom_status_t st = bloom_query(&t, &info);
         if (st == BLOOM_E_AUX)
-            return fail(err, errlen,
-                        "--preset %s: %s: give its %s with --aux FILE (an 8- or 16-bit PGM of "
-                        "the capture size)",
-                        pn, bloom_status_str(st),
-                        o->preset == BLOOM_PRESET_ATTENUATION  ? "depth plane"
-                        : (o->preset_flags & BLOOM_FLAG_BAKED) ? "baked bloom map"
-                                                               : "plane");
+            return cam_errf(err, errlen,
+                            "--preset %s: %s: give its %s with --aux FILE (an 8- or 16-bit PGM of "
+                            "the capture size)",
+                            pn, bloom_status_str(st),
+                            o->preset == BLOOM_PRESET_ATTENUATION  ? "depth plane"
+                            : (o->preset_flags & BLOOM_FLAG_BAKED) ? "baked bloom map"
+                                                                   : "plane");
         o->aux_fmt = BLOOM_AUX_NONE; /* optional: run without */
     } else if (o->aux && o->aux_fmt == BLOOM_AUX_NONE) {
         o->aux_fmt = BLOOM_AUX_U8; /* the preset reads an optional plane: this one */
@@ -548,15 +549,15 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
         cam_opts_config(o, o->width, o->height, &t);
         const bloom_status_t st = bloom_query(&t, &info);
         if (st != BLOOM_OK)
-            return fail(err, errlen, "--preset %s with these options: %s", pn, bloom_status_str(st));
+            return cam_errf(err, errlen, "--preset %s with these options: %s", pn, bloom_status_str(st));
     }
     if ((o->format == CAM_FMT_YUYV || o->format == CAM_FMT_UYVY || o->format == CAM_FMT_YVYU) &&
         (o->width & 1))
-        return fail(err, errlen, "--size: %s needs an even width, not %d", cam_format_name(o->format),
-                    o->width);
+        return cam_errf(err, errlen, "--size: %s needs an even width, not %d", cam_format_name(o->format),
+                        o->width);
     if ((o->gpio_frame.set || o->gpio_button.set) && !cam_gpio_available)
-        return fail(err, errlen,
-                    "--gpio-frame/--gpio-button: built without libgpiod "
-                    "(install libgpiod-dev and rebuild)");
+        return cam_errf(err, errlen,
+                        "--gpio-frame/--gpio-button: built without libgpiod "
+                        "(install libgpiod-dev and rebuild)");
     return 0;
 }

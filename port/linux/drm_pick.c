@@ -61,15 +61,6 @@ int cam_display_use_drm(const cam_opts_t *o, int drm_connected)
     return !o->fb_given && drm_connected;
 }
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-    return -1;
-}
-
 static int parse_wxh(const char *s, int *w, int *h)
 {
     char *end;
@@ -96,12 +87,12 @@ int cam_display_opt(cam_opts_t *o, const char *name, const char *v, char *err, s
         else if (!strcmp(v, "auto"))
             o->display = CAM_DISPLAY_AUTO;
         else
-            return fail(err, errlen, "--display: '%s' is not drm, fbdev or auto", v);
+            return cam_errf(err, errlen, "--display: '%s' is not drm, fbdev or auto", v);
     } else if (!strcmp(name, "--drm-card")) {
         o->drm_card = v;
     } else if (!strcmp(name, "--drm-mode")) {
         if (parse_wxh(v, &o->drm_w, &o->drm_h))
-            return fail(err, errlen, "--drm-mode: '%s' is not WxH", v);
+            return cam_errf(err, errlen, "--drm-mode: '%s' is not WxH", v);
     } else if (!strcmp(name, "--drm-format")) {
         if (!strcmp(v, "auto"))
             o->drm_format = (bloom_format_t)0;
@@ -110,7 +101,7 @@ int cam_display_opt(cam_opts_t *o, const char *name, const char *v, char *err, s
         else if (!strcmp(v, "rgb565") || !strcmp(v, "RG16"))
             o->drm_format = BLOOM_FMT_RGB565;
         else
-            return fail(err, errlen, "--drm-format: '%s' is not auto, xrgb8888 or rgb565", v);
+            return cam_errf(err, errlen, "--drm-format: '%s' is not auto, xrgb8888 or rgb565", v);
     } else {
         return 0;
     }
@@ -122,14 +113,14 @@ int cam_display_opt(cam_opts_t *o, const char *name, const char *v, char *err, s
 int cam_display_check(cam_opts_t *o, int drm_given, char *err, size_t errlen)
 {
     if (drm_given && o->display == CAM_DISPLAY_FBDEV)
-        return fail(err, errlen, "--drm-card/--drm-mode/--drm-format are for --display drm, not fbdev");
+        return cam_errf(err, errlen, "--drm-card/--drm-mode/--drm-format are for --display drm, not fbdev");
     if (drm_given && o->fb_given)
-        return fail(err, errlen, "--fb is the fbdev output, --drm-* the DRM one: give one of them");
+        return cam_errf(err, errlen, "--fb is the fbdev output, --drm-* the DRM one: give one of them");
     if (o->display == CAM_DISPLAY_DRM && o->fb_given)
-        return fail(err, errlen, "--fb is the fbdev output: not with --display drm");
+        return cam_errf(err, errlen, "--fb is the fbdev output: not with --display drm");
     if (drm_given)
         o->display = CAM_DISPLAY_DRM;
     if (o->display == CAM_DISPLAY_DRM && !cam_drm_available)
-        return fail(err, errlen, "--display drm: built without libdrm (install libdrm-dev and rebuild)");
+        return cam_errf(err, errlen, "--display drm: built without libdrm (install libdrm-dev and rebuild)");
     return 0;
 }
