@@ -28,7 +28,11 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_INTENSITY:
         return "intensity above 10.0 (Q16.16 655360)";
     case BLOOM_E_FORMAT:
-        return "pixel format unknown, compiled out, or input-only (RGBF32) as the output";
+#if BLOOM_USE_RGBF32
+        return "pixel format unknown or compiled out, or RGBF32 (input only) as the output";
+#else
+        return "pixel format unknown or compiled out";
+#endif
     case BLOOM_E_FLAGS:
         return "unknown flag bits";
     case BLOOM_E_WORKSPACE:
@@ -97,9 +101,12 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
         return BLOOM_E_KNEE;
     if (c->intensity > BLOOM_MAX_INTENSITY)
         return BLOOM_E_INTENSITY;
-    if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0 ||
-        c->out_fmt == BLOOM_FMT_RGBF32)
+    if (bloom_format_bpp(c->in_fmt) == 0 || bloom_format_bpp(c->out_fmt) == 0)
         return BLOOM_E_FORMAT;
+#if BLOOM_USE_RGBF32
+    if (c->out_fmt == BLOOM_FMT_RGBF32) /* an input format only */
+        return BLOOM_E_FORMAT;
+#endif
     if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
                                BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 |
                                BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))

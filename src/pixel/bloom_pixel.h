@@ -34,7 +34,10 @@ extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bk
 /* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
  * source row with no channel above them is dark. */
 typedef struct {
-    uint32_t c8, c6, c5, q16, f32; /* f32: the bits of the largest such float */
+    uint32_t c8, c6, c5, q16;
+#if BLOOM_USE_RGBF32
+    uint32_t f32; /* the bits of the largest such float */
+#endif
 } bloom_dark_t;
 
 /* floor(n / d) where the quotient is known to fit in 32 bits: a native
