@@ -49,8 +49,9 @@ static int check_set(const bloom_kernels_t *k)
             for (int off = 0; off < 4; off++) {
                 uint8_t *p = buf + off;
                 for (size_t ci = 0; ci < sizeof codes / sizeof codes[0]; ci++) {
-                    bloom_dark_t d = {codes[ci], codes[ci] >> 2, codes[ci] >> 3, codes[ci] << 12,
-                                      codes[ci] << 23};
+                    /* (q16 holds a float's bits for RGBF32 input) */
+                    bloom_dark_t d = {codes[ci], codes[ci] >> 2, codes[ci] >> 3,
+                                      codes[ci] << (f == 4 ? 23 : 12)};
                     const int bpp = bpps[f], cb = bpp == 4 ? 3 * n : n * bpp;
                     fill_dark(p, n, bpp, d.c8);
                     bad += bloom_row_dark(fmts[f], p, n, &d) != k->dark(fmts[f], p, n, &d);

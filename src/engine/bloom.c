@@ -38,19 +38,21 @@ static void set_dark(bloom_t *g, uint32_t cut)
 #endif
     g->row.dark.q16 = cut >> BLOOM_Q16_SHIFT; /* min(w, 2^24 - 1) << shift <= cut */
 #if BLOOM_USE_RGBF32
-    /* the largest positive float bits decoding to at most cut: the decode
-     * is monotone in them (bisection, 31 steps; +Inf when all are) */
-    uint32_t lo = 0, hi = 0x7F800000u;
-    if (bloom_f32_to_lin(hi) <= cut)
-        lo = hi;
-    while (hi - lo > 1u) {
-        const uint32_t mid = lo + (hi - lo) / 2u;
-        if (bloom_f32_to_lin(mid) <= cut)
-            lo = mid;
-        else
-            hi = mid;
+    if (g->cfg.in_fmt == BLOOM_FMT_RGBF32) {
+        /* the largest positive float bits decoding to at most cut: the
+         * decode is monotone in them (bisection, 31 steps; +Inf when all are) */
+        uint32_t lo = 0, hi = 0x7F800000u;
+        if (bloom_f32_to_lin(hi) <= cut)
+            lo = hi;
+        while (hi - lo > 1u) {
+            const uint32_t mid = lo + (hi - lo) / 2u;
+            if (bloom_f32_to_lin(mid) <= cut)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        g->row.dark.q16 = lo;
     }
-    g->row.dark.f32 = lo;
 #endif
 }
 #endif

@@ -399,7 +399,7 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
             memcpy(&w, p + 4 * i, 4);
             m = w > m ? w : m;
         }
-        return m <= d->f32;
+        return m <= d->q16; /* here the bits of a float (bloom_dark_t) */
     }
 #endif
 #if BLOOM_USE_XRGB8888

@@ -32,12 +32,11 @@ extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5
 extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bkt5[513];
 
 /* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
- * source row with no channel above them is dark. */
+ * source row with no channel above them is dark. An engine has one input
+ * format, so for RGBF32 input q16 holds the bits of the largest such float
+ * instead (positive floats order as their bits). */
 typedef struct {
     uint32_t c8, c6, c5, q16;
-#if BLOOM_USE_RGBF32
-    uint32_t f32; /* the bits of the largest such float */
-#endif
 } bloom_dark_t;
 
 /* floor(n / d) where the quotient is known to fit in 32 bits: a native
