@@ -190,7 +190,8 @@ static void test_frames(void)
                         const enum cam_mode em = m == CAM_MODE_COUNT ? CAM_MODE_BLOOM : (enum cam_mode)m;
                         CHECK(reference(&cfg[m], &fb, &p, want) == 0);
                         CHECK(t.mt[em] &&
-                              cam_mt_process(&t, em, &cap, cap_data(pix[f]), NULL, &fb, &p, page) == 0);
+                              cam_mt_process(&t, em, &cap, &(cam_frame_t){.data = cap_data(pix[f])}, &fb, &p,
+                                             page) == 0);
                         CHECKF(!memcmp(page, want, fb.mem_len),
                                "%s capture, %s screen %dx%d (shown %dx%d from %d,%d), %s, %d threads: the "
                                "page differs from the untiled engine's",
