@@ -9,7 +9,8 @@
 #                           also a CHECKS target of make test
 #   make bench-cam          row by row against --threads, this machine, no device
 #
-# Debian packages: libgpiod-dev (optional: without it --gpio-* are refused);
+# Debian packages: libjpeg62-turbo-dev (MJPEG capture: required, as for
+# bloom_sim); libgpiod-dev (optional: without it --gpio-* are refused);
 # for test-linux also qemu-system-x86, busybox-static (installed by run.sh
 # when missing), gcc-12 (the kernel's compiler, for gpio-sim) and the packages
 # run.sh downloads (never installs) into build/linux/kernel: linux-image-KVER,

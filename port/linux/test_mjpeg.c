@@ -155,8 +155,8 @@ static void same_as_sim(void)
 {
     static const struct {
         int w, h, q, sub, grey;
-    } t[] = {{64, 48, 100, 1, 0}, {320, 180, 100, 1, 0}, {37, 21, 100, 1, 0}, {320, 180, 85, 2, 0},
-             {38, 22, 90, 2, 0},  {64, 48, 100, 1, 1}};
+    } t[] = {{64, 48, 100, 1, 0},  {320, 180, 100, 1, 0}, {37, 21, 100, 1, 0},
+             {320, 180, 85, 2, 0}, {38, 22, 90, 2, 0},    {64, 48, 100, 1, 1}};
     for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
         const int w = t[k].w, h = t[k].h;
         const size_t n = (size_t)w * (size_t)h * 3;
@@ -172,9 +172,11 @@ static void same_as_sim(void)
         long maxd = 0;
         double sum = 0;
         for (size_t i = 0; i < n; i++) {
-            const int want = t[k].grey ? (src[i - i % 3] * 299 + src[i - i % 3 + 1] * 587 + src[i - i % 3 + 2] * 114 +
-                                          500) / 1000
-                                       : src[i];
+            const int want =
+                t[k].grey
+                    ? (src[i - i % 3] * 299 + src[i - i % 3 + 1] * 587 + src[i - i % 3 + 2] * 114 + 500) /
+                          1000
+                    : src[i];
             const long d = labs((long)a[i] - want);
             maxd = d > maxd ? d : maxd;
             sum += (double)d;
@@ -182,13 +184,20 @@ static void same_as_sim(void)
         const double mean = sum / (double)n;
         CHECKF(ra == 0 && rb == 0 && !memcmp(a, b, n),
                "%dx%d q%d %s: bloom_cam's decode (%d) differs from bloom_sim's (%d)", w, h, t[k].q,
-               t[k].grey ? "grey" : t[k].sub == 1 ? "4:4:4" : "4:2:0", ra, rb);
+               t[k].grey       ? "grey"
+               : t[k].sub == 1 ? "4:4:4"
+                               : "4:2:0",
+               ra, rb);
         /* and it is the picture (not two equal wrong decodes): within the
          * JPEG's own loss of the source */
         CHECKF(mean < (t[k].sub == 1 ? 1.5 : 12.0), "%dx%d q%d: mean error %.2f against the source", w, h,
                t[k].q, mean);
-        printf("ok: %dx%d q%d %s: %zu bytes, decoded = bloom_sim's; against the source max %ld, mean %.3f\n", w,
-               h, t[k].q, t[k].grey ? "grey" : t[k].sub == 1 ? "4:4:4" : "4:2:0", len, maxd, mean);
+        printf("ok: %dx%d q%d %s: %zu bytes, decoded = bloom_sim's; against the source max %ld, mean %.3f\n",
+               w, h, t[k].q,
+               t[k].grey       ? "grey"
+               : t[k].sub == 1 ? "4:4:4"
+                               : "4:2:0",
+               len, maxd, mean);
 
         /* the same frame without its Huffman tables: libjpeg-turbo puts the
          * standard ones in (the encoder used them) */
@@ -198,8 +207,11 @@ static void same_as_sim(void)
         memset(b, 3, n);
         const int rd = cam_decode(&c, nodht, slen, b);
         CHECKF(found >= 2 && slen < len && rd == 0 && !memcmp(a, b, n),
-               "%dx%d without DHT (%d segments taken out, %zu of %zu bytes): decode %d, %s", w, h, found, slen,
-               len, rd, rd ? cam_mjpeg_why(c.jpeg) : memcmp(a, b, n) ? "rows differ" : "");
+               "%dx%d without DHT (%d segments taken out, %zu of %zu bytes): decode %d, %s", w, h, found,
+               slen, len, rd,
+               rd                ? cam_mjpeg_why(c.jpeg)
+               : memcmp(a, b, n) ? "rows differ"
+                                 : "");
         free(nodht);
         free(jpg);
         cam_mjpeg_close(c.jpeg);
@@ -280,7 +292,7 @@ static void bad_frames(void)
 
     /* truncated: in the header, at a quarter, half and three quarters of
      * the data, just the EOI missing, and one byte of it */
-    const size_t cuts[] = {20, e0 + (len - e0) / 4, e0 + (len - e0) / 2, e0 + (len - e0) * 3 / 4, len - 2,
+    const size_t cuts[] = {20,     e0 + (len - e0) / 4, e0 + (len - e0) / 2, e0 + (len - e0) * 3 / 4, len - 2,
                            len - 1};
     for (size_t k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
         char what[80];
