@@ -11,7 +11,8 @@ ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.asan-x86_64.a >/dev/null 2>
     need="$need libclang-rt-dev"
 command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
 [ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"
-# host tools: the simulator's image libraries (bloom_sim)
+# host tools: the simulator's image libraries (bloom_sim); libjpeg is also
+# bloom_cam's MJPEG decoder (the package's libjpeg.a for its static build)
 command -v pkg-config >/dev/null 2>&1 || need="$need pkg-config"
 [ -f /usr/include/png.h ] || need="$need libpng-dev"
 [ -f /usr/include/jpeglib.h ] || need="$need libjpeg62-turbo-dev"

@@ -86,7 +86,7 @@ static int bench(int w, int h, int n)
             const int threaded = (k + r) & 1;
             const double t0 = bench_now_s();
             if (threaded)
-                bad |= cam_mt_process(&t, CAM_MODE_BLOOM, &cap, yuyv, NULL, &fb, &p, page);
+                bad |= cam_mt_process(&t, CAM_MODE_BLOOM, &cap, &(cam_frame_t){.data = yuyv}, &fb, &p, page);
             else
                 row_path(b, &cap, yuyv, line, &fb, &p, page);
             *(threaded ? &mt[r] : &row[r]) = bench_now_s() - t0;

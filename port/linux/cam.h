@@ -42,6 +42,8 @@ enum cam_pixfmt {
     CAM_FMT_NV21M,
     CAM_FMT_NV16M,
     CAM_FMT_NV61M,
+    CAM_FMT_MJPEG,
+    CAM_FMT_JPEG,
     CAM_FMT_COUNT
 };
 enum cam_mode { CAM_MODE_BLOOM = 0, CAM_MODE_OFF, CAM_MODE_BLOOM_ONLY, CAM_MODE_COUNT };
@@ -158,7 +160,7 @@ typedef struct {
     uint32_t fourcc;  /* V4L2_PIX_FMT_* */
     enum cam_pixfmt opt;
     int planes; /* memory planes: 2 for the ...M variants (multi-planar API only) */
-    int bpp;    /* bytes per pixel of the first plane (the luma of NV..) */
+    int bpp;    /* bytes per pixel of the first plane (the luma of NV..); 0: compressed (MJPEG) */
     int chroma; /* NV..: the chroma rows' vertical shift (1: 4:2:0, 0: 4:2:2); -1 none */
     int rank;   /* --format auto: lower is better (README, formats) */
 } cam_fmt_t;
@@ -212,6 +214,7 @@ typedef struct {
     int nbufs, streaming;
     char card[32], driver[16];
     const sigset_t *wait_mask; /* the signal mask inside the wait (NULL: the current one) */
+    struct cam_mjpeg *jpeg;    /* MJPEG's decoder (cam_mjpeg.c), made by cam_v4l2_open; else NULL */
     int lost;                  /* after a -1: CAM_LOST_* (what kind of fault) */
     int quiet;                 /* keep messages in msg only (a reconnection's attempts) */
     char msg[200];             /* the last message */
@@ -222,14 +225,16 @@ typedef struct {
  * what was asked of it (a configuration: no reconnection mends it). */
 enum { CAM_LOST_NONE = 0, CAM_LOST_TIMEOUT, CAM_LOST_DEVICE, CAM_LOST_CONFIG };
 /* A frame that came but cannot be shown (cam_frame_t.bad): requeued and
- * counted, never fatal. */
-enum { CAM_BAD_NONE = 0, CAM_BAD_FLAGGED, CAM_BAD_SHORT };
+ * counted, never fatal. CAM_BAD_JPEG: an MJPEG frame libjpeg cannot
+ * decode whole (found while it is processed: cam_cap_next). */
+enum { CAM_BAD_NONE = 0, CAM_BAD_FLAGGED, CAM_BAD_SHORT, CAM_BAD_JPEG, CAM_BAD_KINDS };
 
 typedef struct {
     int index;
     uint32_t sequence, bytesused;
     const uint8_t *data;  /* the first plane (after its data_offset) */
     const uint8_t *data2; /* the chroma plane of an NV.. format, else NULL */
+    size_t len;           /* the first plane's bytes after data_offset (a JPEG's size) */
     int bad;              /* CAM_BAD_* (cam_v4l2_dequeue returned 2) */
 } cam_frame_t;
 
@@ -242,6 +247,28 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
  * plane, data2 the chroma plane (NULL: right after the first, the
  * single-planar layout). RGB24 is copied. */
 void cam_cap_row(const cam_v4l2_t *c, const uint8_t *data, const uint8_t *data2, int y, uint8_t *dst);
+/* One frame's rows as RGB888, whatever the format: cam_cap_begin (0, or -1
+ * when the frame is bad: an MJPEG frame whose header is damaged or of
+ * another size), then cam_cap_next for y = 0, 1, ... in order (the row:
+ * in the capture buffer for RGB24, else converted or decoded into line,
+ * width x 3 bytes; NULL when the frame turns out bad), then cam_cap_end
+ * (0, or -1: an MJPEG frame cut short or damaged after its last row).
+ * Nothing is allocated per frame (cam_mjpeg.c). */
+int cam_cap_begin(const cam_v4l2_t *c, const cam_frame_t *f);
+const uint8_t *cam_cap_next(const cam_v4l2_t *c, const cam_frame_t *f, int y, uint8_t *line);
+int cam_cap_end(const cam_v4l2_t *c);
+/* The MJPEG decoder (cam_mjpeg.c, libjpeg's scanline API) for w x h frames:
+ * open (0, or -1 out of memory), then per frame begin (the JPEG's bytes),
+ * row (the next row, RGB888, into dst), end (read to the EOI); each 0, or
+ * -1 when the frame is bad (why: what libjpeg said, "truncated (no EOI)",
+ * or the size). A failure leaves it ready for the next frame. */
+typedef struct cam_mjpeg cam_mjpeg_t;
+int cam_mjpeg_open(cam_mjpeg_t **j, int w, int h);
+int cam_mjpeg_begin(cam_mjpeg_t *j, const uint8_t *data, size_t len);
+int cam_mjpeg_row(cam_mjpeg_t *j, uint8_t *dst);
+int cam_mjpeg_end(cam_mjpeg_t *j);
+const char *cam_mjpeg_why(const cam_mjpeg_t *j);
+void cam_mjpeg_close(cam_mjpeg_t *j);
 /* "nv12, bytesperline 320, sizeimage 115200, BT.601 limited range" and the
  * rest of the capture line main.c prints. */
 void cam_v4l2_describe(const cam_v4l2_t *c, char *buf, size_t len);
@@ -260,6 +287,19 @@ int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
 void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
 /* ioctl(2), retried while it fails with EINTR. */
 int cam_xioctl(int fd, unsigned long req, void *arg);
+
+/* ---- what a run went through (cam_stats.c) -------------------------------- */
+typedef struct {
+    long frames, dropped, skipped, bad[CAM_BAD_KINDS], reconnects;
+} cam_counts_t;
+/* "bloom_cam: WHAT: N frames, ... N bad (F flagged, S short, J undecodable
+ * JPEG), N reconnects" over t0..t1 (seconds), to stderr. */
+void cam_stats_line(const char *what, const cam_counts_t *n, double t0, double t1, double proc_sum,
+                    double proc_min, double proc_max);
+/* A bad frame of kind CAM_BAD_* counted in n and win; the first of each
+ * kind told (why: what was wrong with a JPEG), unless quiet. */
+void cam_count_bad(cam_counts_t *n, cam_counts_t *win, int kind, uint32_t sequence, const char *why,
+                   int quiet);
 
 /* ---- framebuffer (fbdev.c) ------------------------------------------------- */
 typedef struct {
@@ -383,10 +423,11 @@ int cam_mt_frames(cam_mt_t *t, const cam_v4l2_t *cap, const cam_fb_t *fb, const 
  * after a message naming the call and the status. */
 int cam_mt_mode(cam_mt_t *t, enum cam_mode m, const bloom_config_t *cfg, int n, const uint8_t *aux,
                 size_t aux_stride, size_t *bytes);
-/* One captured frame (data, as cap describes it) in mode m onto page, placed
- * as p says. 0, or -1 after a message. */
-int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const uint8_t *data,
-                   const uint8_t *data2, const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
+/* One captured frame (f, as cap describes it) in mode m onto page, placed
+ * as p says. 0, 2 when the frame is bad (an undecodable MJPEG frame:
+ * nothing drawn), or -1 after a message. */
+int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const cam_frame_t *f,
+                   const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
 void cam_mt_close(cam_mt_t *t); /* joins every pool, frees everything; t zeroed */
 
 #endif

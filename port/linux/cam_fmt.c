@@ -9,7 +9,8 @@
 #include "cam.h"
 
 /* Best first for --format auto (rank): full chroma before 4:2:2 before
- * 4:2:0, 8 bits per sample before RGB565's 5/6/5, GREY (no colour) last;
+ * 4:2:0, 8 bits per sample before RGB565's 5/6/5, GREY (no colour) and
+ * then the compressed MJPEG and JPEG last;
  * packed before semi-planar at equal sampling, one buffer before two. The
  * ...M fourccs exist only on multi-planar devices. */
 static const cam_fmt_t fmts[] = {
@@ -27,6 +28,12 @@ static const cam_fmt_t fmts[] = {
     {"nv21m", "nv21", V4L2_PIX_FMT_NV21M, CAM_FMT_NV21M, 2, 1, 1, 11},
     {"rgb565", "rgb565", V4L2_PIX_FMT_RGB565, CAM_FMT_RGB565, 1, 2, -1, 12},
     {"grey", "grey", V4L2_PIX_FMT_GREY, CAM_FMT_GREY, 1, 1, -1, 13},
+    /* compressed (bpp 0): decoded, not converted (cam_mjpeg.c); last, since
+     * a camera's JPEG has lost detail and costs a decode, yet chosen where
+     * it is the one format offering the size or the rate (USB webcams'
+     * large sizes) */
+    {"mjpeg", "mjpeg", V4L2_PIX_FMT_MJPEG, CAM_FMT_MJPEG, 1, 0, -1, 14},
+    {"jpeg", "mjpeg", V4L2_PIX_FMT_JPEG, CAM_FMT_JPEG, 1, 0, -1, 15},
 };
 enum { NFMTS = sizeof fmts / sizeof fmts[0] };
 

@@ -98,15 +98,20 @@ int cam_mt_mode(cam_mt_t *t, enum cam_mode m, const bloom_config_t *cfg, int n, 
     return 0;
 }
 
-int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const uint8_t *data,
-                   const uint8_t *data2, const cam_fb_t *fb, const cam_place_t *p, uint8_t *page)
+int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const cam_frame_t *f,
+                   const cam_fb_t *fb, const cam_place_t *p, uint8_t *page)
 {
     const size_t ll = (size_t)fb->line_length, bpp = (size_t)fb->bpp;
-    const uint8_t *src = data;
+    const uint8_t *src = f->data;
     ptrdiff_t src_stride = (ptrdiff_t)cap->bytesperline;
-    if (t->rgb) {
+    if (t->rgb) { /* an MJPEG frame found bad is not drawn at all: the page keeps what it had */
+        if (cam_cap_begin(cap, f))
+            return 2;
         for (int y = 0; y < cap->height; y++)
-            cam_cap_row(cap, data, data2, y, t->rgb + (size_t)y * t->rgb_stride);
+            if (!cam_cap_next(cap, f, y, t->rgb + (size_t)y * t->rgb_stride))
+                return 2;
+        if (cam_cap_end(cap))
+            return 2;
         src = t->rgb;
         src_stride = (ptrdiff_t)t->rgb_stride;
     }

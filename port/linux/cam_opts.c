@@ -27,7 +27,8 @@ void cam_usage(void *stream)
           "  --size WxH            capture size asked of the driver (default 640x480)\n"
           "  --format F            auto (default): the best the device offers for --size and\n"
           "                        --fps (README, formats); or one of rgb24 yuyv uyvy yvyu\n"
-          "                        nv16 nv61 nv12 nv21 rgb565 grey, nv12m nv21m nv16m nv61m\n"
+          "                        nv16 nv61 nv12 nv21 rgb565 grey, nv12m nv21m nv16m nv61m,\n"
+          "                        mjpeg jpeg (decoded by libjpeg)\n"
           "  --fps N               frame rate asked of the driver (VIDIOC_S_PARM), 1..1000\n"
           "  --levels N            pyramid levels, 1..16 (default 5)\n"
           "  --threshold T         0..256 (default 1.0)\n"
@@ -356,7 +357,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
                 return cam_errf(
                     err, errlen,
                     "--format: '%s' is not auto, rgb24, yuyv, uyvy, yvyu, nv16, nv61, nv12, nv21, "
-                    "rgb565, grey, nv12m, nv21m, nv16m or nv61m",
+                    "rgb565, grey, nv12m, nv21m, nv16m, nv61m, mjpeg or jpeg",
                     v);
             o->format = (enum cam_pixfmt)f;
         } else if (!strcmp(name, "--fps")) {

@@ -9,7 +9,8 @@
 #                           also a CHECKS target of make test
 #   make bench-cam          row by row against --threads, this machine, no device
 #
-# Debian packages: libgpiod-dev (optional: without it --gpio-* are refused);
+# Debian packages: libjpeg62-turbo-dev (MJPEG capture: required, as for
+# bloom_sim); libgpiod-dev (optional: without it --gpio-* are refused);
 # for test-linux also qemu-system-x86, busybox-static (installed by run.sh
 # when missing), gcc-12 (the kernel's compiler, for gpio-sim) and the packages
 # run.sh downloads (never installs) into build/linux/kernel: linux-image-KVER,
@@ -22,7 +23,7 @@ CAM_DIR := port/linux
 CAM_MT_SRC := port/threads/bloom_mt.c
 CAM_MT_HDR := port/threads/bloom_mt.h
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c \
-           $(CAM_DIR)/cam_aux.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
+           $(CAM_DIR)/cam_aux.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_stats.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
 CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_MT_HDR)
 CAM_CPPFLAGS := $(CPPFLAGS_CORE) -Iport/threads -D_POSIX_C_SOURCE=200809L
@@ -36,6 +37,11 @@ else
 CAM_GPIO_CFLAGS := -DCAM_NO_GPIOD
 CAM_GPIO_LIBS :=
 endif
+
+# MJPEG capture: libjpeg's scanline API (Debian libjpeg62-turbo-dev, as
+# bloom_sim; tests/deps.sh): required. The package ships libjpeg.a too, for
+# the static build.
+CAM_JPEG_LIBS := -ljpeg
 
 # libdrm (Debian libdrm-dev, tests/deps.sh): the DRM/KMS output (drm.c);
 # without it --display drm is refused. The static build links libdrm.a
@@ -62,13 +68,13 @@ bloom_cam_static: $(B)/linux/bloom_cam.static
 
 $(B)/bloom_cam: $(CAM_SRC) $(CAM_HDR) $(B)/libbloom.a
 	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_DRM_CFLAGS) $(CAM_SRC) $(B)/libbloom.a \
-	  $(CAM_GPIO_LIBS) $(CAM_DRM_LIBS) $(CAM_THREAD_LIBS) -o $@
+	  $(CAM_GPIO_LIBS) $(CAM_DRM_LIBS) $(CAM_JPEG_LIBS) $(CAM_THREAD_LIBS) -o $@
 
 # Static, for the test initramfs (and boards without the shared libraries).
 $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -static $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_DRM_STATIC_CFLAGS) $(CAM_SRC) $(CORE_SRC) \
-	  $(CAM_GPIO_LIBS) $(CAM_DRM_STATIC_LIBS) $(CAM_THREAD_LIBS) -o $@
+	  $(CAM_GPIO_LIBS) $(CAM_DRM_STATIC_LIBS) $(CAM_JPEG_LIBS) $(CAM_THREAD_LIBS) -o $@
 
 # Host tests of the pure parts, sanitized, against the simulator's own
 # Y'CbCr rule (sim/sim_convert.c) and a double reference, and of
@@ -80,7 +86,7 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c \
                 $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/gpio.c \
                 $(CAM_DIR)/cam_aux.c \
-                $(CAM_DIR)/v4l2.c $(CAM_DIR)/drm_pick.c
+                $(CAM_DIR)/v4l2.c $(CAM_DIR)/drm_pick.c $(CAM_DIR)/cam_mjpeg.c
 # (test_conv.c reads its frames back through bloom_sim's own raw reader:
 # sim_source.c and the decoders it links, with sim.mk's flags and libraries.)
 CAM_TEST_SIM := sim/sim_convert.c sim/sim_source.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c
@@ -89,6 +95,17 @@ $(B)/linux/test_cam_host: $(CAM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) $(C
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads -DCAM_NO_GPIOD -DCAM_NO_DRM $(SIMTOOL_PNG_CFLAGS) \
 	  $(SIMTOOL_EXR_CFLAGS) $(CAM_TEST_SRC) $(CAM_TEST_SIM) $(SIM_SRC) $(CORE_SRC) $(SIMTOOL_LIBS) -o $@
+
+# test_cam_mjpeg: MJPEG capture (cam_mjpeg.c) against bloom_sim's JPEG
+# reader (sim/sim_jpeg.c) on frames it encodes with libjpeg; corrupt,
+# truncated, DHT-less and wrongly sized frames.
+CAM_MJPEG_TEST_SRC := $(CAM_DIR)/test_mjpeg.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/cam_conv.c \
+                      $(CAM_DIR)/cam_opts.c $(CAM_DIR)/gpio.c $(CAM_DIR)/drm_pick.c
+$(B)/linux/test_cam_mjpeg: $(CAM_MJPEG_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) $(CAM_TEST_SIM) sim/sim.h \
+                           $(SIM_SRC) $(SIM_HDR) tests/harness.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads -DCAM_NO_GPIOD -DCAM_NO_DRM $(SIMTOOL_PNG_CFLAGS) \
+	  $(SIMTOOL_EXR_CFLAGS) $(CAM_MJPEG_TEST_SRC) $(CAM_TEST_SIM) $(SIM_SRC) $(CORE_SRC) $(SIMTOOL_LIBS) -o $@
 
 # test_drm: the DRM output's pure rules (drm_pick.c: mode and format
 # choice, auto's rule) and the display options (no device is opened).
@@ -100,20 +117,21 @@ $(B)/linux/test_cam_drm: $(CAM_DRM_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) 
 	  $(CORE_SRC) -lm -o $@
 
 CAM_MT_TEST_SRC := $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c \
-                   $(CAM_MT_SRC)
+                   $(CAM_DIR)/cam_mjpeg.c $(CAM_MT_SRC)
 $(B)/linux/test_cam_mt: $(CAM_MT_TEST_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR) tests/harness.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(SAN) $(HOST_CPPFLAGS) -Iport/threads $(CAM_MT_TEST_SRC) $(CORE_SRC) -lm \
-	  $(CAM_THREAD_LIBS) -o $@
+	  $(CAM_JPEG_LIBS) $(CAM_THREAD_LIBS) -o $@
 
 # make bench-cam: the two frame paths on this machine (port/linux/bench_cam.c),
 # 640x480 and 1920x1080 by default; BENCH_CAM_ARGS='1280x720 -t 3' for others.
-BENCH_CAM_SRC := $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c
+BENCH_CAM_SRC := $(CAM_DIR)/bench_cam.c $(CAM_DIR)/cam_mt.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c \
+                 $(CAM_DIR)/cam_mjpeg.c
 $(B)/linux/bench_cam: $(BENCH_CAM_SRC) $(CAM_MT_SRC) $(CAM_HDR) \
                       sim/bench/timing.h $(B)/libbloom.a
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) $(CAM_CPPFLAGS) -Isim/bench $(BENCH_CAM_SRC) \
-	  $(CAM_MT_SRC) $(B)/libbloom.a $(CAM_THREAD_LIBS) -o $@
+	  $(CAM_MT_SRC) $(B)/libbloom.a $(CAM_JPEG_LIBS) $(CAM_THREAD_LIBS) -o $@
 bench-cam: $(B)/linux/bench_cam
 	@$(B)/linux/bench_cam $(BENCH_CAM_ARGS)
 
@@ -123,13 +141,15 @@ linux-clang:
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD -DCAM_NO_DRM $(CAM_SRC)
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -Isim/bench -DCAM_NO_GPIOD $(CAM_DIR)/bench_cam.c
 	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c \
-	  $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/test_drm.c
+	  $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/test_drm.c $(CAM_DIR)/test_mjpeg.c
 
-test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/linux/test_cam_drm $(B)/bloom_cam
+test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/linux/test_cam_drm \
+                 $(B)/linux/test_cam_mjpeg $(B)/bloom_cam
 	@$(MAKE) --no-print-directory linux-clang >/dev/null
 	@$(B)/linux/test_cam_host
 	@$(B)/linux/test_cam_mt
 	@$(B)/linux/test_cam_drm
+	@$(B)/linux/test_cam_mjpeg
 	@sh $(CAM_DIR)/test_cli.sh $(B)/bloom_cam
 
 test-linux: $(B)/linux/bloom_cam.static $(B)/bloom_sim

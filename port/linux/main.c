@@ -201,13 +201,13 @@ static int process(cam_t *c, enum cam_mode mode, const cam_frame_t *f, uint8_t *
 {
     bloom_t *b = c->eng[mode];
     const uint8_t *aux = c->eng_aux[mode] ? c->aux : NULL;
+    if (cam_cap_begin(&c->cap, f))
+        return 2; /* an MJPEG frame found bad: not shown (what was drawn is on the page not on show) */
     bloom_status_t st = bloom_begin(b);
     for (int y = 0; y < c->cap.height && st == BLOOM_OK; y++) {
-        const uint8_t *src = f->data + (size_t)y * c->cap.bytesperline;
-        if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24) {
-            cam_cap_row(&c->cap, f->data, f->data2, y, c->line);
-            src = c->line;
-        }
+        const uint8_t *src = cam_cap_next(&c->cap, f, y, c->line);
+        if (!src)
+            return 2;
         const uint8_t *arow = aux ? aux + (size_t)y * c->aux_stride : NULL;
         st = arow ? bloom_push_row_aux(b, src, arow) : bloom_push_row(b, src);
         if (st == BLOOM_E_BUSY) { /* cannot happen when pulling after each push */
@@ -222,27 +222,7 @@ static int process(cam_t *c, enum cam_mode mode, const cam_frame_t *f, uint8_t *
         fprintf(stderr, "%s: bloom_push_row: %s\n", CAM_PROG, bloom_status_str(st));
         return -1;
     }
-    return pull_rows(c, b, page);
-}
-
-/* What the run went through, for --stats and the summary. */
-typedef struct {
-    long frames, dropped, skipped, bad[3], reconnects;
-} cam_counts_t;
-
-static void stats_line(const char *what, const cam_counts_t *n, double t0, double t1, double proc_sum,
-                       double proc_min, double proc_max)
-{
-    double el = t1 - t0;
-    const long frames = n->frames;
-    fprintf(stderr,
-            "%s: %s: %ld frames, %.2f fps, %ld dropped, processing %.2f ms/frame "
-            "(min %.2f, max %.2f); %ld skipped for newer (--latest), %ld bad (%ld flagged, %ld short), "
-            "%ld reconnects\n",
-            CAM_PROG, what, frames, el > 0 ? (double)frames / el : 0.0, n->dropped,
-            frames ? proc_sum * 1e3 / (double)frames : 0.0, frames ? proc_min * 1e3 : 0.0, proc_max * 1e3,
-            n->skipped, n->bad[CAM_BAD_FLAGGED] + n->bad[CAM_BAD_SHORT], n->bad[CAM_BAD_FLAGGED],
-            n->bad[CAM_BAD_SHORT], n->reconnects);
+    return pull_rows(c, b, page) ? -1 : cam_cap_end(&c->cap) ? 2 : 0;
 }
 
 static const char *signal_name(int sig)
@@ -356,12 +336,7 @@ static int run(cam_t *c)
         if (r == 1)
             continue; /* a signal: the loop condition decides */
         if (r == 2) { /* flagged or short: requeued, counted, the run goes on */
-            n.bad[f.bad]++;
-            win.bad[f.bad]++;
-            if (!c->o.quiet && n.bad[f.bad] == 1)
-                fprintf(stderr, "%s: frame %u %s: skipped (counted from here on, not told again)\n", CAM_PROG,
-                        (unsigned)f.sequence,
-                        f.bad == CAM_BAD_FLAGGED ? "flagged V4L2_BUF_FLAG_ERROR" : "short (bytesused)");
+            cam_count_bad(&n, &win, f.bad, f.sequence, NULL, c->o.quiet);
             continue;
         }
         if (r == 0 && c->o.latest) {
@@ -423,11 +398,18 @@ static int run(cam_t *c)
         }
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
-        int pr = c->threads > 1
-                     ? cam_mt_process(&c->mt, mode, &c->cap, f.data, f.data2, &c->fb, &c->place, page)
-                     : process(c, mode, &f, page);
+        int pr = c->threads > 1 ? cam_mt_process(&c->mt, mode, &c->cap, &f, &c->fb, &c->place, page)
+                                : process(c, mode, &f, page);
         double dt = now_s() - p0;
         cam_gpio_frame(c->gpio, 0);
+        if (pr == 2) { /* undecodable JPEG: requeued, counted, the page not shown */
+            cam_count_bad(&n, &win, CAM_BAD_JPEG, f.sequence, cam_mjpeg_why(c->cap.jpeg), c->o.quiet);
+            if (cam_v4l2_requeue(&c->cap, &f) && !c->o.reconnect_s) {
+                status = CAM_EXIT_DEVICE;
+                break;
+            }
+            continue;
+        }
         c->last_page = page;
         if (pr) {
             status = CAM_EXIT_FAULT;
@@ -454,7 +436,7 @@ static int run(cam_t *c)
         if (c->o.stats) {
             double t = now_s();
             if (t - t_win >= 1.0) {
-                stats_line("last second", &win, t_win, t, wsum, wmin, wmax);
+                cam_stats_line("last second", &win, t_win, t, wsum, wmin, wmax);
                 t_win = t;
                 memset(&win, 0, sizeof win);
                 wsum = wmax = 0;
@@ -465,7 +447,7 @@ static int run(cam_t *c)
     if (stop_signal && !c->o.quiet)
         fprintf(stderr, "%s: stopping on %s\n", CAM_PROG, signal_name(stop_signal));
     if (c->o.stats || !c->o.quiet)
-        stats_line("total", &n, t_start, n.frames ? now_s() : t_start, psum, pmin, pmax);
+        cam_stats_line("total", &n, t_start, n.frames ? now_s() : t_start, psum, pmin, pmax);
     return status;
 }
 
@@ -530,6 +512,11 @@ int main(int argc, char **argv)
     int status = CAM_EXIT_FAULT;
     if (cam_v4l2_open(&c.cap, c.o.device, c.o.width, c.o.height, c.o.format, c.o.fps, c.o.buffers)) {
         status = c.cap.lost == CAM_LOST_CONFIG ? CAM_EXIT_CONFIG : CAM_EXIT_DEVICE;
+        goto out;
+    }
+    if (c.o.record && c.cap.jpeg) { /* a frame found bad half-way would be half-recorded */
+        fprintf(stderr, "%s: --record: not with MJPEG capture (frames are decoded row by row)\n", CAM_PROG);
+        status = CAM_EXIT_CONFIG;
         goto out;
     }
     if (cam_display_open(&c.fb, &c.o, c.cap.width, c.cap.height)) {

@@ -6,13 +6,15 @@
  * bloom-only, off, a preset reading an aux plane) on 2, 3 and 4 threads (4:
  * a 2 x 2 grid, the strips would be under 64 columns), the whole page must
  * equal the untiled engine's frame placed by cam_place, the bytes around
- * the shown rectangle untouched. And the refusals (a configuration, a plane
+ * the shown rectangle untouched; an MJPEG capture decoded into the frame
+ * (a frame cut short drawing nothing). And the refusals (a configuration, a plane
  * the preset does not read) name the call, the threads and the status. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include <jpeglib.h>
 #include <linux/videodev2.h>
 
 #include "bloom_mt.h"
@@ -190,7 +192,8 @@ static void test_frames(void)
                         const enum cam_mode em = m == CAM_MODE_COUNT ? CAM_MODE_BLOOM : (enum cam_mode)m;
                         CHECK(reference(&cfg[m], &fb, &p, want) == 0);
                         CHECK(t.mt[em] &&
-                              cam_mt_process(&t, em, &cap, cap_data(pix[f]), NULL, &fb, &p, page) == 0);
+                              cam_mt_process(&t, em, &cap, &(cam_frame_t){.data = cap_data(pix[f])}, &fb, &p,
+                                             page) == 0);
                         CHECKF(!memcmp(page, want, fb.mem_len),
                                "%s capture, %s screen %dx%d (shown %dx%d from %d,%d), %s, %d threads: the "
                                "page differs from the untiled engine's",
@@ -261,10 +264,92 @@ static void test_refused(void)
     cam_mt_close(&t); /* joins the pool the plane was refused by */
 }
 
+/* cap_rgb as a camera's MJPEG frame (libjpeg, 4:2:0, quality 90); *out
+ * malloc'd. */
+static size_t encode_mjpeg(unsigned char **out)
+{
+    struct jpeg_compress_struct ci;
+    struct jpeg_error_mgr jerr;
+    unsigned long len = 0;
+    *out = NULL;
+    ci.err = jpeg_std_error(&jerr);
+    jpeg_create_compress(&ci);
+    jpeg_mem_dest(&ci, out, &len);
+    ci.image_width = W;
+    ci.image_height = H;
+    ci.input_components = 3;
+    ci.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&ci);
+    jpeg_set_quality(&ci, 90, TRUE);
+    jpeg_start_compress(&ci, TRUE);
+    while (ci.next_scanline < ci.image_height) {
+        JSAMPROW r = cap_rgb + (size_t)ci.next_scanline * (3 * W + PAD);
+        jpeg_write_scanlines(&ci, &r, 1);
+    }
+    jpeg_finish_compress(&ci);
+    jpeg_destroy_compress(&ci);
+    return len;
+}
+
+/* MJPEG on threads: decoded into the RGB888 frame, then the strips; equal
+ * to the untiled engine on the decoded frame. A frame cut short returns 2
+ * and leaves the page as it was (nothing drawn); the next is drawn. */
+static void test_mjpeg(void)
+{
+    cam_v4l2_t cap;
+    cam_fb_t fb;
+    cam_place_t p;
+    cam_mt_t t;
+    bloom_config_t cfg;
+    size_t bytes;
+    memset(&t, 0, sizeof t);
+    memset(&cap, 0, sizeof cap);
+    cap.width = W;
+    cap.height = H;
+    cap.pixelformat = V4L2_PIX_FMT_MJPEG;
+    CHECK(cam_mjpeg_open(&cap.jpeg, W, H) == 0);
+    set_fb(&fb, BLOOM_FMT_XRGB8888, W, H);
+    cam_place(W, H, fb.xres, fb.yres, &p);
+    mode_cfg(0, BLOOM_FMT_XRGB8888, &cfg);
+    uint8_t *page = malloc(fb.mem_len), *want = malloc(fb.mem_len);
+    unsigned char *jpg;
+    const size_t len = encode_mjpeg(&jpg);
+    CHECK(page && want && cam_mt_frames(&t, &cap, &fb, &p) == 0 && t.rgb &&
+          cam_mt_mode(&t, CAM_MODE_BLOOM, &cfg, 2, NULL, 0, &bytes) == 0);
+    /* the reference's input: the same JPEG decoded row by row into rgb */
+    CHECK(cam_mjpeg_begin(cap.jpeg, jpg, len) == 0);
+    for (int y = 0; y < H; y++)
+        CHECK(cam_mjpeg_row(cap.jpeg, rgb + (size_t)y * 3 * W) == 0);
+    CHECK(cam_mjpeg_end(cap.jpeg) == 0);
+    memset(want, CANARY, fb.mem_len);
+    CHECK(reference(&cfg, &fb, &p, want) == 0);
+    cam_frame_t cut = {.data = jpg, .len = len / 2}, whole = {.data = jpg, .len = len};
+    for (int k = 0; k < 2 && page && want; k++) {
+        memset(page, CANARY, fb.mem_len);
+        const int r = cam_mt_process(&t, CAM_MODE_BLOOM, &cap, &cut, &fb, &p, page);
+        size_t drawn = 0;
+        for (size_t i = 0; i < fb.mem_len; i++)
+            drawn += page[i] != CANARY;
+        CHECKF(r == 2 && drawn == 0, "MJPEG cut at %zu of %zu bytes on 2 threads: %d, %zu bytes drawn",
+               len / 2, len, r, drawn);
+        CHECKF(
+            cam_mt_process(&t, CAM_MODE_BLOOM, &cap, &whole, &fb, &p, page) == 0 &&
+                !memcmp(page, want, fb.mem_len),
+            "MJPEG on 2 threads (round %d): the page differs from the untiled engine's on the decoded frame",
+            k);
+    }
+    free(jpg);
+    free(page);
+    free(want);
+    cam_mt_close(&t);
+    cam_mjpeg_close(cap.jpeg);
+}
+
 int main(void)
 {
     test_frames();
     test_refused();
+    test_mjpeg();
     printf("bloom_cam --threads: whole frames on the pool (cam_mt.c) against the untiled engine\n");
     return harness_finish();
 }

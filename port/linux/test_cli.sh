@@ -25,7 +25,7 @@ for n in 0 1 3; do
     expect 3 "bloom_cam: open /nonexistent/video9: No such file or directory" --threads "$n" --device /nonexistent/video9
 done
 expect 2 "bloom_cam: unknown option '--nope'" --nope
-expect 2 "bloom_cam: --format: 'mjpeg' is not auto, rgb24, yuyv, uyvy, yvyu, nv16" --format mjpeg
+expect 2 "bloom_cam: --format: 'h264' is not auto, rgb24, yuyv, uyvy, yvyu, nv16" --format h264
 expect 3 "bloom_cam: open /nonexistent/video9: No such file or directory" --device /nonexistent/video9
 expect 2 "bloom_cam: VIDIOC_QUERYCAP: Inappropriate ioctl for device" --device /dev/null
 expect 2 "bloom_cam: --reconnect: 'soon' is not off, on or 1..31536000 seconds" --reconnect soon

@@ -91,7 +91,7 @@ static void test_opts(void)
     static const struct {
         const char *a0, *a1, *a2, *a3, *msg;
     } bad[] = {
-        {"--format", "mjpeg", NULL, NULL, "'mjpeg' is not auto, rgb24, yuyv, uyvy"},
+        {"--format", "h264", NULL, NULL, "'h264' is not auto, rgb24, yuyv, uyvy"},
         {"--size", "641x480", "--format", "uyvy", "uyvy needs an even width, not 641"},
         {"--fps", "0", NULL, NULL, "--fps: '0' is not 1..1000"},
         {"--size", "640", NULL, NULL, "--size: '640' is not WxH"},

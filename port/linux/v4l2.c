@@ -187,7 +187,7 @@ static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int 
         size_t k = strlen(offered);
         snprintf(offered + k, sizeof offered - k, "%s%s", k ? " " : "", cc);
         const cam_fmt_t *f = cam_fmt_of_fourcc(d.pixelformat);
-        if (!f || (f->planes == 2 && !c->mplane) || (d.flags & V4L2_FMT_FLAG_COMPRESSED)) {
+        if (!f || (f->planes == 2 && !c->mplane) || (f->bpp && (d.flags & V4L2_FMT_FLAG_COMPRESSED))) {
             others++;
             continue;
         }
@@ -238,6 +238,8 @@ static int layout(cam_v4l2_t *c, const cam_fmt_t *f, const struct v4l2_format *f
         c->sizeimage = size[0] = fm->fmt.pix.sizeimage;
     }
     const uint32_t minline = (uint32_t)c->width * (uint32_t)f->bpp;
+    if (!f->bpp) /* compressed: no rows, a frame is what bytesused says (cam_mjpeg.c checks it) */
+        c->bytesperline = 0;
     if (c->bytesperline < minline)
         c->bytesperline = minline; /* some drivers leave it 0 */
     const uint32_t luma = c->bytesperline * (uint32_t)c->height;
@@ -371,6 +373,10 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     }
     if (layout(c, f, &fm))
         return lost(c, CAM_LOST_CONFIG);
+    if (!f->bpp && cam_mjpeg_open(&c->jpeg, c->width, c->height)) {
+        say(c, "MJPEG decoder: out of memory");
+        return lost(c, CAM_LOST_DEVICE);
+    }
     if (fps > 0)
         set_fps(c, fps);
 
@@ -476,6 +482,8 @@ static int take(cam_v4l2_t *c, const vbuf_t *v, cam_frame_t *f)
         f->bytesused += used;
         shortf |= off > used || used - off < need || (size_t)off + need > mlen[p];
         plane[p] = start[p] && off <= mlen[p] ? start[p] + off : start[p];
+        if (p == 0) /* what the driver wrote after data_offset, inside the mapping */
+            f->len = off > used || off > mlen[0] ? 0 : (used < mlen[0] ? used : (uint32_t)mlen[0]) - off;
     }
     f->data = plane[0];
     f->data2 = nplanes(c) == 2 ? plane[1] : c->plane_bytes[0] > luma ? plane[0] + luma : NULL;
@@ -581,6 +589,8 @@ void cam_v4l2_close(cam_v4l2_t *c)
         xioctl(c, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
     }
     c->nbufs = 0;
+    cam_mjpeg_close(c->jpeg);
+    c->jpeg = NULL;
     if (c->fd > 0)
         close(c->fd);
     c->fd = -1;
