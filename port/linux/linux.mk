@@ -25,7 +25,7 @@ CAM_MT_HDR := port/threads/bloom_mt.h
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c \
            $(CAM_DIR)/cam_aux.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_stats.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
-CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_MT_HDR)
+CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_DIR)/test_jpeg.h $(CAM_MT_HDR)
 CAM_CPPFLAGS := $(CPPFLAGS_CORE) -Iport/threads -D_POSIX_C_SOURCE=200809L
 CAM_THREAD_LIBS := -pthread
 # libgpiod: the v1 API (1.x) only; v2 or none compiles the GPIO module out.

@@ -20,6 +20,7 @@
 #include "bloom_mt.h"
 #include "cam.h"
 #include "harness.h"
+#include "test_jpeg.h"
 
 enum { W = 200, H = 60, PAD = 24, CANARY = 0xA5 };
 
@@ -268,27 +269,7 @@ static void test_refused(void)
  * malloc'd. */
 static size_t encode_mjpeg(unsigned char **out)
 {
-    struct jpeg_compress_struct ci;
-    struct jpeg_error_mgr jerr;
-    unsigned long len = 0;
-    *out = NULL;
-    ci.err = jpeg_std_error(&jerr);
-    jpeg_create_compress(&ci);
-    jpeg_mem_dest(&ci, out, &len);
-    ci.image_width = W;
-    ci.image_height = H;
-    ci.input_components = 3;
-    ci.in_color_space = JCS_RGB;
-    jpeg_set_defaults(&ci);
-    jpeg_set_quality(&ci, 90, TRUE);
-    jpeg_start_compress(&ci, TRUE);
-    while (ci.next_scanline < ci.image_height) {
-        JSAMPROW r = cap_rgb + (size_t)ci.next_scanline * (3 * W + PAD);
-        jpeg_write_scanlines(&ci, &r, 1);
-    }
-    jpeg_finish_compress(&ci);
-    jpeg_destroy_compress(&ci);
-    return len;
+    return test_jpeg_encode(cap_rgb, W, H, 3 * W + PAD, 90, 2, 0, out);
 }
 
 /* MJPEG on threads: decoded into the RGB888 frame, then the strips; equal

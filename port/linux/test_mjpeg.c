@@ -18,6 +18,7 @@
 #include "cam.h"
 #include "harness.h"
 #include "sim.h"
+#include "test_jpeg.h"
 
 /* A test frame: smooth ramps, a bright square and hashed noise, so the
  * entropy data is neither trivial nor all noise. */
@@ -34,35 +35,9 @@ static void pattern(uint8_t *rgb, int w, int h, int seed)
         }
 }
 
-/* libjpeg's encoder, standard Huffman tables (no optimize_coding, as
- * cameras use them). sub 1: 4:4:4, 2: 4:2:0; grey: one component. The
- * JPEG is malloc'd (*out). */
 static size_t encode(const uint8_t *rgb, int w, int h, int quality, int sub, int grey, unsigned char **out)
 {
-    struct jpeg_compress_struct ci;
-    struct jpeg_error_mgr jerr;
-    unsigned long len = 0;
-    *out = NULL;
-    ci.err = jpeg_std_error(&jerr);
-    jpeg_create_compress(&ci);
-    jpeg_mem_dest(&ci, out, &len);
-    ci.image_width = (JDIMENSION)w;
-    ci.image_height = (JDIMENSION)h;
-    ci.input_components = 3;
-    ci.in_color_space = JCS_RGB;
-    jpeg_set_defaults(&ci);
-    if (grey)
-        jpeg_set_colorspace(&ci, JCS_GRAYSCALE);
-    jpeg_set_quality(&ci, quality, TRUE);
-    ci.comp_info[0].h_samp_factor = ci.comp_info[0].v_samp_factor = sub;
-    jpeg_start_compress(&ci, TRUE);
-    while (ci.next_scanline < ci.image_height) {
-        JSAMPROW r = (JSAMPROW)(rgb + (size_t)ci.next_scanline * (size_t)w * 3);
-        jpeg_write_scanlines(&ci, &r, 1);
-    }
-    jpeg_finish_compress(&ci);
-    jpeg_destroy_compress(&ci);
-    return len;
+    return test_jpeg_encode(rgb, w, h, (size_t)w * 3, quality, sub, grey, out);
 }
 
 /* bloom_cam's path: the frame's rows through the row reader of an MJPEG
