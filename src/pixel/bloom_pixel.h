@@ -66,6 +66,11 @@ void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], ui
 #else
 #define BLOOM_ALWAYS_INLINE inline
 #endif
+#if defined(__GNUC__)
+#define BLOOM_NOINLINE __attribute__((noinline))
+#else
+#define BLOOM_NOINLINE
+#endif
 
 /* Linear decode: round(c / n * 2^F); n is odd, so there is no tie. */
 static inline uint32_t bloom_dec_linear(uint32_t c, uint32_t n)
