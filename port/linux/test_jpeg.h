@@ -12,8 +12,8 @@
 /* libjpeg's encoder, standard Huffman tables (no optimize_coding, as
  * cameras use them). sub 1: 4:4:4, 2: 4:2:0; grey: one component. The
  * JPEG is malloc'd (*out). Rows of stride bytes. */
-static inline size_t test_jpeg_encode(const uint8_t *rgb, int w, int h, size_t stride, int quality, int sub, int grey,
-                                      unsigned char **out)
+static inline size_t test_jpeg_encode(const uint8_t *rgb, int w, int h, size_t stride, int quality, int sub,
+                                      int grey, unsigned char **out)
 {
     struct jpeg_compress_struct ci;
     struct jpeg_error_mgr jerr;
