@@ -12,9 +12,10 @@ FUZZ_TARGETS := ppm pfm png jpeg exr y4m raw aux cam_opts cam_conv api
 FUZZ_TIME ?= 300
 FUZZ_DIR := $(B)/fuzz
 FUZZ_SAN := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
-FUZZ_CFLAGS := $(WARN) $(FUZZ_SAN) $(SIMTOOL_CFLAGS) -DCAM_NO_GPIOD -I$(CAM_DIR) -Itests/fuzz
+FUZZ_CFLAGS := $(WARN) $(FUZZ_SAN) $(SIMTOOL_CFLAGS) -DCAM_NO_GPIOD -DCAM_NO_DRM -I$(CAM_DIR) -Itests/fuzz
 FUZZ_LIB_SRC := $(CORE_SRC) $(SIM_SRC) $(filter-out sim/bloom_sim.c,$(SIMTOOL_SRC)) \
-                $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_aux.c $(CAM_DIR)/gpio.c
+                $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/cam_aux.c \
+                $(CAM_DIR)/drm_pick.c $(CAM_DIR)/gpio.c
 FUZZ_LIB_OBJ := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(FUZZ_LIB_SRC))
 FUZZ_HDR := $(CORE_HDR) $(SIM_HDR) $(SIMTOOL_HDR) $(CAM_HDR) $(wildcard tests/fuzz/*.h)
 FUZZ_BINS := $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_TARGETS))
