@@ -237,10 +237,8 @@ class Run:
         self.calls = []  # per region call: (name, {key: count}) keyed by block or instruction
         self.inside, self.ret, self.cur, self.prev = None, None, None, None
         uc.hook_add(unicorn.UC_HOOK_INTR, self._intr)
-        if method == "block":
-            uc.hook_add(unicorn.UC_HOOK_BLOCK, self._block)
-        else:
-            uc.hook_add(unicorn.UC_HOOK_CODE, self._insn)
+        # one hook for both: a "block" of the per-instruction hook is one instruction
+        uc.hook_add(unicorn.UC_HOOK_BLOCK if method == "block" else unicorn.UC_HOOK_CODE, self._block)
         self.blocks = {}
 
     def _load_addr(self, vaddr):
@@ -261,15 +259,6 @@ class Run:
 
     def _block(self, uc, addr, size, _):
         if self.prev is not None:  # the successor of the previous block inside a region
-            k = (self.prev, addr)
-            self.cur[k] = self.cur.get(k, 0) + 1
-            self.prev = None
-        self._enter_leave(addr)
-        if self.inside is not None:
-            self.prev = (addr, size)
-
-    def _insn(self, uc, addr, size, _):
-        if self.prev is not None:
             k = (self.prev, addr)
             self.cur[k] = self.cur.get(k, 0) + 1
             self.prev = None
