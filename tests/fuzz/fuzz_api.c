@@ -156,9 +156,11 @@ static int make_config(fz_in_t *in, bloom_config_t *c)
     }
     bloom_config_default(c, w, h);
     const unsigned fi = fz_u8(in), fo = fz_u8(in);
-    c->in_fmt = (bloom_format_t)(m & 2 ? fi % 6 : 1 + fi % 4); /* 0 and 5: no such format */
-    c->out_fmt = (bloom_format_t)(m & 2 ? fo % 6 : 1 + fo % 4);
-    valid &= bloom_format_bpp(c->in_fmt) && bloom_format_bpp(c->out_fmt);
+    /* 0 and 6: no such format; RGBF32 (5) is an input format only, so it
+     * is a valid input and a refused output. */
+    c->in_fmt = (bloom_format_t)(m & 2 ? fi % 7 : 1 + fi % 5);
+    c->out_fmt = (bloom_format_t)(m & 2 ? fo % 7 : 1 + fo % 4);
+    valid &= bloom_format_bpp(c->in_fmt) && bloom_format_bpp(c->out_fmt) && c->out_fmt != BLOOM_FMT_RGBF32;
     c->levels = m & 4 ? (int)(fz_u8(in) % 19) - 1 : 1 + (int)(fz_u8(in) % 16);
     valid &= c->levels >= 1 && c->levels <= BLOOM_MAX_LEVELS;
     const unsigned p = fz_u8(in) % 8;
