@@ -98,10 +98,12 @@ typedef enum {
     BLOOM_E_ATTENUATION = -18,
     BLOOM_E_WEIGHT = -19,
     BLOOM_E_TINT = -20,
-    BLOOM_E_AUX = -21,   /* aux plane missing, unexpected or of an unknown format */
-    BLOOM_E_ALIAS = -22, /* destination overlaps source rows still needed: in place
+    BLOOM_E_AUX = -21,        /* aux plane missing, unexpected or of an unknown format */
+    BLOOM_E_ALIAS = -22,      /* destination overlaps source rows still needed: in place
                                 needs the same format and stride */
-    BLOOM_E_TILE = -23   /* the output rectangle is not inside the frame */
+    BLOOM_E_TILE = -23,       /* the output rectangle is not inside the frame */
+    BLOOM_E_SAMPLE_BITS = -24 /* sample_bits not 16 or 32, or 16 where they cannot carry
+                                 the configuration (sim/docs/fixed-point.md) */
 } bloom_status_t;
 
 /* Parameters of the presets other than the default; a preset ignores the
@@ -133,6 +135,12 @@ typedef struct {
      * reads the source rectangle bloom_query reports (the tile and its
      * halo). tile_w == 0 (bloom_config_default) is the whole frame. */
     int tile_x, tile_y, tile_w, tile_h;
+    /* Bits per pyramid sample: 32 (bloom_config_default; 0 means 32 too)
+     * or 16, uint16_t rows holding a format chosen by the level count
+     * (sim/docs/fixed-point.md, "16-bit samples"): about half the
+     * workspace, for the default preset on 8/6/5-bit input; refused
+     * elsewhere with BLOOM_E_SAMPLE_BITS. */
+    int sample_bits;
 } bloom_config_t;
 
 typedef struct {
@@ -150,6 +158,8 @@ typedef struct {
     /* The source rectangle the engine reads for its output rectangle (the
      * whole frame without a tile); level_w/h are the sizes over it. */
     int src_x, src_y, src_w, src_h;
+    int sample_bits; /* 32 or 16 (the configuration's) */
+    int sample_frac; /* fraction bits of the pyramid samples: 20 (Q12.20), or 16 - bitlen(L) */
 } bloom_info_t;
 
 typedef struct bloom bloom_t;

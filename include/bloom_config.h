@@ -44,6 +44,14 @@
 #define BLOOM_USE_GRAPH                                                                                      \
     (BLOOM_USE_GAMEDEV || BLOOM_USE_XNA || BLOOM_USE_ATTENUATION || BLOOM_USE_ARM || BLOOM_USE_COD)
 
+/* 16-bit pyramid samples (cfg.sample_bits = 16): the default preset's
+ * rings hold uint16_t (sim/docs/fixed-point.md, "16-bit samples"). 0
+ * leaves the code out and bloom_query refuses 16 with
+ * BLOOM_E_SAMPLE_BITS: the size build's choice (its flash budget). */
+#ifndef BLOOM_USE_S16
+#define BLOOM_USE_S16 (!BLOOM_SMALL)
+#endif
+
 /* Skip what a scene does not need: dark source rows, all-zero rows of every
  * level, output rows without bloom (a copy). 0 leaves the code out. */
 #ifndef BLOOM_USE_SKIP

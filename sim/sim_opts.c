@@ -96,7 +96,8 @@ static const char *const with_value[] = {"-o",
                                          "--tint",
                                          "--weights",
                                          "--radius",
-                                         "--raw-ycbcr"};
+                                         "--raw-ycbcr",
+                                         "--sample-bits"};
 
 static int takes_value(const char *name)
 {
@@ -123,7 +124,8 @@ enum {
     SET_LEVELS = 1u << 16,
     SET_THRESHOLD = 1u << 17,
     SET_KNEE = 1u << 18,
-    SET_INTENSITY = 1u << 19
+    SET_INTENSITY = 1u << 19,
+    SET_SAMPLE_BITS = 1u << 20
 };
 
 typedef sim_given_t given_t;
@@ -217,6 +219,11 @@ static int apply(sim_opts_t *o, given_t *g, const char *a, const char *v)
             return bad(a, v);
         g->v.levels = (int)n;
         g->set |= SET_LEVELS;
+    } else if (!strcmp(a, "--sample-bits")) {
+        if (parse_long(v, 16, 32, &n) || (n != 16 && n != 32))
+            return bad(a, v);
+        g->v.sample_bits = (int)n;
+        g->set |= SET_SAMPLE_BITS;
     } else if (!strcmp(a, "--threshold")) {
         if (parse_real_q16(v, 0, 256, &g->v.threshold))
             return bad(a, v);
@@ -352,6 +359,8 @@ static int config_for(const given_t *g, int w, int h, bloom_config_t *c, char *e
     if (st != BLOOM_OK)
         return sim_errf(err, errlen, "--preset %s: %s (this build has: %s)", bloom_preset_name(p),
                         bloom_status_str(st), sim_presets_available());
+    if (g->set & SET_SAMPLE_BITS)
+        c->sample_bits = g->v.sample_bits;
     if (g->set & SET_THRESHOLD)
         c->threshold = g->v.threshold;
     if (g->set & SET_KNEE)

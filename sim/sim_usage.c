@@ -50,6 +50,8 @@ static const char usage_text[] =
     "  --threshold T            0..256 (default 1.0)      --knee S    0..1 (default 0.5)\n"
     "  --intensity I            0..10 (default 1.0)       --linear    codes are linear light\n"
     "  --copy-source            BLOOM_FLAG_COPY_SOURCE (the engine copies its source rows)\n"
+    "  --sample-bits 16|32      pyramid samples (default 32); 16: the default preset on\n"
+    "                           8/6/5-bit input, about 0.8x the workspace\n"
     "  --format F               engine input and output format: rgb888, xrgb8888, rgb565,\n"
     "                           rgbq16 (as your board's framebuffer or camera delivers them);\n"
     "                           rgbf32 (linear floats) is an input format only\n"

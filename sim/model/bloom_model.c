@@ -216,14 +216,28 @@ uint32_t bloom_model_encode(int bittrue, int linear, double v, int n, int lin_bi
 
 /* ---- step 3: the knee (prefilter) ------------------------------------ */
 
+/* Bit-true: the knee's numerator max(soft, b - T, 0) at brightness b. */
+static double knee_num(const model_t *m, double b)
+{
+    double soft;
+    const double x = clampd(b - m->t + m->k, 0.0, 2.0 * m->k); /* signed before the clamp */
+    if (m->k == 0) {                                           /* then x = 0 */
+        soft = 0.0;
+    } else {
+        const uint64_t xi = (uint64_t)x, den = 8u * (uint64_t)m->k + (uint64_t)floor(m->one * 0.00008 + 0.5);
+        soft = (double)((2u * xi * xi + den / 2u) / den);
+    }
+    return fmax(fmax(soft, b - m->t), 0.0);
+}
+
 static void knee(const model_t *m, double rgb[3])
 {
     double b = fmax(rgb[0], fmax(rgb[1], rgb[2])); /* brightness */
-    double x, soft, num, f;
+    double num, f;
     int c;
 
     if (!m->bt) { /* bloom-model.md, epsilons included */
-        double contribution;
+        double contribution, soft;
         soft = clampd(b - m->t + m->k, 0.0, 2.0 * m->k);
         soft = soft * soft * 0.25 / (m->k + 0.00001);
         contribution = fmax(soft, b - m->t) / fmax(b, 0.00001);
@@ -234,14 +248,7 @@ static void knee(const model_t *m, double rgb[3])
     /* Integer form, the epsilons in internal units (fixed-point.md step 3):
      * soft = 2x^2 / (8K + E8), rounded, E8 = round(0.00008 * 2^F); the
      * factor num / max(b, 2^F / 100000) in Q16. x^2 reaches 2^58: integers. */
-    x = clampd(b - m->t + m->k, 0.0, 2.0 * m->k); /* signed before the clamp */
-    if (m->k == 0) {                              /* then x = 0 */
-        soft = 0.0;
-    } else {
-        const uint64_t xi = (uint64_t)x, den = 8u * (uint64_t)m->k + (uint64_t)floor(m->one * 0.00008 + 0.5);
-        soft = (double)((2u * xi * xi + den / 2u) / den);
-    }
-    num = fmax(fmax(soft, b - m->t), 0.0);
+    num = knee_num(m, b);
     if (num == 0 || b == 0) {
         rgb[0] = rgb[1] = rgb[2] = 0.0;
         return;
@@ -348,6 +355,10 @@ static int bad_args(const bloom_model_params_t *p, const uint32_t *src, const in
         /* these bounds keep every intermediate below 2^53 (fixed-point.md) */
         if (p->threshold_q > (1u << 28) || p->knee_q > p->threshold_q || p->intensity_q > (1u << 24))
             return 1;
+        /* 16-bit samples carry codes' decodes (up to 1.0), not linear words */
+        if (p->sample_bits != 0 && p->sample_bits != 32 &&
+            (p->sample_bits != 16 || src_max[0] <= 0 || src_max[1] <= 0 || src_max[2] <= 0))
+            return 1;
     } else {
         if (!(p->threshold >= 0 && isfinite(p->threshold)) || !(p->soft_knee >= 0 && p->soft_knee <= 1) ||
             !(p->intensity >= 0 && isfinite(p->intensity)))
@@ -380,6 +391,20 @@ static void setup(const bloom_model_params_t *p, model_t *m)
 }
 
 /* ---- the pipeline -------------------------------------------------------- */
+
+static double knee_num(const model_t *m, double b);
+/* G, the fraction bits of 16-bit samples (fixed-point.md, "16-bit
+ * samples"): the largest G below F with L * round(P / 2^(F-G)) < 2^16,
+ * P = num(1.0) + 1 the knee's peak on codes' input. */
+static int s16_frac(const model_t *m, int L)
+{
+    const double peak = knee_num(m, m->one) + 1.0;
+    const int F = (int)log2(m->one);
+    int g = F - 1;
+    while (g > 1 && L * fdiv(peak + ldexp(1.0, F - g - 1), ldexp(1.0, F - g)) > 65535.0)
+        g--;
+    return g;
+}
 
 void bloom_model_pyramid_free(bloom_model_pyramid_t *pyr)
 {
@@ -428,6 +453,11 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
             for (k = 0; k < 3; k++)
                 v[k] = m.bt ? fdiv(v[k] * p->d1_scale[i] + KNEE_ONE / 2, KNEE_ONE) : v[k] * p->d1_scale[i];
     }
+    if (m.bt && p->sample_bits == 16) { /* narrowed to the 16-bit rings' units, half to even */
+        const double den = m.one / ldexp(1.0, s16_frac(&m, L));
+        for (i = 0; i < (size_t)out->D[1].w * (size_t)out->D[1].h * 3; i++)
+            out->D[1].px[i] = norm(1, out->D[1].px[i], den, RND_EVEN);
+    }
     for (k = 1; k < L; k++)
         if (bloom_model_box_down(&out->D[k], &out->D[k + 1], m.bt))
             goto fail;
@@ -443,7 +473,18 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
         for (i = 0; i < (size_t)t.w * (size_t)t.h * 3; i++)
             out->U[k].px[i] += out->D[k].px[i];
     }
-    if (bloom_model_tent_up(&out->U[1], p->width, p->height, &out->B, m.bt))
+    if (m.bt && p->sample_bits == 16) { /* widened back, exactly: B's tent runs in the internal units */
+        const double mul = m.one / ldexp(1.0, s16_frac(&m, L));
+        bloom_model_image_t w1;
+        if (image_alloc(&w1, out->U[1].w, out->U[1].h))
+            goto fail;
+        for (i = 0; i < (size_t)w1.w * (size_t)w1.h * 3; i++)
+            w1.px[i] = out->U[1].px[i] * mul;
+        k = bloom_model_tent_up(&w1, p->width, p->height, &out->B, m.bt);
+        bloom_model_image_free(&w1);
+        if (k)
+            goto fail;
+    } else if (bloom_model_tent_up(&out->U[1], p->width, p->height, &out->B, m.bt))
         goto fail;
     out->levels = L;
     return L;

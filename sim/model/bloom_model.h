@@ -30,6 +30,13 @@ typedef struct {
      * Q24 integers (0 .. 2^24) in bit-true mode, there D1 = (D1*f + 2^23) >> 24.
      * NULL: none. */
     const double *d1_scale;
+    /* Bits of the pyramid samples (bit-true mode; the float model ignores
+     * it): 32 (or 0), or 16: D_1 is narrowed to Q(16-G).G, G = 16 - bitlen(L),
+     * by F - G bits half to even after the knee (and d1_scale); the down and
+     * up chains then run in those units (the pyramid hooks hold them); U_1
+     * is widened back (times 2^(F-G)) before the final tent
+     * (sim/docs/fixed-point.md, "16-bit samples"). */
+    int sample_bits;
 } bloom_model_params_t;
 
 #define BLOOM_MODEL_F32 (-1) /* src_max: the word is a binary32 linear value */

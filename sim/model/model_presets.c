@@ -44,6 +44,7 @@ int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_para
     p->soft_knee = c->soft_knee / 65536.0;
     p->intensity = c->intensity / 65536.0;
     p->lin_bits = BLOOM_LIN_BITS;
+    p->sample_bits = c->sample_bits;
     bloom_model_quantize(c, p->lin_bits, &p->threshold_q, &p->knee_q, &p->intensity_q);
     return 0;
 }

@@ -301,7 +301,7 @@ static uint32_t input_step(const bloom_t *g, const bg_node_t *n, int i)
         const int from = n->in[i].node;
         const bg_node_t *src = from >= 0 ? &g->gr.node[from] : NULL;
         const int off = bg_base(n->in[i].map, n->xa) - (src ? src->xa : 0);
-        const size_t bytes = src ? (size_t)src->ch * sizeof(uint32_t)
+        const size_t bytes = src ? (size_t)src->ch * src->sb /* (a sample's bytes) */
                                  : (size_t)(from == BG_SRC ? g->row.src_bpp : bg_aux_bpp(&g->row));
         return (uint32_t)((size_t)off * bytes);
     }
@@ -334,7 +334,10 @@ static uint64_t lay_out_gathers(bloom_t *g, uint8_t *base, uint64_t off, int cap
             const int c = f ? imax(f->need, 1) : cap;
             const uint32_t step = input_step(g, n, j);
             const void **view = NULL;
-            if (step && (f || g->src_copy))
+            /* (the flag, not g->src_copy: that is NULL while only counting,
+             * and a count without the views made tiles of copied rows
+             * overrun their workspace) */
+            if (step && (f || (g->cfg.flags & BLOOM_FLAG_COPY_SOURCE)))
                 view = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
             if (!base)
                 continue;
@@ -407,18 +410,18 @@ uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
             continue;
         const uint64_t before = off;
         const int c = imax(n->need, 1);
-        const uint64_t words = (uint64_t)c * (uint64_t)n->w * n->ch;
-        n->buf = (uint32_t *)take(base, &off, words * sizeof(uint32_t));
+        const uint64_t bytes = (uint64_t)c * bg_row_bytes(n);
+        n->buf = (uint32_t *)take(base, &off, bytes);
 #if BLOOM_SCHED_TABLE
         n->rowp = (const void **)take(base, &off, 2u * (uint64_t)c * sizeof(const void *));
         for (int s = 0; base && s < 2 * c; s++)
-            n->rowp[s] = n->buf + (size_t)(s % c) * n->w * n->ch;
+            n->rowp[s] = (const uint8_t *)n->buf + (size_t)(s % c) * bg_row_bytes(n);
 #endif
         n->tag = (int32_t *)take(base, &off, BG_RING_COPIES * (uint64_t)c * sizeof(int32_t));
         if (base) { /* zeros in every slot, said by the tags: a zero row then costs nothing */
             n->cap = (uint16_t)c;
             if (BLOOM_USE_SKIP)
-                memset(n->buf, 0, (size_t)words * sizeof *n->buf);
+                memset(n->buf, 0, (size_t)bytes);
             /* every tag byte 0x40: the zero bit (bit 30) set in each tag,
              * whatever the byte order; bloom_begin (bloom_init's last
              * step) then makes each "no row", keeping that bit */
@@ -460,6 +463,8 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
     info->src_x = tmp.row.win_x;
     info->src_y = tmp.row.win_y;
 #endif
+    info->sample_bits = BLOOM_USE_S16 && tmp.row.par.s16 ? 16 : 32;
+    info->sample_frac = BLOOM_LIN_BITS - tmp.row.par.s16;
     info->src_w = tmp.gr.w[0];
     info->src_h = tmp.gr.h[0];
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);

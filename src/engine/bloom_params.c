@@ -55,6 +55,12 @@ const char *bloom_status_str(bloom_status_t st)
         return "tile outside the frame";
     case BLOOM_E_ALIAS:
         return "dst overlaps src rows still needed (in place: same format, stride)";
+    case BLOOM_E_SAMPLE_BITS:
+#if BLOOM_USE_S16
+        return "sample_bits must be 16 or 32; 16 takes the default preset on 8/6/5-bit input only";
+#else
+        return "sample_bits must be 32 (16-bit samples compiled out: BLOOM_USE_S16)";
+#endif
 #if BLOOM_USE_GRAPH /* only presets other than the default return these */
     case BLOOM_E_STRENGTH:
         return "strength above 16.0 (Q16.16 1048576)";
@@ -87,6 +93,7 @@ void bloom_config_default(bloom_config_t *cfg, int width, int height)
     cfg->soft_knee = BLOOM_ONE / 2u;
     cfg->intensity = BLOOM_ONE;
     cfg->flags = 0;
+    cfg->sample_bits = 32;
 }
 
 bloom_status_t bloom_validate(const bloom_config_t *c)
@@ -124,6 +131,14 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     const bloom_preset_ops_t *ops = bloom_preset_ops(c->preset);
     if (!ops)
         return BLOOM_E_PRESET;
+    if (c->sample_bits != 0 && c->sample_bits != 32) {
+        /* 16-bit rows carry samples up to 1.0 (fixed-point.md, "16-bit
+         * samples"): what 8/6/5-bit codes decode to, not RGBQ16's or
+         * RGBF32's 256.0; the default pipeline's stages only */
+        if (!BLOOM_USE_S16 || c->sample_bits != 16 || c->preset != BLOOM_PRESET_UNITY ||
+            c->in_fmt == BLOOM_FMT_RGBQ16 || c->in_fmt == BLOOM_FMT_RGBF32)
+            return BLOOM_E_SAMPLE_BITS;
+    }
     if (c->aux_fmt != BLOOM_AUX_NONE && c->aux_fmt != BLOOM_AUX_U8 && c->aux_fmt != BLOOM_AUX_U16)
         return BLOOM_E_AUX;
     return ops->validate(c); /* the preset checks its own parameters, flags and aux plane */

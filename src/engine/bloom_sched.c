@@ -170,7 +170,7 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 #endif
             if (BLOOM_USE_SKIP && (tag & ZBIT))
                 zm |= 1u << (j - ip->lo);
-            rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
+            rows[used++] = src ? (const void *)((const uint8_t *)src->buf + (size_t)slot * bg_row_bytes(src))
                                : src_slot(g, from, slot);
         }
         if (!BLOOM_USE_SKIP)
@@ -218,20 +218,20 @@ static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
  * written). */
 static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
 {
-    const size_t len = (size_t)n->w * n->ch;
+    const size_t len = bg_row_bytes(n);
 #if BLOOM_SCHED_TABLE
     const int s = n->put;
     n->put = s + 1 == n->cap ? 0 : s + 1;
-    uint32_t *dst = (uint32_t *)(uintptr_t)n->rowp[s];
+    void *dst = (void *)(uintptr_t)n->rowp[s];
 #else
     const int s = r % n->cap;
-    uint32_t *dst = n->buf + (size_t)s * len;
+    void *dst = (uint8_t *)n->buf + (size_t)s * len;
 #endif
     /* (tagged after the row is made: no row function reads its own node) */
     const bool had_zeros = (n->tag[s] & ZBIT) != 0;
     const int made = run_row(g, n, r, dst);
     if (BLOOM_USE_SKIP && made == ROW_SKIPPED && !had_zeros)
-        memset(dst, 0, len * sizeof *dst);
+        memset(dst, 0, len);
     put_tag(n->tag, NODE_ZB(n), s, n->cap, BLOOM_USE_SKIP && made != ROW_MADE ? r | ZBIT : r);
 }
 

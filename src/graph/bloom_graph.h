@@ -106,6 +106,7 @@ struct bg_node {
     bg_row_fn fn;
     int w, h;     /* size */
     uint8_t ch;   /* samples per pixel (1 or 3) */
+    uint8_t sb;   /* bytes per sample: 4 (uint32_t), or 2 (uint16_t: bg_s16) */
     int8_t level; /* pyramid level it belongs to (row memory per level) */
     uint8_t nin;  /* inputs */
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
@@ -151,6 +152,8 @@ typedef struct {
     bool views;         /* every row function reads its widths by bg_in_w (a tile's
                            nodes then make only the columns read; else only the
                            output node does) */
+    uint8_t s16;        /* 16-bit samples (cfg.sample_bits): F - G, the shift from
+                           the internal format to the rings' Q(16-G).G; 0: 32-bit */
 } bg_params_t;
 #define BG_NO_CUT 0xFFFFFFFFu
 
@@ -198,6 +201,17 @@ typedef struct {
 void bg_levels(bg_graph_t *g, int n);
 /* A node of w x h x ch at `level`; returns its index, or -1 when full. */
 int bg_node(bg_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level);
+/* Node n keeps uint16_t samples (16-bit rows, cfg.sample_bits). */
+static inline void bg_s16(bg_graph_t *g, int n)
+{
+    if (n >= 0 && n < g->nnodes)
+        g->node[n].sb = 2;
+}
+/* Bytes of one row of node n. */
+static inline size_t bg_row_bytes(const bg_node_t *n)
+{
+    return (size_t)n->w * n->ch * (BLOOM_USE_S16 ? n->sb : 4u);
+}
 /* Node n reads input `from` at rows base(r) + lo .. base(r) + hi. */
 void bg_input(bg_graph_t *g, int n, int from, bg_map_t map, int lo, int hi);
 /* Node n is zero-preserving: all-zero input rows (dark source rows, aux

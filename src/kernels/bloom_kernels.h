@@ -137,6 +137,37 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
  * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
 void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
 
+/* 16-bit samples (cfg.sample_bits = 16; sim/docs/fixed-point.md, "16-bit
+ * samples"): the rings of the default pipeline hold uint16_t, the value
+ * v / 2^G. On 8/6/5-bit input every D_k is at most the knee's peak P (its
+ * output for a white pixel, bound + 1: bloom_knee_peak) and U_k at most
+ * (L - k + 1) times that, so G is the largest fraction (below F) that keeps
+ * L * P, narrowed, within 16 bits: 16 at the default threshold 1.0 and
+ * knee 0.5 (P = 0.125), 13 at threshold 0 with 5 levels. D_1 is made in
+ * the internal format and narrowed by F - G bits (half to even); boxes
+ * and tents run on 16-bit rows with 32-bit sums and the rounding of the
+ * 32-bit kernels; U_1 is widened back (<< (F - G), exact) for the output's
+ * tent. Not in builds without BLOOM_USE_S16. */
+uint32_t bloom_knee_peak(const bloom_knee_t *kn);
+static inline int bloom_s16_frac(int levels, uint32_t peak)
+{
+    int g = BLOOM_LIN_BITS - 1;
+    while (g > 1 &&
+           (uint64_t)levels * ((peak + (1u << (BLOOM_LIN_BITS - g - 1))) >> (BLOOM_LIN_BITS - g)) > 0xFFFFu)
+        g--;
+    return g; /* L * 2^G * peak < 2^16: 11 .. F - 1 */
+}
+/* dst[i] = src[i] / 2^sh rounded half to even (n samples); returns the OR
+ * of the results (0: the row narrowed to zeros). */
+uint32_t bloom_row_narrow16_c(const uint32_t *src, uint16_t *dst, int n, int sh);
+/* dst[i] = src[i] << sh (n samples). */
+void bloom_row_widen16_c(const uint16_t *src, uint32_t *dst, int n, int sh);
+/* bloom_row_box_c on 16-bit rows (sums in 32 bits; the same rounding). */
+void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
+/* bloom_row_tent_c on 16-bit rows (add may be NULL or equal dst). */
+void bloom_row_tent16_c(const uint16_t *const u[3], int odd, const uint16_t *add, uint16_t *dst, int x0,
+                        int n, int sw);
+
 /* The instruction set a kernel set uses. */
 typedef enum { BLOOM_ISA_C, BLOOM_ISA_SSE2, BLOOM_ISA_AVX2, BLOOM_ISA_NEON } bloom_isa_t;
 

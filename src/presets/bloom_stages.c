@@ -75,6 +75,85 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
     return true;
 }
 
+#if BLOOM_USE_S16
+/* The same stages on 16-bit rows (bloom_row16.c; bloom_stages_s16). */
+
+/* D_1 made in the internal format in scratch row 0, then narrowed. */
+static bool fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
+{
+    uint32_t *t = bg_scratch(ctx, 0);
+    (void)bg_fn_d1(ctx, n, r, in, t);
+    return bloom_row_narrow16_c(t, (uint16_t *)dst, n->w * 3, ctx->par.s16) != 0;
+}
+
+static bool fn_box16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
+{
+    (void)r;
+    const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                  (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
+    bloom_row_box16_c(s, (uint16_t *)dst, n->w, bg_node_in_w(ctx, n, 0));
+    return true;
+}
+
+static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
+                          const void *const *const in[BG_MAX_IN], void *dst)
+{
+    const uint16_t *d = (const uint16_t *)in[1][0];
+    if (bg_in_zero(ctx, 0, 0, 2)) {
+        memcpy(dst, d, (size_t)n->w * 3u * sizeof *d);
+        return true;
+    }
+    const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                  (const uint16_t *)in[0][2]};
+    bloom_row_tent16_c(u, r & 1, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, 0, n->w,
+                       bg_node_in_w(ctx, n, 0));
+    return true;
+}
+
+/* U_1's three rows widened to the internal format (exact) in scratch rows
+ * 0..2, then the 32-bit output stage on them. */
+static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
+                         const void *const *const in[BG_MAX_IN], void *dst)
+{
+    const int sw = bg_node_in_w(ctx, n, 0);
+    const void *wide[3];
+    const void *const src[1] = {in[1][0]};
+    if (!bg_in_zero(ctx, 0, 0, 2))
+        for (int j = 0; j < 3; j++) {
+            uint32_t *t = bg_scratch(ctx, j);
+            bloom_row_widen16_c((const uint16_t *)in[0][j], t, sw * 3, ctx->par.s16);
+            wide[j] = t;
+        }
+    else
+        wide[0] = wide[1] = wide[2] = NULL; /* (not read: B = 0, the source row copied) */
+    const void *const *const win[BG_MAX_IN] = {wide, src, NULL};
+    return bg_fn_out_add(ctx, n, r, win, dst);
+}
+
+void bloom_stages_s16(bg_graph_t *g, bg_params_t *par)
+{
+    par->s16 = (uint8_t)(BLOOM_LIN_BITS - bloom_s16_frac(g->L, bloom_knee_peak(&par->knee)));
+    /* three rows of level 1 in the internal format (D_1 before it is
+     * narrowed; U_1 widened for the output): no wider than level 1 */
+    par->scratch_rows = imax(par->scratch_rows, 3);
+    par->scratch_len = (size_t)g->w[1] * 3u + 16u;
+    for (int i = 0; i < g->nnodes; i++) {
+        bg_node_t *n = &g->node[i];
+        n->fn = n->fn == bg_fn_d1         ? fn_d1_16
+                : n->fn == bg_fn_box      ? fn_box16
+                : n->fn == bg_fn_add_tent ? fn_add_tent16
+                : n->fn == bg_fn_out_add  ? fn_out_add16
+                                          : NULL; /* (no other stage has a 16-bit twin: refused) */
+        if (!n->fn)
+            g->failed = true;
+        if (i != g->out_node)
+            bg_s16(g, i);
+    }
+}
+#endif
+
 /* A zero-preserving node of level k (w, h of the level, 3 channels) made by
  * fn from rows 2r-1 .. 2r+2 of `from`, and with aux from aux rows 2r .. 2r+1. */
 static int down_node(bg_graph_t *g, bg_row_fn fn, int k, int from, bool aux)

@@ -14,6 +14,11 @@ bool bg_fn_add_tent(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
 bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst);
 
+/* The default pipeline's graph (built) turned to 16-bit rows (cfg.sample_bits
+ * = 16): its stages' 16-bit twins, par->s16 and the scratch rows they use;
+ * a stage without a twin fails the graph. Not in builds without BLOOM_USE_S16. */
+void bloom_stages_s16(bg_graph_t *g, bg_params_t *par);
+
 /* The default pipeline's down and up chains with d1_fn making level 1
  * (input 0: source rows 2r-1 .. 2r+2; input 1 with d1_aux: aux rows
  * 2r .. 2r+1), every node zero-preserving. Returns the node of U_1 (D_1

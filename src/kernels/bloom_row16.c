@@ -1,0 +1,111 @@
+/* Row kernels on 16-bit samples (cfg.sample_bits = 16): the box and the
+ * tent of bloom_row.c on uint16_t rows, and the conversions between the
+ * internal format and the rings' Q(16-G).G (bloom_s16_frac). The sums are
+ * formed in 32 bits and rounded as the 32-bit kernels round them
+ * (sim/docs/fixed-point.md, "16-bit samples": every result fits in 16
+ * bits by the bound U_k <= (L - k + 1) * 2^G < 2^16). */
+#include "bloom_kernels.h"
+
+#if BLOOM_USE_S16
+
+uint32_t bloom_knee_peak(const bloom_knee_t *kn)
+{
+    /* num(b) = max(soft(b), b - T) of bloom_row_knee_c grows with b, and a
+     * channel comes out at most num(bmax) + 1 (c <= bmax, f rounded to the
+     * nearest 2^-24): on codes' input (b <= 2^F) D_1 <= num(2^F) + 1 */
+    const int64_t t = kn->t, k = kn->k;
+    int64_t x = (int64_t)BLOOM_LIN_ONE - t + k;
+    x = x < 0 ? 0 : x > 2 * k ? 2 * k : x;
+    uint32_t soft = 0;
+    if (k > 0) {
+        const uint32_t den = (uint32_t)(8 * k) + BLOOM_KNEE_E8;
+        soft = bloom_div_u64_u32(2u * (uint64_t)(x * x) + den / 2u, den);
+    }
+    const int64_t over = (int64_t)BLOOM_LIN_ONE - t;
+    const uint32_t num = over > (int64_t)soft ? (uint32_t)over : soft;
+    return num + 1u;
+}
+
+uint32_t bloom_row_narrow16_c(const uint32_t *src, uint16_t *dst, int n, int sh)
+{
+    /* half to even: sum / 2^sh with the tie to the even quotient (a value
+     * made by the knee ties one time in 2^sh at most: unbiased all the same) */
+    const uint32_t h = (1u << (sh - 1)) - 1u;
+    uint32_t any = 0;
+    for (int i = 0; i < n; i++) {
+        const uint32_t v = (src[i] + h + ((src[i] >> sh) & 1u)) >> sh;
+        dst[i] = (uint16_t)v;
+        any |= v;
+    }
+    return any;
+}
+
+void bloom_row_widen16_c(const uint16_t *src, uint32_t *dst, int n, int sh)
+{
+    for (int i = 0; i < n; i++)
+        dst[i] = (uint32_t)src[i] << sh;
+}
+
+/* Column sum of four rows at column c (three channels). */
+static inline void colsum4(const uint16_t *const s[4], int c, uint32_t out[3])
+{
+    const size_t i = (size_t)c * 3u;
+    for (int ch = 0; ch < 3; ch++)
+        out[ch] = (uint32_t)s[0][i + ch] + s[1][i + ch] + s[2][i + ch] + s[3][i + ch];
+}
+
+void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw)
+{
+    uint32_t a[3], b[3], c[3], d[3];
+    if (dw < 1)
+        return;
+    colsum4(s, 0, a); /* column -1 clamps to 0 */
+    colsum4(s, 0, b);
+    for (int x = 0; x < dw; x++) {
+        colsum4(s, imin(2 * x + 1, sw - 1), c);
+        colsum4(s, imin(2 * x + 2, sw - 1), d);
+        for (int ch = 0; ch < 3; ch++) {
+            dst[3 * x + ch] = (uint16_t)BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
+            a[ch] = c[ch];
+            b[ch] = d[ch];
+        }
+    }
+}
+
+/* The vertical tent of rows u0..u2 at sample i: (3, 4, 1) or (1, 4, 3), half up. */
+static inline void vtent(const uint16_t *const u[3], size_t i, int odd, uint32_t v[3])
+{
+    for (int ch = 0; ch < 3; ch++) {
+        const uint32_t a = u[0][i + ch], b = u[1][i + ch], c = u[2][i + ch];
+        v[ch] = ((odd ? a : 3u * a) + 4u * b + (odd ? 3u * c : c) + BLOOM_VT_RND) >> 3;
+    }
+}
+
+void bloom_row_tent16_c(const uint16_t *const u[3], int odd, const uint16_t *add, uint16_t *dst, int x0,
+                        int n, int sw)
+{
+    int m = x0 >> 1;
+    uint32_t vp[3], vc[3], vn[3];
+    vtent(u, (size_t)imax(m - 1, 0) * 3u, odd, vp);
+    vtent(u, (size_t)m * 3u, odd, vc);
+    for (int x = x0; x < x0 + n; m++) {
+        vtent(u, (size_t)imin(m + 1, sw - 1) * 3u, odd, vn);
+        for (int side = x & 1; side < 2 && x < x0 + n; side++, x++) {
+            const size_t o = (size_t)(x - x0) * 3u;
+            for (int ch = 0; ch < 3; ch++) { /* horizontal: (3, 4, 1) even, (1, 4, 3) odd, half down */
+                const uint32_t t = ((side ? vp[ch] : 3u * vp[ch]) + 4u * vc[ch] +
+                                    (side ? 3u * vn[ch] : vn[ch]) + BLOOM_HT_RND) >>
+                                   3;
+                dst[o + ch] = (uint16_t)(t + (add ? add[o + ch] : 0u));
+            }
+        }
+        for (int ch = 0; ch < 3; ch++) {
+            vp[ch] = vc[ch];
+            vc[ch] = vn[ch];
+        }
+    }
+}
+
+#else
+typedef int bloom_row16_empty_t; /* (16-bit samples compiled out) */
+#endif
