@@ -301,7 +301,7 @@ static uint32_t input_step(const bloom_t *g, const bg_node_t *n, int i)
         const int from = n->in[i].node;
         const bg_node_t *src = from >= 0 ? &g->gr.node[from] : NULL;
         const int off = bg_base(n->in[i].map, n->xa) - (src ? src->xa : 0);
-        const size_t bytes = src ? (size_t)src->ch * src->sb /* (a sample's bytes) */
+        const size_t bytes = src ? (size_t)src->ch * BG_SB(src)
                                  : (size_t)(from == BG_SRC ? g->row.src_bpp : bg_aux_bpp(&g->row));
         return (uint32_t)((size_t)off * bytes);
     }

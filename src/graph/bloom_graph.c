@@ -33,7 +33,9 @@ int bg_node(bg_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level)
     n->w = w;
     n->h = h;
     n->ch = (uint8_t)ch;
+#if BLOOM_USE_S16
     n->sb = 4;
+#endif
     n->level = (int8_t)level;
     return g->nnodes++;
 }

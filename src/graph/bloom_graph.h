@@ -106,7 +106,6 @@ struct bg_node {
     bg_row_fn fn;
     int w, h;     /* size */
     uint8_t ch;   /* samples per pixel (1 or 3) */
-    uint8_t sb;   /* bytes per sample: 4 (uint32_t), or 2 (uint16_t: bg_s16) */
     int8_t level; /* pyramid level it belongs to (row memory per level) */
     uint8_t nin;  /* inputs */
     bool z;       /* zero-preserving: all-zero input rows make an all-zero row */
@@ -137,7 +136,17 @@ struct bg_node {
      * only what its readers use (bloom_plan; bg_params_t.views); its row function
      * sees its inputs from the columns it reads first on (bg_in_w). */
     int xa;
+#if BLOOM_USE_S16
+    uint8_t sb; /* bytes per sample: 4 (uint32_t), or 2 (uint16_t: bg_s16); last, in
+                   the struct's tail padding (no workspace on 64-bit hosts) */
+#endif
 };
+/* Bytes per sample of node n (4 where 16-bit samples are compiled out). */
+#if BLOOM_USE_S16
+#define BG_SB(n) ((n)->sb)
+#else
+#define BG_SB(n) 4u
+#endif
 
 /* The parameters a build hook returns beside its graph, which its row
  * functions then see (bg_ctx_t.par). The engine fills them in from the
@@ -202,15 +211,17 @@ void bg_levels(bg_graph_t *g, int n);
 /* A node of w x h x ch at `level`; returns its index, or -1 when full. */
 int bg_node(bg_graph_t *g, bg_row_fn fn, int w, int h, int ch, int level);
 /* Node n keeps uint16_t samples (16-bit rows, cfg.sample_bits). */
+#if BLOOM_USE_S16
 static inline void bg_s16(bg_graph_t *g, int n)
 {
     if (n >= 0 && n < g->nnodes)
         g->node[n].sb = 2;
 }
+#endif
 /* Bytes of one row of node n. */
 static inline size_t bg_row_bytes(const bg_node_t *n)
 {
-    return (size_t)n->w * n->ch * (BLOOM_USE_S16 ? n->sb : 4u);
+    return (size_t)n->w * n->ch * BG_SB(n);
 }
 /* Node n reads input `from` at rows base(r) + lo .. base(r) + hi. */
 void bg_input(bg_graph_t *g, int n, int from, bg_map_t map, int lo, int hi);
