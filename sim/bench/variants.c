@@ -40,6 +40,13 @@ static int preset_cod(bloom_config_t *cfg)
     return preset_row(cfg, BLOOM_PRESET_COD, 0); /* Bevy's threshold 0 */
 }
 
+/* 16-bit pyramid samples (cfg.sample_bits, sim/docs/fixed-point.md). */
+static int samples16(bloom_config_t *cfg)
+{
+    cfg->sample_bits = 16;
+    return bloom_query(cfg, NULL) == BLOOM_OK ? 0 : -1;
+}
+
 const bench_engine_t bench_engines[] = {
     {"RGB888->RGB888", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, NULL, NULL},
     {"XRGB8888->XRGB8888", BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888, 0u, NULL, NULL},
@@ -49,6 +56,9 @@ const bench_engine_t bench_engines[] = {
     {"XRGB8888->XRGB8888,no-AVX2", BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888, BLOOM_FLAG_NO_AVX2, NULL, NULL},
     {"XRGB8888->XRGB8888,C-only", BLOOM_FMT_XRGB8888, BLOOM_FMT_XRGB8888, BLOOM_FLAG_NO_SIMD, NULL, NULL},
     {"RGB565->RGB565,C-only", BLOOM_FMT_RGB565, BLOOM_FMT_RGB565, BLOOM_FLAG_NO_SIMD, NULL, NULL},
+    {"RGB888->RGB888,s16", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, samples16, NULL},
+    {"RGB565->RGB565,s16", BLOOM_FMT_RGB565, BLOOM_FMT_RGB565, 0u, samples16, NULL},
+    {"RGB888->RGB888,s16,C-only", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, BLOOM_FLAG_NO_SIMD, samples16, NULL},
     {"preset-gamedev", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, preset_gamedev, NULL},
     {"preset-xna", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, preset_xna, NULL},
     {"preset-attenuation", BLOOM_FMT_RGB888, BLOOM_FMT_RGB888, 0u, preset_attenuation, NULL},
