@@ -51,6 +51,15 @@
 #ifndef BLOOM_USE_S16
 #define BLOOM_USE_S16 (!BLOOM_SMALL)
 #endif
+/* With 16-bit samples, the pyramid levels whose rows are 16-bit (1 ..
+ * BLOOM_S16_LEVELS; 16: all of them). The deeper levels keep 32-bit rows:
+ * they are a quarter of the memory and less, and a level-k sample spreads
+ * over 4^k output pixels, so their roundings at the 16-bit step were most
+ * of that path's error (fixed-point.md, "16-bit samples": error and memory
+ * for 1, 2 and all). */
+#ifndef BLOOM_S16_LEVELS
+#define BLOOM_S16_LEVELS 2
+#endif
 
 /* Skip what a scene does not need: dark source rows, all-zero rows of every
  * level, output rows without bloom (a copy). 0 leaves the code out. */

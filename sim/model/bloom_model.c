@@ -420,13 +420,22 @@ void bloom_model_pyramid_free(bloom_model_pyramid_t *pyr)
     pyr->levels = 0;
 }
 
+/* Every sample of im times f (a power of two), narrowed (rounded half to
+ * even) when f < 1 and `round`. */
+static void scale(bloom_model_image_t *im, double f, int round)
+{
+    const size_t n = (size_t)im->w * (size_t)im->h * 3;
+    for (size_t i = 0; i < n; i++)
+        im->px[i] = round ? norm(1, im->px[i], 1.0 / f, RND_EVEN) : im->px[i] * f;
+}
+
 int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, const int src_max[3],
                         bloom_model_pyramid_t *out)
 {
     model_t m;
     bloom_model_image_t t;
     size_t i, count;
-    int L, k;
+    int L, k, st;
 
     if (!out)
         return -1;
@@ -453,14 +462,23 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
             for (k = 0; k < 3; k++)
                 v[k] = m.bt ? fdiv(v[k] * p->d1_scale[i] + KNEE_ONE / 2, KNEE_ONE) : v[k] * p->d1_scale[i];
     }
-    if (m.bt && p->sample_bits == 16) { /* narrowed to the 16-bit rings' units, half to even */
-        const double den = m.one / ldexp(1.0, s16_frac(&m, L));
-        for (i = 0; i < (size_t)out->D[1].w * (size_t)out->D[1].h * 3; i++)
-            out->D[1].px[i] = norm(1, out->D[1].px[i], den, RND_EVEN);
-    }
-    for (k = 1; k < L; k++)
-        if (bloom_model_box_down(&out->D[k], &out->D[k + 1], m.bt))
+    /* 16-bit samples: levels 1 .. top in G units (D_1 narrowed half to
+     * even); the deeper levels keep the internal units; the box into level
+     * top + 1 reads D_top widened, the tent out of it is narrowed half to
+     * even; U_1 is widened for B (exact) */
+    const int s16 = m.bt && p->sample_bits == 16, top = s16 ? (p->s16_levels ? p->s16_levels : 16) : 0;
+    const double step = s16 ? m.one / ldexp(1.0, s16_frac(&m, L)) : 1.0;
+    if (s16)
+        scale(&out->D[1], 1.0 / step, 1);
+    for (k = 1; k < L; k++) {
+        if (k == top)
+            scale(&out->D[k], step, 0);
+        st = bloom_model_box_down(&out->D[k], &out->D[k + 1], m.bt);
+        if (k == top)
+            scale(&out->D[k], 1.0 / step, 0);
+        if (st)
             goto fail;
+    }
 
     /* 4-5. UL = DL; Uk = Dk + tentup(Uk+1) (an exact add); B = tentup(U1) */
     if (image_alloc(&out->U[L], out->D[L].w, out->D[L].h))
@@ -469,22 +487,18 @@ int bloom_model_pyramid(const bloom_model_params_t *p, const uint32_t *src, cons
     for (k = L - 1; k >= 1; k--) {
         if (bloom_model_tent_up(&out->U[k + 1], out->D[k].w, out->D[k].h, &t, m.bt))
             goto fail;
+        if (k == top)
+            scale(&t, 1.0 / step, 1);
         out->U[k] = t;
         for (i = 0; i < (size_t)t.w * (size_t)t.h * 3; i++)
             out->U[k].px[i] += out->D[k].px[i];
     }
-    if (m.bt && p->sample_bits == 16) { /* widened back, exactly: B's tent runs in the internal units */
-        const double mul = m.one / ldexp(1.0, s16_frac(&m, L));
-        bloom_model_image_t w1;
-        if (image_alloc(&w1, out->U[1].w, out->U[1].h))
-            goto fail;
-        for (i = 0; i < (size_t)w1.w * (size_t)w1.h * 3; i++)
-            w1.px[i] = out->U[1].px[i] * mul;
-        k = bloom_model_tent_up(&w1, p->width, p->height, &out->B, m.bt);
-        bloom_model_image_free(&w1);
-        if (k)
-            goto fail;
-    } else if (bloom_model_tent_up(&out->U[1], p->width, p->height, &out->B, m.bt))
+    if (s16)
+        scale(&out->U[1], step, 0);
+    st = bloom_model_tent_up(&out->U[1], p->width, p->height, &out->B, m.bt);
+    if (s16)
+        scale(&out->U[1], 1.0 / step, 0);
+    if (st)
         goto fail;
     out->levels = L;
     return L;

@@ -37,6 +37,8 @@ typedef struct {
      * is widened back (times 2^(F-G)) before the final tent
      * (sim/docs/fixed-point.md, "16-bit samples"). */
     int sample_bits;
+    int s16_levels; /* with 16: levels 1 .. s16_levels 16-bit, the deeper ones in
+                       internal units (BLOOM_S16_LEVELS; 0: all) */
 } bloom_model_params_t;
 
 #define BLOOM_MODEL_F32 (-1) /* src_max: the word is a binary32 linear value */

@@ -45,6 +45,7 @@ int bloom_model_params_from(const bloom_model_preset_args_t *a, bloom_model_para
     p->intensity = c->intensity / 65536.0;
     p->lin_bits = BLOOM_LIN_BITS;
     p->sample_bits = c->sample_bits;
+    p->s16_levels = BLOOM_S16_LEVELS;
     bloom_model_quantize(c, p->lin_bits, &p->threshold_q, &p->knee_q, &p->intensity_q);
     return 0;
 }

@@ -160,8 +160,18 @@ static inline int bloom_s16_frac(int levels, uint32_t peak)
 /* dst[i] = src[i] / 2^sh rounded half to even (n samples); returns the OR
  * of the results (0: the row narrowed to zeros). */
 uint32_t bloom_row_narrow16_c(const uint32_t *src, uint16_t *dst, int n, int sh);
-/* dst[i] = src[i] << sh (n samples). */
-void bloom_row_widen16_c(const uint16_t *src, uint32_t *dst, int n, int sh);
+/* dst[i] = (src[i] / 2^sh rounded half to even) + (add ? add[i] : 0). */
+void bloom_row_narrow16_add_c(const uint32_t *src, const uint16_t *add, uint16_t *dst, int n, int sh);
+/* bloom_row_box_c of 16-bit rows into 32-bit samples: each sum widened
+ * (<< sh) and rounded as the 32-bit box rounds it. */
+void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh);
+/* The vertical tent of the flat output path (bloom_row_vtent_c) on 16-bit
+ * rows widened by sh: dst[i] = (((3 a[i] + 4 b[i] + c[i]) << sh) + 4) >> 3,
+ * the same integers; returns the OR of every dst[i]. */
+uint32_t bloom_row_vtent16w_c(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst, int n,
+                              int sh);
+/* bloom_row_tent_c (no add) of 16-bit rows widened by sh, into 32-bit samples. */
+void bloom_row_tent16w_c(const uint16_t *const u[3], int odd, uint32_t *dst, int x0, int n, int sw, int sh);
 /* bloom_row_box_c on 16-bit rows (sums in 32 bits; the same rounding). */
 void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
 /* bloom_row_tent_c on 16-bit rows (add may be NULL or equal dst). */
@@ -207,6 +217,10 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
  * decoded 8/6/5-bit samples). */
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o);
+/* bloom_row_out_k on U_1 rows of 16-bit samples, widened by sh in its sums
+ * (no widened copy of the rows). Not in builds without BLOOM_USE_S16. */
+void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
+                       const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o);
 
 /* Which SIMD twins this build has (bloom_row_sse2.c, bloom_row_neon.c). */
 #if !BLOOM_NO_SIMD && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))

@@ -40,10 +40,45 @@ uint32_t bloom_row_narrow16_c(const uint32_t *src, uint16_t *dst, int n, int sh)
     return any;
 }
 
-void bloom_row_widen16_c(const uint16_t *src, uint32_t *dst, int n, int sh)
+void bloom_row_narrow16_add_c(const uint32_t *src, const uint16_t *add, uint16_t *dst, int n, int sh)
 {
+    const uint32_t h = (1u << (sh - 1)) - 1u;
     for (int i = 0; i < n; i++)
-        dst[i] = (uint32_t)src[i] << sh;
+        dst[i] = (uint16_t)(((src[i] + h + ((src[i] >> sh) & 1u)) >> sh) + (add ? add[i] : 0u));
+}
+
+uint32_t bloom_row_vtent16w_c(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst, int n,
+                              int sh)
+{
+    uint32_t any = 0;
+    for (int i = 0; i < n; i++) { /* (3a + 4b + c) << sh < 2^19 << 9: no wrap */
+        dst[i] = ((((uint32_t)3u * a[i] + 4u * b[i] + c[i]) << sh) + BLOOM_VT_RND) >> 3;
+        any |= dst[i];
+    }
+    return any;
+}
+
+void bloom_row_tent16w_c(const uint16_t *const u[3], int odd, uint32_t *dst, int x0, int n, int sw, int sh)
+{
+    uint32_t v[3][3]; /* the vertical tents of columns m - 1, m, m + 1 */
+    for (int x = x0, m = -1; x < x0 + n; x++) {
+        if (x >> 1 != m) {
+            m = x >> 1;
+            const int col[3] = {imax(m - 1, 0), m, imin(m + 1, sw - 1)};
+            for (int j = 0; j < 3; j++)
+                for (int ch = 0; ch < 3; ch++) {
+                    const size_t i = (size_t)col[j] * 3u + (size_t)ch;
+                    const uint32_t s3 = odd ? (uint32_t)u[0][i] + 4u * u[1][i] + 3u * u[2][i]
+                                            : 3u * u[0][i] + 4u * u[1][i] + u[2][i];
+                    v[j][ch] = ((s3 << sh) + BLOOM_VT_RND) >> 3;
+                }
+        }
+        for (int ch = 0; ch < 3; ch++) { /* (3, 4, 1) even, (1, 4, 3) odd; 8 V < 2^32 */
+            const uint64_t t = x & 1 ? (uint64_t)v[0][ch] + 4u * (uint64_t)v[1][ch] + 3u * (uint64_t)v[2][ch]
+                                     : 3u * (uint64_t)v[0][ch] + 4u * (uint64_t)v[1][ch] + v[2][ch];
+            dst[(size_t)(x - x0) * 3u + (size_t)ch] = (uint32_t)((t + BLOOM_HT_RND) >> 3);
+        }
+    }
 }
 
 /* Column sum of four rows at column c (three channels). */
@@ -66,6 +101,25 @@ void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw
         colsum4(s, imin(2 * x + 2, sw - 1), d);
         for (int ch = 0; ch < 3; ch++) {
             dst[3 * x + ch] = (uint16_t)BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
+            a[ch] = c[ch];
+            b[ch] = d[ch];
+        }
+    }
+}
+
+void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh)
+{
+    uint32_t a[3], b[3], c[3], d[3];
+    if (dw < 1)
+        return;
+    colsum4(s, 0, a); /* column -1 clamps to 0 */
+    colsum4(s, 0, b);
+    for (int x = 0; x < dw; x++) {
+        colsum4(s, imin(2 * x + 1, sw - 1), c);
+        colsum4(s, imin(2 * x + 2, sw - 1), d);
+        for (int ch = 0; ch < 3; ch++) {
+            const uint32_t sum = (a[ch] + b[ch] + c[ch] + d[ch]) << sh; /* < 2^20 << 9 */
+            dst[3 * x + ch] = BLOOM_BOX_RND(sum);
             a[ch] = c[ch];
             b[ch] = d[ch];
         }

@@ -25,11 +25,11 @@
  * the intensity, then the composite and encode per output pixel. Same bits
  * as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
  * for I <= 223.8 and P + S < 2^32. */
-static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
+static void out_fast(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
     const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
-    const uint32_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
+    const void *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
     uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
     const int mw = (w + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
@@ -39,7 +39,16 @@ static void out_fast(const bloom_kernels_t *k, const uint32_t *const u[3], int o
         const size_t c0 = (size_t)lo * 3u;
         uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
         const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
-        if (!k->vtent(ua + c0, ub + c0, uc + c0, v0, 3 * (hi - lo + 1))) { /* V = 0: B = 0 here */
+        /* 16-bit rows (sh > 0: U_1 of cfg.sample_bits 16) are widened in the sums */
+        const uint32_t any =
+#if BLOOM_USE_S16
+            sh ? bloom_row_vtent16w_c((const uint16_t *)ua + c0, (const uint16_t *)ub + c0,
+                                      (const uint16_t *)uc + c0, v0, 3 * (hi - lo + 1), sh)
+               :
+#endif
+               k->vtent((const uint32_t *)ua + c0, (const uint32_t *)ub + c0, (const uint32_t *)uc + c0, v0,
+                        3 * (hi - lo + 1));
+        if (!any) { /* V = 0: B = 0 here */
             bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
             continue;
         }
@@ -111,7 +120,8 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
 #if !BLOOM_SMALL
     if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
         bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        out_fast(k, u, odd, src, dst, w, sw, o);
+        const void *const uv[3] = {u[0], u[1], u[2]};
+        out_fast(k, uv, 0, odd, src, dst, w, sw, o);
         return;
     }
 #endif
@@ -128,3 +138,29 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
         bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
     }
 }
+
+#if BLOOM_USE_S16
+void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
+                       const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
+{
+    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
+        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+        const void *const uv[3] = {u[0], u[1], u[2]};
+        out_fast(k, uv, sh, odd, src, dst, w, sw, o);
+        return;
+    }
+    /* the general path of bloom_row_out_k, the tent widening the samples */
+    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
+    uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
+    if (o->debug)
+        memset(sv, 0, sizeof sv);
+    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
+        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
+        bloom_row_tent16w_c(u, odd, bl, x0, n, sw, sh);
+        if (!o->debug)
+            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
+        k->composite(bl, sv, 3 * n, o->intensity);
+        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
+    }
+}
+#endif

@@ -112,43 +112,75 @@ static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
     return true;
 }
 
-/* U_1's three rows widened to the internal format (exact) in scratch rows
- * 0..2, then the 32-bit output stage on them. */
+/* The first 32-bit level (BLOOM_S16_LEVELS + 1): the box of 16-bit rows,
+ * its sums widened (<< (F - G)) and rounded as the 32-bit box rounds. */
+static bool fn_box16w(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                      void *dst)
+{
+    (void)r;
+    const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                  (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
+    bloom_row_box16w_c(s, (uint32_t *)dst, n->w, bg_node_in_w(ctx, n, 0), ctx->par.s16);
+    return true;
+}
+
+/* The last 16-bit level (BLOOM_S16_LEVELS): the 32-bit tent of the level
+ * below in scratch row 0, narrowed (half to even), plus the level's D. */
+static bool fn_add_tent_n16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
+                            const void *const *const in[BG_MAX_IN], void *dst)
+{
+    const uint16_t *d = (const uint16_t *)in[1][0];
+    if (bg_in_zero(ctx, 0, 0, 2)) {
+        memcpy(dst, d, (size_t)n->w * 3u * sizeof *d);
+        return true;
+    }
+    const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                  (const uint32_t *)in[0][2]};
+    uint32_t *t = bg_scratch(ctx, 0);
+    ctx->kern.tent(u, r & 1, NULL, t, 0, n->w, bg_node_in_w(ctx, n, 0));
+    bloom_row_narrow16_add_c(t, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, n->w * 3, ctx->par.s16);
+    return true;
+}
+
+/* The output of U_1's 16-bit rows: bg_fn_out_add with the tent widening
+ * the samples in its sums (bloom_row_out16_k). */
 static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
-    const int sw = bg_node_in_w(ctx, n, 0);
-    const void *wide[3];
-    const void *const src[1] = {in[1][0]};
-    if (!bg_in_zero(ctx, 0, 0, 2))
-        for (int j = 0; j < 3; j++) {
-            uint32_t *t = bg_scratch(ctx, j);
-            bloom_row_widen16_c((const uint16_t *)in[0][j], t, sw * 3, ctx->par.s16);
-            wide[j] = t;
-        }
+    const uint8_t *src = (const uint8_t *)in[1][0];
+    const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                  (const uint16_t *)in[0][2]};
+    if (bg_in_zero(ctx, 0, 0, 2))
+        bloom_row_copy_c(src, (uint8_t *)dst, n->w, &ctx->par.out);
     else
-        wide[0] = wide[1] = wide[2] = NULL; /* (not read: B = 0, the source row copied) */
-    const void *const *const win[BG_MAX_IN] = {wide, src, NULL};
-    return bg_fn_out_add(ctx, n, r, win, dst);
+        bloom_row_out16_k(&ctx->kern, u, ctx->par.s16, r & 1, src, (uint8_t *)dst, n->w,
+                          bg_node_in_w(ctx, n, 0), &ctx->par.out);
+    return true;
 }
 
 void bloom_stages_s16(bg_graph_t *g, bg_params_t *par)
 {
     par->s16 = (uint8_t)(BLOOM_LIN_BITS - bloom_s16_frac(g->L, bloom_knee_peak(&par->knee)));
-    /* three rows of level 1 in the internal format (D_1 before it is
-     * narrowed; U_1 widened for the output): no wider than level 1 */
-    par->scratch_rows = imax(par->scratch_rows, 3);
+    /* one row of level 1 in the internal format: D_1 before it is narrowed,
+     * or the tent out of the first 32-bit level before it is */
+    par->scratch_rows = imax(par->scratch_rows, 1);
     par->scratch_len = (size_t)g->w[1] * 3u + 16u;
+    const int top = BLOOM_S16_LEVELS; /* levels 1 .. top 16-bit, the deeper ones 32-bit */
     for (int i = 0; i < g->nnodes; i++) {
         bg_node_t *n = &g->node[i];
-        n->fn = n->fn == bg_fn_d1         ? fn_d1_16
-                : n->fn == bg_fn_box      ? fn_box16
-                : n->fn == bg_fn_add_tent ? fn_add_tent16
-                : n->fn == bg_fn_out_add  ? fn_out_add16
-                                          : NULL; /* (no other stage has a 16-bit twin: refused) */
+        const int k = n->level;
+        if (k > top + 1 || (k == top + 1 && n->fn != bg_fn_box)) /* 32-bit, reading 32-bit rows */
+            continue;
+        n->fn = n->fn == bg_fn_d1                     ? fn_d1_16
+                : n->fn == bg_fn_box && k <= top      ? fn_box16
+                : n->fn == bg_fn_box                  ? fn_box16w /* into level top + 1 */
+                : n->fn == bg_fn_add_tent && k < top  ? fn_add_tent16
+                : n->fn == bg_fn_add_tent && k == top ? fn_add_tent_n16 /* from level top + 1 */
+                : n->fn == bg_fn_out_add              ? fn_out_add16
+                                                      : NULL; /* (no other stage has a 16-bit twin) */
         if (!n->fn)
             g->failed = true;
-        if (i != g->out_node)
+        if (i != g->out_node && k <= top)
             bg_s16(g, i);
     }
 }
