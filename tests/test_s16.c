@@ -47,16 +47,15 @@ static void refusals(void)
     bloom_config_t q = c; /* RGBQ16 output is made from S + I*B: taken */
     q.out_fmt = BLOOM_FMT_RGBQ16;
     CHECK(bloom_query(&q, NULL) == BLOOM_OK);
-    for (int p = 1; p < BLOOM_PRESET_COUNT; p++) { /* the other presets' stages are 32-bit only */
+    for (int p = 1; p < BLOOM_PRESET_COUNT; p++) { /* gamedev, xna, arm, cod: 32-bit stages only */
         bloom_config_t o;
         bloom_config_default(&o, 64, 48);
         if (bloom_config_preset(&o, (bloom_preset_t)p) != BLOOM_OK)
             continue;
         o.sample_bits = 16;
-        if (p == BLOOM_PRESET_ATTENUATION)
-            o.aux_fmt = BLOOM_AUX_U8;
-        CHECKF(bloom_query(&o, NULL) == BLOOM_E_SAMPLE_BITS, "%s with 16-bit samples refused",
-               bloom_preset_name((bloom_preset_t)p));
+        const bloom_status_t want = p == BLOOM_PRESET_ATTENUATION ? BLOOM_OK : BLOOM_E_SAMPLE_BITS;
+        CHECKF(bloom_query(&o, NULL) == want, "%s with 16-bit samples: %s expected",
+               bloom_preset_name((bloom_preset_t)p), bloom_status_str(want));
     }
     CHECK(strstr(bloom_status_str(BLOOM_E_SAMPLE_BITS), "16") != NULL);
     /* G by level count at threshold 0 (D_1 up to 1.0): L * 2^G < 2^16 */
@@ -98,20 +97,27 @@ static void bit_exact(void)
         c.flags = (r & 4 ? BLOOM_FLAG_LINEAR : 0) | (r & 8 ? BLOOM_FLAG_DEBUG_VIEW : 0) |
                   (r & 16 ? BLOOM_FLAG_NO_SIMD : 0) | (r & 32 ? BLOOM_FLAG_NO_SKIP : 0) |
                   (r & 64 ? BLOOM_FLAG_COPY_SOURCE : 0) | (r & 128 ? BLOOM_FLAG_NO_AVX2 : 0);
+        void *aux = NULL;
+        ptrdiff_t astride = 0;
+        if (r & 1024) { /* attenuation: the same stages, D_1 times a depth factor */
+            bloom_config_preset(&c, BLOOM_PRESET_ATTENUATION);
+            c.aux_fmt = r & 2048 ? BLOOM_AUX_U16 : BLOOM_AUX_U8;
+            aux = aux_plane(w, h, c.aux_fmt, (uint32_t)it, &astride);
+        }
         frame_t src = frame_random(&c, c.in_fmt, (uint32_t)it);
         if (r & 256) { /* dark rows and dark blocks: the skip paths */
             for (int y = 0; y < h; y++)
                 if ((y / 5) % 2)
                     memset(src.p + (size_t)y * src.stride, 0, (size_t)w * (size_t)src.bpp);
         }
-        preset_conform_t pc = preset_conform(&c, &src, NULL, 0);
+        preset_conform_t pc = preset_conform(&c, &src, aux, astride);
         CHECKF(pc.ok, "%dx%d, %d levels: engine or model failed", w, h, c.levels);
         CHECKF(pc.bittrue_diff == 0, "%dx%d, %d levels, flags %x: %lld samples off the bit-true model", w, h,
                c.levels, (unsigned)c.flags, pc.bittrue_diff);
         diff += pc.bittrue_diff;
         runs++;
         /* a tile of the same frame: the bits of the whole frame there */
-        if (w > 2 && h > 2 && (r & 512)) {
+        if (w > 2 && h > 2 && (r & 512) && !aux) {
             frame_t whole = run_engine(&c, &src);
             bloom_config_t t = c;
             t.tile_x = (int)(rng_next(&s) % (uint32_t)(w - 1));
@@ -140,6 +146,7 @@ static void bit_exact(void)
             frame_free(&whole);
         }
         frame_free(&src);
+        free(aux);
     }
     printf("bit-true: %d random configurations, %lld samples off the model; %d tiles against their frames\n",
            runs, diff, tiles);
@@ -251,6 +258,25 @@ static void error_budget(void)
                 add(&a, &c, &img[i]);
             }
             snprintf(what, sizeof what, "unity s16 %s (3, 5, 8 levels) -> %s", images[i], oname[o]);
+            budget(what, &a, FLOOR_IMAGE);
+            /* attenuation at its defaults over a depth ramp */
+            memset(&a, 0, sizeof a);
+            bloom_config_t c;
+            bloom_config_default(&c, img[i].w, img[i].h);
+            bloom_config_preset(&c, BLOOM_PRESET_ATTENUATION);
+            c.sample_bits = 16;
+            c.in_fmt = img[i].fmt;
+            c.out_fmt = outs[o];
+            if (i == 0)
+                c.threshold = BLOOM_Q16(0.6);
+            ptrdiff_t astride;
+            void *aux = aux_plane(c.width, c.height, c.aux_fmt, 5u, &astride);
+            preset_conform_t pc = preset_conform(&c, &img[i], aux, astride);
+            free(aux);
+            CHECKF(pc.ok, "attenuation %s: engine or model failed", images[i]);
+            errstat_merge(&a.e, &pc.vs_float);
+            a.bt += pc.bittrue_diff;
+            snprintf(what, sizeof what, "attenuation s16 %s -> %s", images[i], oname[o]);
             budget(what, &a, FLOOR_IMAGE);
         }
     }

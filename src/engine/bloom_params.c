@@ -57,7 +57,7 @@ const char *bloom_status_str(bloom_status_t st)
         return "dst overlaps src rows still needed (in place: same format, stride)";
     case BLOOM_E_SAMPLE_BITS:
 #if BLOOM_USE_S16
-        return "sample_bits must be 16 or 32; 16 takes the default preset on 8/6/5-bit input only";
+        return "sample_bits must be 16 or 32; 16 takes unity and attenuation on 8/6/5-bit input only";
 #else
         return "sample_bits must be 32 (16-bit samples compiled out: BLOOM_USE_S16)";
 #endif
@@ -134,8 +134,10 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     if (c->sample_bits != 0 && c->sample_bits != 32) {
         /* 16-bit rows carry samples up to 1.0 (fixed-point.md, "16-bit
          * samples"): what 8/6/5-bit codes decode to, not RGBQ16's or
-         * RGBF32's 256.0; the default pipeline's stages only */
-        if (!BLOOM_USE_S16 || c->sample_bits != 16 || c->preset != BLOOM_PRESET_UNITY ||
+         * RGBF32's 256.0; the default pipeline's stages only (unity, and
+         * attenuation, whose first stage multiplies by at most 1) */
+        if (!BLOOM_USE_S16 || c->sample_bits != 16 ||
+            (c->preset != BLOOM_PRESET_UNITY && c->preset != BLOOM_PRESET_ATTENUATION) ||
             c->in_fmt == BLOOM_FMT_RGBQ16 || c->in_fmt == BLOOM_FMT_RGBF32)
             return BLOOM_E_SAMPLE_BITS;
     }

@@ -70,6 +70,16 @@ static bool d1_atten(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void 
     return true;
 }
 
+#if BLOOM_USE_S16
+/* 16-bit samples: d1_atten's row narrowed (the factor is at most 1, so the
+ * default's bound on D_1 holds). */
+static bool d1_atten16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                       void *dst)
+{
+    return bg_s16_d1(ctx, n, r, in, dst, d1_atten);
+}
+#endif
+
 static void defaults(bloom_config_t *cfg)
 {
     cfg->aux_fmt = BLOOM_AUX_U8;
@@ -91,6 +101,10 @@ static bloom_status_t validate(const bloom_config_t *cfg)
 static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
 {
     bg_build_out_add(g, bg_build_updown(g, d1_atten, true));
+#if BLOOM_USE_S16
+    if (g->cfg->sample_bits == 16)
+        bloom_stages_s16(g, par, d1_atten16);
+#endif
     if (!BLOOM_SMALL)
         par->views = true; /* the stages and d1_atten read their widths by bg_in_w */
     /* the factor is at most 1: what the knee zeroes stays zero */

@@ -23,7 +23,7 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
     bg_build_out_add(g, bg_build_updown(g, bg_fn_d1, false));
 #if BLOOM_USE_S16
     if (g->cfg->sample_bits == 16)
-        bloom_stages_s16(g, par);
+        bloom_stages_s16(g, par, bg_fn_d1_16);
 #endif
     if (!BLOOM_SMALL)
         par->views = true; /* the stages read their widths by bg_in_w */

@@ -78,13 +78,18 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
 #if BLOOM_USE_S16
 /* The same stages on 16-bit rows (bloom_row16.c; bloom_stages_s16). */
 
-/* D_1 made in the internal format in scratch row 0, then narrowed. */
-static bool fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                     void *dst)
+bool bg_s16_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+               void *dst, bg_row_fn d1)
 {
     uint32_t *t = bg_scratch(ctx, 0);
-    (void)bg_fn_d1(ctx, n, r, in, t);
+    (void)d1(ctx, n, r, in, t);
     return bloom_row_narrow16_c(t, (uint16_t *)dst, n->w * 3, ctx->par.s16) != 0;
+}
+
+bool bg_fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                 void *dst)
+{
+    return bg_s16_d1(ctx, n, r, in, dst, bg_fn_d1);
 }
 
 static bool fn_box16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
@@ -158,7 +163,7 @@ static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
     return true;
 }
 
-void bloom_stages_s16(bg_graph_t *g, bg_params_t *par)
+void bloom_stages_s16(bg_graph_t *g, bg_params_t *par, bg_row_fn d1_16)
 {
     par->s16 = (uint8_t)(BLOOM_LIN_BITS - bloom_s16_frac(g->L, bloom_knee_peak(&par->knee)));
     /* one row of level 1 in the internal format: D_1 before it is narrowed,
@@ -171,7 +176,8 @@ void bloom_stages_s16(bg_graph_t *g, bg_params_t *par)
         const int k = n->level;
         if (k > top + 1 || (k == top + 1 && n->fn != bg_fn_box)) /* 32-bit, reading 32-bit rows */
             continue;
-        n->fn = n->fn == bg_fn_d1                     ? fn_d1_16
+        const bool d1 = k == 1 && n->nin >= 1 && n->in[0].node == BG_SRC; /* the first stage */
+        n->fn = d1                                    ? d1_16
                 : n->fn == bg_fn_box && k <= top      ? fn_box16
                 : n->fn == bg_fn_box                  ? fn_box16w /* into level top + 1 */
                 : n->fn == bg_fn_add_tent && k < top  ? fn_add_tent16

@@ -15,9 +15,17 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
                    void *dst);
 
 /* The default pipeline's graph (built) turned to 16-bit rows (cfg.sample_bits
- * = 16): its stages' 16-bit twins, par->s16 and the scratch rows they use;
- * a stage without a twin fails the graph. Not in builds without BLOOM_USE_S16. */
-void bloom_stages_s16(bg_graph_t *g, bg_params_t *par);
+ * = 16) on levels 1 .. BLOOM_S16_LEVELS: its stages' 16-bit twins, d1_16
+ * for the first stage (bg_s16_d1 over the preset's own), par->s16 and the
+ * scratch row they use; a stage without a twin fails the graph. Not in
+ * builds without BLOOM_USE_S16. */
+void bloom_stages_s16(bg_graph_t *g, bg_params_t *par, bg_row_fn d1_16);
+/* The default's first stage on 16-bit rows (bg_s16_d1 over bg_fn_d1). */
+bool bg_fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                 void *dst);
+/* A 16-bit first stage: d1's 32-bit row (in scratch row 0), narrowed. */
+bool bg_s16_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+               void *dst, bg_row_fn d1);
 
 /* The default pipeline's down and up chains with d1_fn making level 1
  * (input 0: source rows 2r-1 .. 2r+2; input 1 with d1_aux: aux rows
