@@ -287,7 +287,13 @@ const char *bloom_status_str(bloom_status_t st);
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
-    (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + 100u) +                                       \
+    BLOOM_WORKSPACE_MAX_S(w, h, levels, src_bpp, copy, 32)
+/* The same for a sample width (cfg.sample_bits, 32 or 16). With 16 the
+ * rows of levels 1 and 2 are half as wide in bytes (48 w fewer) and one
+ * 32-bit scratch row of level 1 is added (6 w + 76 more): 100 w becomes
+ * 70 w, which holds for BLOOM_S16_LEVELS 1 as well (30 w fewer). */
+#define BLOOM_WORKSPACE_MAX_S(w, h, levels, src_bpp, copy, sample_bits)                                      \
+    (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + ((sample_bits) == 16 ? 70u : 100u)) +         \
      ((BLOOM_SCHED_TABLE ? 128ull : 64ull) << (levels)) +                                                    \
      (BLOOM_SCHED_TABLE ? 160ull : 64ull) * (unsigned long long)(levels) +                                   \
      (BLOOM_SCHED_TABLE ? 6ull * (unsigned long long)(h) : 0ull) +                                           \

@@ -306,6 +306,60 @@ static void workspace(void)
     }
 }
 
+/* BLOOM_WORKSPACE_MAX_S with 16: never below the exact size, and below the
+ * 32-bit bound. */
+static void workspace_macro(void)
+{
+    const int ws[] = {1, 2, 3, 5, 64, 257, 320, 640, 1280, 1920, 4000, 16384};
+    const int hs[] = {1, 2, 7, 131, 240, 480, 1080, 3000};
+    const bloom_format_t fmts[] = {BLOOM_FMT_RGB565, BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888};
+    int ok = 1, n = 0;
+    double worst = 0, gain = 0;
+    for (size_t wi = 0; wi < sizeof ws / sizeof ws[0]; wi++)
+        for (size_t hi = 0; hi < sizeof hs / sizeof hs[0]; hi++)
+            for (int lv = 1; lv <= 16; lv++)
+                for (int copy = 0; copy <= 1; copy++) {
+                    bloom_config_t c;
+                    bloom_config_default(&c, ws[wi], hs[hi]);
+                    c.levels = lv;
+                    c.sample_bits = 16;
+                    c.in_fmt = fmts[(wi + hi + (size_t)lv) % 3];
+                    c.flags = copy ? BLOOM_FLAG_COPY_SOURCE : 0;
+                    const size_t exact = bloom_workspace_size(&c);
+                    if (exact == 0)
+                        continue; /* too big for this address space (test_core checks the refusal) */
+                    const int bpp = bloom_format_bpp(c.in_fmt);
+                    const unsigned long long bound =
+                                                 BLOOM_WORKSPACE_MAX_S(c.width, c.height, lv, bpp, copy, 16),
+                                             b32 = BLOOM_WORKSPACE_MAX(c.width, c.height, lv, bpp, copy);
+                    n++;
+                    if (bound < exact || bound > b32) {
+                        ok = 0;
+                        fprintf(stderr, "%dx%d L%d copy%d: bound %llu, exact %zu, 32-bit bound %llu\n",
+                                c.width, c.height, lv, copy, bound, exact, b32);
+                    }
+                    bloom_info_t info;
+                    bloom_query(&c, &info);
+                    if (info.levels == lv && lv == 5 && !copy && c.width >= 320) {
+                        worst = (double)bound / (double)exact > worst ? (double)bound / (double)exact : worst;
+                        gain = (double)bound / (double)b32 > gain ? (double)bound / (double)b32 : gain;
+                    }
+                }
+    CHECK(ok);
+    printf(
+        "BLOOM_WORKSPACE_MAX_S(..., 16): %d configurations, none below the exact size nor above the 32-bit "
+        "bound; at 5 levels built (width >= 320) at most %.2fx the exact size, %.2fx the 32-bit bound\n",
+        n, worst, gain);
+    CHECK(worst < 1.5);
+    BLOOM_WORKSPACE_DEFINE(ws16, BLOOM_WORKSPACE_MAX_S(320, 240, 5, 2, 0, 16));
+    bloom_config_t c;
+    bloom_config_default(&c, 320, 240);
+    c.in_fmt = c.out_fmt = BLOOM_FMT_RGB565;
+    c.sample_bits = 16;
+    bloom_t *b = NULL;
+    CHECK(bloom_init(&b, ws16, sizeof ws16, &c) == BLOOM_OK);
+}
+
 int main(void)
 {
 #if !BLOOM_USE_S16
@@ -317,6 +371,7 @@ int main(void)
     worst_case();
     error_budget();
     workspace();
+    workspace_macro();
     return harness_finish();
 #endif
 }
