@@ -52,7 +52,8 @@ typedef struct {
     int nweights;
     double weights[BLOOM_MAX_LEVELS];
     gboolean saturate, additive, baked;
-    int radius; /* 0: the level count is `levels` */
+    int radius;      /* 0: the level count is `levels` */
+    int sample_bits; /* 32 or 16 (cfg.sample_bits) */
     unsigned given;
     GstBloomAux *aux; /* NULL: no plane */
 } GstBloomSettings;

@@ -18,6 +18,7 @@ void gst_bloom_settings_init(GstBloomSettings *s)
     s->max_reduction = 0.25;
     s->tint[0] = s->tint[1] = s->tint[2] = 1.0;
     s->passes = 3;
+    s->sample_bits = 32;
 }
 
 void gst_bloom_settings_copy(GstBloomSettings *dst, const GstBloomSettings *src)
@@ -111,6 +112,7 @@ bloom_status_t gst_bloom_settings_config(const GstBloomSettings *s, int w, int h
         }
         cfg->aux_fmt = s->aux->fmt;
     }
+    cfg->sample_bits = s->sample_bits;
     st = bloom_query(cfg, info);
     if (st == BLOOM_OK)
         return st;

@@ -27,7 +27,8 @@ enum {
     PROP_RADIUS,
     PROP_AUX_LOCATION,
     PROP_IN_PLACE,
-    PROP_N_THREADS
+    PROP_N_THREADS,
+    PROP_SAMPLE_BITS
 };
 
 #define GST_TYPE_BLOOM_PRESET (gst_bloom_preset_get_type())
@@ -112,6 +113,9 @@ void gst_bloom_set_property(GObject *object, guint id, const GValue *value, GPar
         break;
     case PROP_LEVELS:
         s->levels = g_value_get_int(value);
+        break;
+    case PROP_SAMPLE_BITS:
+        s->sample_bits = g_value_get_int(value);
         break;
     case PROP_VIEW:
         s->bloom_only = g_value_get_enum(value) == 1;
@@ -276,6 +280,9 @@ void gst_bloom_get_property(GObject *object, guint id, GValue *value, GParamSpec
     case PROP_RADIUS:
         g_value_set_int(value, s->radius);
         break;
+    case PROP_SAMPLE_BITS:
+        g_value_set_int(value, s->sample_bits);
+        break;
     case PROP_AUX_LOCATION:
         g_value_set_string(value, s->aux ? s->aux->path : NULL);
         break;
@@ -327,6 +334,11 @@ void gst_bloom_install_properties(GObjectClass *oc)
                              "Pyramid depth asked for (fewer where the frame is too small; gamedev "
                              "always 3; cod: radius overrides it)",
                              1, BLOOM_MAX_LEVELS, 5, GB_CTRL));
+    install(oc, PROP_SAMPLE_BITS,
+            g_param_spec_int("sample-bits", "Sample bits",
+                             "Bits per pyramid sample: 32, or 16 (unity and attenuation on 8-bit video: "
+                             "about 0.7x the memory; other values and presets are refused)",
+                             16, 32, 32, GB_FLAGS));
     install(oc, PROP_VIEW,
             g_param_spec_enum("view", "View", "What comes out: the frame with its glow, or the glow alone",
                               GST_TYPE_BLOOM_VIEW, 0, GB_FLAGS));

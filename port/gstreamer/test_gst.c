@@ -164,7 +164,10 @@ GST_START_TEST(test_property_ranges)
     static const struct {
         const char *name;
         int min, max, def, in, out;
-    } n[] = {{"levels", 1, 16, 5, 9, 17}, {"passes", 1, 8, 3, 6, 0}, {"radius", 0, 1 << 20, 0, 40, -1}};
+    } n[] = {{"levels", 1, 16, 5, 9, 17},
+             {"passes", 1, 8, 3, 6, 0},
+             {"radius", 0, 1 << 20, 0, 40, -1},
+             {"sample-bits", 16, 32, 32, 16, 33}};
     GstElement *e = gst_element_factory_make("bloom", NULL);
     GObjectClass *oc = G_OBJECT_GET_CLASS(e);
     for (gsize i = 0; i < G_N_ELEMENTS(d); i++) {

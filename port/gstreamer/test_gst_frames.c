@@ -87,6 +87,13 @@ GST_START_TEST(test_pipeline_parameters)
         c.flags |= BLOOM_FLAG_SATURATE;
         c.threshold = BLOOM_Q16(0.4);
         break;
+    case 4: /* 16-bit samples */
+        g_object_set(p.bloom, "sample-bits", 16, "threshold", 0.8, "levels", 4, NULL);
+        tg_config(&c, BLOOM_PRESET_UNITY, W, H, f->bf);
+        c.sample_bits = 16;
+        c.threshold = BLOOM_Q16(0.8);
+        c.levels = 4;
+        break;
     default:
         gst_util_set_object_arg(G_OBJECT(p.bloom), "preset", "cod");
         g_object_set(p.bloom, "radius", 40, "tint", "1,0.8,0.6", "weights", "0.5,0.75", "additive", TRUE,
@@ -374,7 +381,7 @@ void tg_add_frame_tests(Suite *s)
 {
     TCase *tc = tg_tcase(s, "frames");
     tcase_add_loop_test(tc, test_pipeline_presets, 0, N_NO_AUX * TG_NFMTS);
-    tcase_add_loop_test(tc, test_pipeline_parameters, 0, 4 * TG_NFMTS);
+    tcase_add_loop_test(tc, test_pipeline_parameters, 0, 5 * TG_NFMTS);
     tcase_add_test(tc, test_pipeline_aux);
     tcase_add_loop_test(tc, test_in_place, 0, 3 * TG_NFMTS);
     tcase_add_loop_test(tc, test_format_order, 0, TG_NFMTS);

@@ -64,6 +64,7 @@ typedef struct {
     int fps;                /* --fps N (VIDIOC_S_PARM), 0: the driver's */
     bloom_preset_t preset;  /* --preset NAME, default unity */
     int levels;             /* bloom parameters: the preset's defaults (bloom_config_preset) */
+    int sample_bits;        /* --sample-bits 16|32 (cfg.sample_bits), default 32 */
     uint32_t threshold, knee, intensity; /* Q16.16 */ /* unless given on the command line */
     bloom_preset_params_t params;       /* the preset's parameters, defaults (at --size) then the options */
     bloom_preset_params_t given_params; /* the preset options given (given_mask: CAM_P_*) */

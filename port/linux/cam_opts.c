@@ -31,6 +31,8 @@ void cam_usage(void *stream)
           "                        mjpeg jpeg (decoded by libjpeg)\n"
           "  --fps N               frame rate asked of the driver (VIDIOC_S_PARM), 1..1000\n"
           "  --levels N            pyramid levels, 1..16 (default 5)\n"
+          "  --sample-bits B       pyramid samples, 32 (default) or 16: unity and attenuation,\n"
+          "                        about 0.7x the engine's memory\n"
           "  --threshold T         0..256 (default 1.0)\n"
           "  --knee S              0..1 (default 0.5)\n"
           "  --intensity I         0..10 (default 1.0)\n"
@@ -159,11 +161,11 @@ static int parse_gpio(const char *s, cam_gpio_spec_t *g)
 }
 
 static const char *const with_value[] = {
-    "--device",    "--fb",      "--size",    "--format",   "--levels",  "--threshold",   "--knee",
-    "--intensity", "--mode",    "--frames",  "--buffers",  "--timeout", "--gpio-frame",  "--gpio-button",
-    "--record",    "--dump-fb", "--preset",  "--strength", "--passes",  "--attenuation", "--max-reduction",
-    "--aux",       "--tint",    "--weights", "--radius",   "--threads", "--reconnect",   "--latest",
-    "--debounce",  "--fps",     "--vt",      NULL};
+    "--device",    "--fb",      "--size",    "--format",      "--levels",  "--threshold",   "--knee",
+    "--intensity", "--mode",    "--frames",  "--buffers",     "--timeout", "--gpio-frame",  "--gpio-button",
+    "--record",    "--dump-fb", "--preset",  "--strength",    "--passes",  "--attenuation", "--max-reduction",
+    "--aux",       "--tint",    "--weights", "--radius",      "--threads", "--reconnect",   "--latest",
+    "--debounce",  "--fps",     "--vt",      "--sample-bits", NULL};
 
 /* The display's options (drm_pick.c), apart from the table above. */
 static const char *const display_value[] = {"--display", "--drm-card", "--drm-mode", "--drm-format", NULL};
@@ -263,6 +265,7 @@ void cam_opts_config(const cam_opts_t *o, int w, int h, bloom_config_t *cfg)
     given_params(o, &cfg->p);
     cfg->flags |= o->preset_flags;
     cfg->aux_fmt = o->aux_fmt;
+    cfg->sample_bits = o->sample_bits;
 }
 
 int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errlen)
@@ -277,6 +280,7 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
     o->height = 480;
     o->format = CAM_FMT_AUTO;
     o->levels = d.levels;
+    o->sample_bits = 32;
     o->threshold = d.threshold;
     o->knee = d.soft_knee;
     o->intensity = d.intensity;
@@ -364,6 +368,10 @@ int cam_parse_opts(cam_opts_t *o, int argc, char **argv, char *err, size_t errle
             if (parse_long(v, 1, 1000, &l))
                 return cam_errf(err, errlen, "--fps: '%s' is not 1..1000", v);
             o->fps = (int)l;
+        } else if (!strcmp(name, "--sample-bits")) {
+            if (parse_long(v, 16, 32, &l) || (l != 16 && l != 32))
+                return cam_errf(err, errlen, "--sample-bits: '%s' is not 16 or 32", v);
+            o->sample_bits = (int)l;
         } else if (!strcmp(name, "--levels")) {
             if (parse_long(v, 1, BLOOM_MAX_LEVELS, &l))
                 return cam_errf(err, errlen, "--levels: '%s' is not 1..16", v);

@@ -87,6 +87,12 @@ static void test_opts(void)
         CHECKF(parse(&o, err, "--threads", thr[k], NULL, NULL) == 0 && o.threads == atoi(thr[k]),
                "--threads %s: %s", thr[k], err);
     CHECKF(parse(&o, err, "--threads=2", "--format", "grey", NULL) == 0 && o.threads == 2, "--threads=2");
+    CHECKF(parse(&o, err, NULL, NULL, NULL, NULL) == 0 && o.sample_bits == 32, "sample bits: 32 by default");
+    bloom_config_t sc;
+    CHECKF(parse(&o, err, "--sample-bits", "16", NULL, NULL) == 0 && o.sample_bits == 16, "--sample-bits 16: %s",
+           err);
+    cam_opts_config(&o, 64, 48, &sc);
+    CHECK(sc.sample_bits == 16 && bloom_query(&sc, NULL) == BLOOM_OK);
 
     static const struct {
         const char *a0, *a1, *a2, *a3, *msg;
@@ -98,6 +104,8 @@ static void test_opts(void)
         {"--size", "0x0", NULL, NULL, "--size: '0x0'"},
         {"--levels", "0", NULL, NULL, "--levels: '0' is not 1..16"},
         {"--levels", "17", NULL, NULL, "--levels"},
+        {"--sample-bits", "24", NULL, NULL, "--sample-bits: '24' is not 16 or 32"},
+        {"--sample-bits", "16", "--preset", "xna", "sample_bits must be 16 or 32"},
         {"--threshold", "300", NULL, NULL, "--threshold: '300' is not 0..256"},
         {"--knee", "1.5", NULL, NULL, "--knee"},
         {"--intensity", "-1", NULL, NULL, "--intensity"},
