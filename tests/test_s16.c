@@ -8,6 +8,7 @@
  * mean); and the workspace each width needs. */
 #include <stdlib.h>
 
+#include "bloom_kernels.h"
 #include "imgframe.h"
 #include "preset_conform.h"
 
@@ -150,6 +151,60 @@ static void bit_exact(void)
     }
     printf("bit-true: %d random configurations, %lld samples off the model; %d tiles against their frames\n",
            runs, diff, tiles);
+}
+
+/* The 16-bit kernels' twins (the SSE2 ones on x86-64; elsewhere the C ones
+ * against themselves, and test-cross runs this on ARM) and the flat tent
+ * against the C tent, on random rows, every rounding residue and the
+ * largest values the format's bound allows. */
+static void twins(void)
+{
+    bloom_kernels_t simd, c;
+    bloom_kernels_select(&simd, 0);
+    bloom_kernels_select(&c, BLOOM_FLAG_NO_SIMD);
+    uint32_t s = 99;
+    long bad = 0, cases = 0;
+    for (int it = 0; it < 400; it++) {
+        const int n = 1 + (int)(rng_next(&s) % 200), sh = 1 + (int)(rng_next(&s) % 9);
+        uint32_t src[600], w32a[600], w32b[600];
+        uint16_t a[600], b[600], cc[600], d1[600], d2[600], add[600];
+        for (int i = 0; i < 3 * n; i++) { /* narrowed values within 0 .. 65535 */
+            const uint32_t top = (65535u << sh) + (1u << (sh - 1)) - 1u;
+            const uint32_t r = rng_next(&s);
+            src[i] = r & 1 ? top - (r >> 24) : (r >> 8) % (top + 1u);
+            a[i] = (uint16_t)(it & 1 ? 65535u - (rng_next(&s) & 15u) : rng_next(&s));
+            b[i] = (uint16_t)rng_next(&s);
+            cc[i] = (uint16_t)(it & 2 ? 65535u : rng_next(&s));
+            add[i] = (uint16_t)(rng_next(&s) & 4095u);
+        }
+        const uint32_t o1 = bloom_row_narrow16_k(&simd, src, d1, 3 * n, sh),
+                       o2 = bloom_row_narrow16_c(src, d2, 3 * n, sh);
+        bad += o1 != o2 || memcmp(d1, d2, (size_t)(3 * n) * 2u);
+        const uint32_t v1 = bloom_row_vtent16w_k(&simd, a, b, cc, w32a, 3 * n, sh - 1),
+                       v2 = bloom_row_vtent16w_c(a, b, cc, w32b, 3 * n, sh - 1);
+        bad += v1 != v2 || memcmp(w32a, w32b, (size_t)(3 * n) * 4u);
+        /* the flat tent: sw low-resolution columns, a row of 2 sw or 2 sw - 1 */
+        const int sw = 1 + n / 2, w = 2 * sw - (it & 4 ? 1 : 0);
+        if (3 * w <= 600) {
+            for (int i = 0; i < 3 * sw; i++) { /* U values of a 16-bit ring (<= 65535 - 4095 with add) */
+                a[i] = (uint16_t)(a[i] % 61440u);
+                b[i] = (uint16_t)(b[i] % 61440u);
+                cc[i] = (uint16_t)(cc[i] % 61440u);
+            }
+            const uint16_t *const u[3] = {a, b, cc};
+            for (int k = 0; k < 2; k++) {
+                const bloom_kernels_t *ks[2] = {&simd, &c};
+                bloom_row_tent16_k(ks[k], u, it & 8 ? 1 : 0, it & 16 ? add : NULL, d1, w, sw);
+                bloom_row_tent16_c(u, it & 8 ? 1 : 0, it & 16 ? add : NULL, d2, 0, w, sw);
+                bad += memcmp(d1, d2, (size_t)(3 * w) * 2u) != 0;
+            }
+        }
+        cases++;
+    }
+    CHECKF(bad == 0, "16-bit kernels (%s): %ld of %ld cases differ from C", simd.name, bad, cases);
+    printf(
+        "16-bit kernels, %s against C: %ld random cases, narrowing, vertical tent, flat tent: %ld differ\n",
+        simd.name, cases, bad);
 }
 
 /* Every sample at 1.0, threshold 0 (everything blooms), as deep as each
@@ -367,6 +422,7 @@ int main(void)
     return harness_finish();
 #else
     refusals();
+    twins();
     bit_exact();
     worst_case();
     error_budget();

@@ -217,6 +217,16 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
  * decoded 8/6/5-bit samples). */
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o);
+/* The 16-bit kernels of k's instruction set: the SSE2 twins with an SSE2 or
+ * AVX2 set (bloom_row16_sse2.c), the C ones otherwise; same bits. */
+uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uint16_t *dst, int n, int sh);
+uint32_t bloom_row_vtent16w_k(const bloom_kernels_t *k, const uint16_t *a, const uint16_t *b,
+                              const uint16_t *c, uint32_t *dst, int n, int sh);
+/* bloom_row_tent16_c for a whole row (x0 = 0) through flat passes: the
+ * vertical tent (bloom_row_vtent16w_k, sh 0), k's horizontal tent into
+ * even and odd columns, the interleave with add. Same bits. */
+void bloom_row_tent16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int odd, const uint16_t *add,
+                        uint16_t *dst, int n, int sw);
 /* bloom_row_out_k on U_1 rows of 16-bit samples, widened by sh in its sums
  * (no widened copy of the rows). Not in builds without BLOOM_USE_S16. */
 void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
@@ -289,5 +299,12 @@ static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
 
 /* A row with B = 0: the source decoded and encoded again (no tent). */
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
+
+/* The SSE2 twins of the 16-bit kernels (bloom_row16_sse2.c). */
+#if defined(BLOOM_SIMD_SSE2) && BLOOM_USE_S16
+uint32_t bloom_row_narrow16_sse2(const uint32_t *src, uint16_t *dst, int n, int sh);
+uint32_t bloom_row_vtent16w_sse2(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst,
+                                 int n, int sh);
+#endif
 
 #endif

@@ -4,6 +4,8 @@
  * formed in 32 bits and rounded as the 32-bit kernels round them
  * (sim/docs/fixed-point.md, "16-bit samples": every result fits in 16
  * bits by the bound U_k <= (L - k + 1) * 2^G < 2^16). */
+#include <string.h>
+
 #include "bloom_kernels.h"
 
 #if BLOOM_USE_S16
@@ -156,6 +158,62 @@ void bloom_row_tent16_c(const uint16_t *const u[3], int odd, const uint16_t *add
         for (int ch = 0; ch < 3; ch++) {
             vp[ch] = vc[ch];
             vc[ch] = vn[ch];
+        }
+    }
+}
+
+uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uint16_t *dst, int n, int sh)
+{
+#if defined(BLOOM_SIMD_SSE2)
+    if (bloom_kernels_simd(k))
+        return bloom_row_narrow16_sse2(src, dst, n, sh);
+#endif
+    (void)k;
+    return bloom_row_narrow16_c(src, dst, n, sh);
+}
+
+uint32_t bloom_row_vtent16w_k(const bloom_kernels_t *k, const uint16_t *a, const uint16_t *b,
+                              const uint16_t *c, uint32_t *dst, int n, int sh)
+{
+#if defined(BLOOM_SIMD_SSE2)
+    if (bloom_kernels_simd(k))
+        return bloom_row_vtent16w_sse2(a, b, c, dst, n, sh);
+#endif
+    (void)k;
+    return bloom_row_vtent16w_c(a, b, c, dst, n, sh);
+}
+
+/* Low-resolution columns per chunk of bloom_row_tent16_k (stack: 9 x 32 words). */
+#define TENT16_CH 32
+
+void bloom_row_tent16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int odd, const uint16_t *add,
+                        uint16_t *dst, int n, int sw)
+{
+    if (!k->htent_eo || sw < 2 || sw < (n + 1) / 2) {
+        bloom_row_tent16_c(u, odd, add, dst, 0, n, sw);
+        return;
+    }
+    const uint16_t *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
+    uint32_t vb[3 * (TENT16_CH + 2)], eo[6 * TENT16_CH]; /* vb[3 j] is column m0 - 1 + j */
+    const int mw = (n + 1) / 2;
+    for (int m0 = 0; m0 < mw; m0 += TENT16_CH) {
+        const int nn = imin(TENT16_CH, mw - m0), np = imin(2 * nn, n - 2 * m0);
+        const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + nn, sw - 1); /* columns read */
+        const size_t c0 = (size_t)lo * 3u;
+        /* the vertical tent's (3, 4, 1) with the rows in that order: sh 0 */
+        (void)bloom_row_vtent16w_k(k, ua + c0, ub + c0, uc + c0, vb + (size_t)(lo - m0 + 1) * 3u,
+                                   3 * (hi - lo + 1), 0);
+        if (m0 == 0) /* column -1 is column 0 */
+            memcpy(vb, vb + 3, 3u * sizeof *vb);
+        if (m0 + nn == sw) /* column sw is column sw - 1 */
+            memcpy(vb + 3 * (nn + 1), vb + 3 * nn, 3u * sizeof *vb);
+        (void)k->htent_eo(vb + 3, eo, eo + 3 * TENT16_CH, 3 * nn);
+        uint16_t *d = dst + (size_t)m0 * 6u;
+        const uint16_t *ad = add ? add + (size_t)m0 * 6u : NULL;
+        for (int x = 0; x < np; x++) { /* pixel x: column x / 2 of the even or the odd half */
+            const uint32_t *p = eo + (x & 1 ? 3 * TENT16_CH : 0) + 3 * (x >> 1);
+            for (int c = 0; c < 3; c++)
+                d[3 * x + c] = (uint16_t)(p[c] + (ad ? ad[3 * x + c] : 0u));
         }
     }
 }

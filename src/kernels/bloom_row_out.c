@@ -42,7 +42,7 @@ static void out_fast(const bloom_kernels_t *k, const void *const u[3], int sh, i
         /* 16-bit rows (sh > 0: U_1 of cfg.sample_bits 16) are widened in the sums */
         const uint32_t any =
 #if BLOOM_USE_S16
-            sh ? bloom_row_vtent16w_c((const uint16_t *)ua + c0, (const uint16_t *)ub + c0,
+            sh ? bloom_row_vtent16w_k(k, (const uint16_t *)ua + c0, (const uint16_t *)ub + c0,
                                       (const uint16_t *)uc + c0, v0, 3 * (hi - lo + 1), sh)
                :
 #endif

@@ -83,7 +83,7 @@ bool bg_s16_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const
 {
     uint32_t *t = bg_scratch(ctx, 0);
     (void)d1(ctx, n, r, in, t);
-    return bloom_row_narrow16_c(t, (uint16_t *)dst, n->w * 3, ctx->par.s16) != 0;
+    return bloom_row_narrow16_k(&ctx->kern, t, (uint16_t *)dst, n->w * 3, ctx->par.s16) != 0;
 }
 
 bool bg_fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
@@ -112,7 +112,7 @@ static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
     }
     const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2]};
-    bloom_row_tent16_c(u, r & 1, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, 0, n->w,
+    bloom_row_tent16_k(&ctx->kern, u, r & 1, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, n->w,
                        bg_node_in_w(ctx, n, 0));
     return true;
 }
