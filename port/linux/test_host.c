@@ -89,8 +89,8 @@ static void test_opts(void)
     CHECKF(parse(&o, err, "--threads=2", "--format", "grey", NULL) == 0 && o.threads == 2, "--threads=2");
     CHECKF(parse(&o, err, NULL, NULL, NULL, NULL) == 0 && o.sample_bits == 32, "sample bits: 32 by default");
     bloom_config_t sc;
-    CHECKF(parse(&o, err, "--sample-bits", "16", NULL, NULL) == 0 && o.sample_bits == 16, "--sample-bits 16: %s",
-           err);
+    CHECKF(parse(&o, err, "--sample-bits", "16", NULL, NULL) == 0 && o.sample_bits == 16,
+           "--sample-bits 16: %s", err);
     cam_opts_config(&o, 64, 48, &sc);
     CHECK(sc.sample_bits == 16 && bloom_query(&sc, NULL) == BLOOM_OK);
 
