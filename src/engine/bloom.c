@@ -463,8 +463,13 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
     info->src_x = tmp.row.win_x;
     info->src_y = tmp.row.win_y;
 #endif
-    info->sample_bits = BLOOM_USE_S16 && tmp.row.par.s16 ? 16 : 32;
+#if BLOOM_USE_S16
+    info->sample_bits = tmp.row.par.s16 ? 16 : 32;
     info->sample_frac = BLOOM_LIN_BITS - tmp.row.par.s16;
+#else
+    info->sample_bits = 32;
+    info->sample_frac = BLOOM_LIN_BITS;
+#endif
     info->src_w = tmp.gr.w[0];
     info->src_h = tmp.gr.h[0];
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);

@@ -40,13 +40,13 @@ const char *bloom_status_str(bloom_status_t st)
     case BLOOM_E_ALIGN:
         return "workspace not aligned to BLOOM_WORKSPACE_ALIGN";
     case BLOOM_E_BUSY:
-        return "source ring full: pull output rows before pushing more";
+        return "source ring full: pull before pushing more";
     case BLOOM_E_STATE:
-        return "call out of order (push after the last row, or no bloom_begin)";
+        return "out of order: push after the last row, or no bloom_begin";
     case BLOOM_E_INTERNAL:
-        return "internal error: a ring row was overwritten while needed";
+        return "internal: a ring row was overwritten while needed";
     case BLOOM_E_TOO_BIG:
-        return "workspace larger than the address space (fewer levels or a smaller frame)";
+        return "workspace beyond the address space: fewer levels or a smaller frame";
     case BLOOM_E_PRESET:
         return "preset unknown or compiled out";
     case BLOOM_E_AUX:
@@ -59,7 +59,7 @@ const char *bloom_status_str(bloom_status_t st)
 #if BLOOM_USE_S16
         return "sample_bits must be 16 or 32; 16 takes unity and attenuation on 8/6/5-bit input only";
 #else
-        return "sample_bits must be 32 (16-bit samples compiled out: BLOOM_USE_S16)";
+        return "sample_bits not 32"; /* (16-bit samples compiled out: BLOOM_USE_S16 0) */
 #endif
 #if BLOOM_USE_GRAPH /* only presets other than the default return these */
     case BLOOM_E_STRENGTH:
@@ -131,16 +131,21 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     const bloom_preset_ops_t *ops = bloom_preset_ops(c->preset);
     if (!ops)
         return BLOOM_E_PRESET;
+#if BLOOM_USE_S16
     if (c->sample_bits != 0 && c->sample_bits != 32) {
         /* 16-bit rows carry samples up to 1.0 (fixed-point.md, "16-bit
          * samples"): what 8/6/5-bit codes decode to, not RGBQ16's or
          * RGBF32's 256.0; the default pipeline's stages only (unity, and
          * attenuation, whose first stage multiplies by at most 1) */
-        if (!BLOOM_USE_S16 || c->sample_bits != 16 ||
+        if (c->sample_bits != 16 ||
             (c->preset != BLOOM_PRESET_UNITY && c->preset != BLOOM_PRESET_ATTENUATION) ||
             c->in_fmt == BLOOM_FMT_RGBQ16 || c->in_fmt == BLOOM_FMT_RGBF32)
             return BLOOM_E_SAMPLE_BITS;
     }
+#else
+    if ((unsigned)c->sample_bits & ~32u) /* 0 or 32 */
+        return BLOOM_E_SAMPLE_BITS;
+#endif
     if (c->aux_fmt != BLOOM_AUX_NONE && c->aux_fmt != BLOOM_AUX_U8 && c->aux_fmt != BLOOM_AUX_U16)
         return BLOOM_E_AUX;
     return ops->validate(c); /* the preset checks its own parameters, flags and aux plane */

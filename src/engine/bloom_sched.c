@@ -170,7 +170,11 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 #endif
             if (BLOOM_USE_SKIP && (tag & ZBIT))
                 zm |= 1u << (j - ip->lo);
+#if BLOOM_USE_S16
             rows[used++] = src ? (const void *)((const uint8_t *)src->buf + (size_t)slot * bg_row_bytes(src))
+#else
+            rows[used++] = src ? (const void *)(src->buf + (size_t)slot * (size_t)src->w * src->ch)
+#endif
                                : src_slot(g, from, slot);
         }
         if (!BLOOM_USE_SKIP)
