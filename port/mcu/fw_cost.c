@@ -66,6 +66,9 @@ static bloom_status_t config(bloom_config_t *c, const fw_cost_job_t *j, int s)
     }
     if (j->levels > 0) /* 0: the preset's own level count */
         c->levels = j->levels;
+#ifdef BLOOM_COST_SAMPLE_BITS /* make target-cost's width (COST_CFLAGS_16) */
+    c->sample_bits = BLOOM_COST_SAMPLE_BITS;
+#endif
     if (j->strip > 0 && j->strip < j->width) {
         c->tile_x = s * j->strip;
         c->tile_w = j->width - c->tile_x < j->strip ? j->width - c->tile_x : j->strip;

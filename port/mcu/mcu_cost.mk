@@ -14,13 +14,14 @@
 # with COST_JOBS=2 on this 2-core machine, shared with other work).
 #
 # Sample widths: COST_WIDTHS lists the row sample widths costed, each built
-# with COST_CFLAGS_<width> added to the core's and the bench's flags (today
-# only 32, the engine's one width; a 16-bit build adds its switch here and
-# gains a column of its own on the page).
+# with COST_CFLAGS_<width> added to the core's and the bench's flags: 16 sets
+# cfg.sample_bits = 16 in the benches (unity and attenuation; the minimal
+# build has no 16-bit samples). `make target-cost COST_WIDTHS='32 16'`.
 
 COST_B := $(B)/cost
 COST_WIDTHS ?= 32
 COST_CFLAGS_32 :=
+COST_CFLAGS_16 := -DBLOOM_COST_SAMPLE_BITS=16
 COST_MCU_BUILDS := full rgb565 min
 COST_A_ARCHS := aarch64 armhf
 COST_FW := fw_main startup semihost fw_app fw_cost

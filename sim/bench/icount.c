@@ -57,6 +57,9 @@ int main(int argc, char **argv)
         printf("skipped: %s not available\n", e->name);
         return 0;
     }
+#ifdef BLOOM_COST_SAMPLE_BITS /* make target-cost's width (COST_CFLAGS_16) */
+    cfg.sample_bits = BLOOM_COST_SAMPLE_BITS;
+#endif
     bloom_info_t info;
     bloom_status_t st = bloom_query(&cfg, &info);
     if (st != BLOOM_OK)

@@ -37,11 +37,15 @@ def fail(msg):
 
 
 # ---- Cortex-M ----------------------------------------------------------------
-def m_jobs(builds):
-    """(build, preset, levels, width, height, strip, label) of every run."""
+def m_jobs(builds, width="32"):
+    """(build, preset, levels, width, height, strip, label) of every run. With
+    16-bit samples: unity and attenuation only, and not the minimal build
+    (it has none: BLOOM_USE_S16 is 0 with BLOOM_SMALL)."""
+    s16 = width == "16"
     jobs = [("full", 0, lv, 320, 240, 0, "levels") for lv in range(1, 8)]
-    jobs += [("full", p, 0, 320, 240, 0, "preset") for p in range(1, len(PRESETS))]
-    jobs += [(b, 0, 5, 320, 240, 0, "build") for b in builds if b != "full"]
+    jobs += [("full", p, 0, 320, 240, 0, "preset") for p in range(1, len(PRESETS))
+             if not s16 or PRESETS[p] == "attenuation"]
+    jobs += [(b, 0, 5, 320, 240, 0, "build") for b in builds if b != "full" and not (s16 and b == "min")]
     jobs += [("rgb565", 0, 5, 640, 480, s, "strips") for s in (0, 320, 64)]
     return jobs
 
@@ -223,10 +227,11 @@ counters on hand-written programs of known counts
 and both cores' cycle bands worked by hand; `cost_selftest_a64.S` and
 `cost_selftest_a32.S`: 2N + 4 instructions).
 
-**Sample widths.** Every figure here is for the engine's one sample width
-today, 32-bit rows. `make target-cost COST_WIDTHS='32 16'
-COST_CFLAGS_16=...` builds and costs each width with its own flags and
-gives each a row (the column "samples").
+**Sample widths.** `make target-cost COST_WIDTHS='32 16'` builds and
+costs each width with its own flags (`COST_CFLAGS_16` sets
+`cfg.sample_bits = 16` in the benches) and gives each its rows (the column
+"samples"); 16-bit samples run unity and attenuation only, and not in the
+minimal build, which leaves them out (`BLOOM_USE_S16` 0 with `BLOOM_SMALL`).
 """
 
 
@@ -355,7 +360,7 @@ def main():
     for w in widths:
         host = os.path.join(a.build, f"w{w}", "host", "fw_host_cost")
         for cpu in ("m4", "m7"):
-            for job in m_jobs(builds):
+            for job in m_jobs(builds, w):
                 work.append((w, cpu, job, os.path.join(a.build, f"w{w}", f"{cpu}-{job[0]}", "fw_cost.elf"), host))
     mres = {}
     with cf.ProcessPoolExecutor(max_workers=jobs) as ex:
