@@ -6,14 +6,7 @@
 #include "bloom_kernels.h"
 
 #if defined(BLOOM_SIMD_SSE2) && BLOOM_USE_S16
-#include <emmintrin.h>
-
-static inline uint32_t or_lanes(__m128i v)
-{
-    v = _mm_or_si128(v, _mm_srli_si128(v, 8));
-    v = _mm_or_si128(v, _mm_srli_si128(v, 4));
-    return (uint32_t)_mm_cvtsi128_si32(v);
-}
+#include "bloom_simd4.h" /* bloom_or_lanes4 */
 
 /* Four samples narrowed half to even: (v + h + ((v >> sh) & 1)) >> sh. */
 static inline __m128i narrow4(__m128i v, __m128i h, __m128i one, __m128i cnt)
@@ -37,7 +30,7 @@ uint32_t bloom_row_narrow16_sse2(const uint32_t *src, uint16_t *dst, int n, int 
         const __m128i p = _mm_packs_epi32(_mm_sub_epi32(r0, bias), _mm_sub_epi32(r1, bias));
         _mm_storeu_si128((__m128i *)(void *)(dst + i), _mm_xor_si128(p, flip));
     }
-    uint32_t a = or_lanes(any);
+    uint32_t a = bloom_or_lanes4(any);
     if (i < n)
         a |= bloom_row_narrow16_c(src + i, dst + i, n - i, sh);
     return a;
@@ -67,7 +60,7 @@ uint32_t bloom_row_vtent16w_sse2(const uint16_t *a, const uint16_t *b, const uin
             any = _mm_or_si128(any, s);
         }
     }
-    uint32_t r = or_lanes(any);
+    uint32_t r = bloom_or_lanes4(any);
     if (i < n)
         r |= bloom_row_vtent16w_c(a + i, b + i, c + i, dst + i, n - i, sh);
     return r;

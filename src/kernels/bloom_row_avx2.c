@@ -41,7 +41,7 @@ bool bloom_cpu_avx2(void)
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
 /* dst[i] = (3 a[i] + 4 b[i] + c[i] + 4) >> 3 in wrapping 32-bit lanes
- * (bloom_internal.h); returns the OR of every dst[i], and the OR of every
+ * (bloom_kernels.h); returns the OR of every dst[i], and the OR of every
  * input in *in_or (the sums are exact when it is below 2^29). */
 /* One vector of vtent8 at i: stored, ORed into *any (and its inputs into
  * *in when in_or). */
@@ -88,7 +88,7 @@ uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3
- * (the horizontal pass rounds half down: bloom_internal.h). */
+ * (the horizontal pass rounds half down: bloom_kernels.h). */
 uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
     const __m256i k4 = _mm256_set1_epi32(BLOOM_HT_RND);
@@ -211,7 +211,7 @@ static inline __m256i codes8(const uint8_t *p)
 }
 
 /* All ones in the lanes whose code the bloom b cannot change: b at most
- * max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0) (bloom_internal.h). */
+ * max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0) (bloom_kernels.h). */
 static inline __m256i keep8(__m256i code, __m256i b)
 {
     const __m256i lb = _mm256_max_epu32(_mm256_mullo_epi32(code, _mm256_set1_epi32(BLOOM_KEEP8_A)),

@@ -15,12 +15,7 @@ typedef uint32x4_t VT;
 #define ADD(a, b) vaddq_u32((a), (b))
 #define AND(a, b) vandq_u32((a), (b))
 #define OR(a, b) vorrq_u32((a), (b))
-static inline uint32_t or_lanes(uint32x4_t v)
-{
-    const uint32x2_t t = vorr_u32(vget_low_u32(v), vget_high_u32(v));
-    return vget_lane_u32(t, 0) | vget_lane_u32(t, 1);
-}
-#define OR_LANES(v) or_lanes(v)
+#define OR_LANES(v) bloom_or_lanes4(v)
 #define SHL(a, n) vshlq_n_u32((a), (n))
 #define SHR(a, n) vshrq_n_u32((a), (n))
 #define DUP(c) vdupq_n_u32(c)
@@ -144,7 +139,7 @@ static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c
         any = vorrq_u32(any, r);
         in = vorrq_u32(in, vorrq_u32(va, vorrq_u32(vb, vc)));
     }
-    uint32_t ri = or_lanes(in), r = or_lanes(any);
+    uint32_t ri = bloom_or_lanes4(in), r = bloom_or_lanes4(any);
     for (; i < n; i++) {
         dst[i] = (3u * a[i] + 4u * b[i] + c[i] + BLOOM_VT_RND) >> 3;
         r |= dst[i];
@@ -189,7 +184,7 @@ void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_
 }
 
 /* All ones in the lanes whose code c the bloom b cannot change
- * (b <= max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0), bloom_internal.h). */
+ * (b <= max(BLOOM_KEEP8_A c, BLOOM_KEEP8_H0), bloom_kernels.h). */
 static inline uint32x4_t keep4(uint32x4_t c, uint32x4_t b)
 {
     return vcleq_u32(b, vmaxq_u32(vmulq_n_u32(c, BLOOM_KEEP8_A), vdupq_n_u32(BLOOM_KEEP8_H0)));

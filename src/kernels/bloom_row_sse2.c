@@ -28,13 +28,7 @@ static inline __m128i pack_lo(__m128i e, __m128i o)
 }
 #define PACK_LO(e, o) pack_lo((e), (o))
 #define PACK_HI(o) _mm_srli_si128((o), 4)
-static inline uint32_t or_lanes(__m128i v)
-{
-    v = _mm_or_si128(v, _mm_srli_si128(v, 8));
-    v = _mm_or_si128(v, _mm_srli_si128(v, 4));
-    return (uint32_t)_mm_cvtsi128_si32(v);
-}
-#define OR_LANES(v) or_lanes(v)
+#define OR_LANES(v) bloom_or_lanes4(v)
 
 /* Whether a byte of the 30 at s[r] + off (r = 0..3) exceeds c (reads 32). */
 static inline int bright30(const uint8_t *const s[4], size_t off, uint32_t c)

@@ -53,7 +53,7 @@ static inline void pad(uint32_t *p, int sw)
 
 /* The soft knee on one channel, in place: max(soft, b - T), soft =
  * clamp(b - T + K, 0, 2K)^2 / (4K + 0.00004) rounded (as 2x^2 / (8K + E8),
- * bloom_internal.h); 0 below T - K (returns the OR of the results). Below b = 2^F / 100000 the spec's
+ * bloom_kernels.h); 0 below T - K (returns the OR of the results). Below b = 2^F / 100000 the spec's
  * max(b, 0.00001) scales it by b / 0.00001 (exact product, rounded). */
 static uint32_t knee1(uint32_t *row, int w, const bloom_knee_t *kn)
 {

@@ -15,14 +15,6 @@
 
 #include "bloom_avx2.h" /* from here on compiled for AVX2 */
 
-static inline uint32_t or_lanes(__m256i v)
-{
-    __m128i x = _mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    x = _mm_or_si128(x, _mm_shuffle_epi32(x, _MM_SHUFFLE(1, 0, 3, 2)));
-    x = _mm_or_si128(x, _mm_shuffle_epi32(x, _MM_SHUFFLE(2, 3, 0, 1)));
-    return (uint32_t)_mm_cvtsi128_si32(x);
-}
-
 static uint32_t down_h_avx2(const uint32_t *c4, const uint32_t *c2, uint32_t *dst, int n)
 {
     return bloom_arm_kern_sse2.down_h(c4, c2, dst, n);
@@ -77,7 +69,7 @@ static inline void st2(uint32_t *p, __m256i e, __m256i o)
 #define DIV3 div3
 #define MAXV _mm256_max_epu32
 #define MAX_LANES max_lanes
-#define OR_LANES or_lanes
+#define OR_LANES or_lanes8
 #define ST2V st2
 #define ARM_TAIL bloom_arm_kern_sse2
 #define ARM_FN(f) f##_avx2

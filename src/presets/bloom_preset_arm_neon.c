@@ -8,13 +8,7 @@
 #include "bloom_preset_arm.h"
 
 #if BLOOM_USE_ARM && defined(BLOOM_SIMD_NEON)
-#include <arm_neon.h>
-
-static inline uint32_t or_lanes(uint32x4_t v)
-{
-    const uint32x2_t t = vorr_u32(vget_low_u32(v), vget_high_u32(v));
-    return vget_lane_u32(t, 0) | vget_lane_u32(t, 1);
-}
+#include "bloom_simd4.h" /* bloom_or_lanes4 (and arm_neon.h) */
 
 /* floor(q / 3) per lane, q < 2^31: (q * 0xAAAAAAAB) >> 33. */
 static inline uint32x4_t div3(uint32x4_t q)
@@ -56,7 +50,7 @@ static inline void st2(uint32_t *p, uint32x4_t e, uint32x4_t o)
 #define DIV3 div3
 #define MAXV vmaxq_u32
 #define MAX_LANES vmaxvq_u32
-#define OR_LANES or_lanes
+#define OR_LANES bloom_or_lanes4
 #define ST2V st2
 #define VT2 uint32x4x2_t
 #define LD2V vld2q_u32

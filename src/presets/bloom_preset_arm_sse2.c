@@ -10,13 +10,6 @@
 #if BLOOM_USE_ARM && defined(BLOOM_SIMD_SSE2)
 #include "bloom_simd4.h"
 
-static inline uint32_t or_lanes(__m128i v)
-{
-    v = _mm_or_si128(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(1, 0, 3, 2)));
-    v = _mm_or_si128(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(2, 3, 0, 1)));
-    return (uint32_t)_mm_cvtsi128_si32(v);
-}
-
 /* The even and the odd words of p[0 .. 7] (the deinterleave of NEON's
  * vld2q_u32). */
 typedef struct {
@@ -83,7 +76,7 @@ static inline void st2(uint32_t *p, __m128i e, __m128i o)
 #define DIV3 div3
 #define MAXV max_s
 #define MAX_LANES max_lanes
-#define OR_LANES or_lanes
+#define OR_LANES bloom_or_lanes4
 #define ST2V st2
 #define VT2 arm_m128x2_t
 #define LD2V ld2

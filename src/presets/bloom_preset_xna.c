@@ -102,7 +102,7 @@ void xna_kawase_c(const uint32_t *const r[4], uint32_t *cs, uint32_t *dst, int w
         dst[j] = cs[j - 3 * i - 3] + cs[j - 3 * i] + cs[j + 3 * i] + cs[j + 3 * i + 3];
     if (rnd)
         for (int j = 0; j < cnt; j++)
-            dst[j] = BLOOM_BOX_RND(dst[j]); /* sum / 16, half to even (bloom_internal.h) */
+            dst[j] = BLOOM_BOX_RND(dst[j]); /* sum / 16, half to even (bloom_kernels.h) */
 }
 
 void xna_screen_c(const uint32_t *s, uint32_t *x, int n)
