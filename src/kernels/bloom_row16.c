@@ -91,25 +91,10 @@ static inline void colsum4(const uint16_t *const s[4], int c, uint32_t out[3])
         out[ch] = (uint32_t)s[0][i + ch] + s[1][i + ch] + s[2][i + ch] + s[3][i + ch];
 }
 
-void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw)
-{
-    uint32_t a[3], b[3], c[3], d[3];
-    if (dw < 1)
-        return;
-    colsum4(s, 0, a); /* column -1 clamps to 0 */
-    colsum4(s, 0, b);
-    for (int x = 0; x < dw; x++) {
-        colsum4(s, imin(2 * x + 1, sw - 1), c);
-        colsum4(s, imin(2 * x + 2, sw - 1), d);
-        for (int ch = 0; ch < 3; ch++) {
-            dst[3 * x + ch] = (uint16_t)BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
-            a[ch] = c[ch];
-            b[ch] = d[ch];
-        }
-    }
-}
-
-void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh)
+/* Both boxes: each sum widened by sh (0: none) and rounded as the 32-bit box
+ * rounds it, stored as 16-bit samples or (wide) 32-bit ones. */
+static BLOOM_ALWAYS_INLINE void box16(const uint16_t *const s[4], void *dst, bool wide, int dw, int sw,
+                                      int sh)
 {
     uint32_t a[3], b[3], c[3], d[3];
     if (dw < 1)
@@ -121,11 +106,24 @@ void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int s
         colsum4(s, imin(2 * x + 2, sw - 1), d);
         for (int ch = 0; ch < 3; ch++) {
             const uint32_t sum = (a[ch] + b[ch] + c[ch] + d[ch]) << sh; /* < 2^20 << 9 */
-            dst[3 * x + ch] = BLOOM_BOX_RND(sum);
+            if (wide)
+                ((uint32_t *)dst)[3 * x + ch] = BLOOM_BOX_RND(sum);
+            else
+                ((uint16_t *)dst)[3 * x + ch] = (uint16_t)BLOOM_BOX_RND(sum);
             a[ch] = c[ch];
             b[ch] = d[ch];
         }
     }
+}
+
+void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw)
+{
+    box16(s, dst, false, dw, sw, 0);
+}
+
+void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh)
+{
+    box16(s, dst, true, dw, sw, sh);
 }
 
 /* The vertical tent of rows u0..u2 at sample i: (3, 4, 1) or (1, 4, 3), half up. */

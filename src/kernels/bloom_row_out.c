@@ -114,24 +114,31 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
 }
 #endif
 
-void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
+/* The general output path, chunk by chunk: tent, composite, encode. u
+ * holds 32-bit rows, or with sh > 0 (U_1 of cfg.sample_bits 16) 16-bit
+ * rows the tent widens in its sums. */
+static void out_chunks(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
+                       uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
-#if !BLOOM_SMALL
-    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
-        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        const void *const uv[3] = {u[0], u[1], u[2]};
-        out_fast(k, uv, 0, odd, src, dst, w, sw, o);
-        return;
-    }
-#endif
     const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
+    (void)sh; /* (0 where 16-bit samples are compiled out) */
     if (o->debug)
         memset(sv, 0, sizeof sv);
     for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
         const int n = imin(BLOOM_OUT_CHUNK, w - x0);
-        k->tent(u, odd, NULL, bl, x0, n, sw);
+#if BLOOM_USE_S16
+        if (sh) {
+            const uint16_t *const u16[3] = {(const uint16_t *)u[0], (const uint16_t *)u[1],
+                                            (const uint16_t *)u[2]};
+            bloom_row_tent16w_c(u16, odd, bl, x0, n, sw, sh);
+        } else
+#endif
+        {
+            const uint32_t *const u32[3] = {(const uint32_t *)u[0], (const uint32_t *)u[1],
+                                            (const uint32_t *)u[2]};
+            k->tent(u32, odd, NULL, bl, x0, n, sw);
+        }
         if (!o->debug)
             bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
         k->composite(bl, sv, 3 * n, o->intensity);
@@ -139,28 +146,32 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
     }
 }
 
+/* One output row from 32-bit U rows, or 16-bit ones widened by sh. */
+static void out_row(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
+                    uint8_t *dst, int w, int sw, const bloom_out_t *o)
+{
+#if !BLOOM_SMALL
+    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
+        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
+        out_fast(k, u, sh, odd, src, dst, w, sw, o);
+        return;
+    }
+#endif
+    out_chunks(k, u, sh, odd, src, dst, w, sw, o);
+}
+
+void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
+                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
+{
+    const void *const uv[3] = {u[0], u[1], u[2]};
+    out_row(k, uv, 0, odd, src, dst, w, sw, o);
+}
+
 #if BLOOM_USE_S16
 void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
                        const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
 {
-    if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
-        bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        const void *const uv[3] = {u[0], u[1], u[2]};
-        out_fast(k, uv, sh, odd, src, dst, w, sw, o);
-        return;
-    }
-    /* the general path of bloom_row_out_k, the tent widening the samples */
-    const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
-    uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
-    if (o->debug)
-        memset(sv, 0, sizeof sv);
-    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
-        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
-        bloom_row_tent16w_c(u, odd, bl, x0, n, sw, sh);
-        if (!o->debug)
-            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
-        k->composite(bl, sv, 3 * n, o->intensity);
-        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
-    }
+    const void *const uv[3] = {u[0], u[1], u[2]};
+    out_row(k, uv, sh, odd, src, dst, w, sw, o);
 }
 #endif

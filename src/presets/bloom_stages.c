@@ -92,16 +92,25 @@ bool bg_fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *con
     return bg_s16_d1(ctx, n, r, in, dst, bg_fn_d1);
 }
 
+/* A box of 16-bit rows: into a 16-bit level, or (the node's own samples
+ * 32-bit) into the first 32-bit level, BLOOM_S16_LEVELS + 1, its sums
+ * widened (<< (F - G)) and rounded as the 32-bit box rounds. */
 static bool fn_box16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                      void *dst)
 {
     (void)r;
     const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
-    bloom_row_box16_c(s, (uint16_t *)dst, n->w, bg_node_in_w(ctx, n, 0));
+    if (n->sb == 4)
+        bloom_row_box16w_c(s, (uint32_t *)dst, n->w, bg_node_in_w(ctx, n, 0), ctx->par.s16);
+    else
+        bloom_row_box16_c(s, (uint16_t *)dst, n->w, bg_node_in_w(ctx, n, 0));
     return true;
 }
 
+/* U_k = D_k + tent(U_k+1) on a 16-bit level. Below the last 16-bit level
+ * (BLOOM_S16_LEVELS) the rows read are 32-bit: their tent, in scratch row
+ * 0, is narrowed (half to even) before D_k is added. */
 static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                           const void *const *const in[BG_MAX_IN], void *dst)
 {
@@ -110,40 +119,19 @@ static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
         memcpy(dst, d, (size_t)n->w * 3u * sizeof *d);
         return true;
     }
-    const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
-                                  (const uint16_t *)in[0][2]};
-    bloom_row_tent16_k(&ctx->kern, u, r & 1, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, n->w,
-                       bg_node_in_w(ctx, n, 0));
-    return true;
-}
-
-/* The first 32-bit level (BLOOM_S16_LEVELS + 1): the box of 16-bit rows,
- * its sums widened (<< (F - G)) and rounded as the 32-bit box rounds. */
-static bool fn_box16w(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
-                      void *dst)
-{
-    (void)r;
-    const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
-                                  (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
-    bloom_row_box16w_c(s, (uint32_t *)dst, n->w, bg_node_in_w(ctx, n, 0), ctx->par.s16);
-    return true;
-}
-
-/* The last 16-bit level (BLOOM_S16_LEVELS): the 32-bit tent of the level
- * below in scratch row 0, narrowed (half to even), plus the level's D. */
-static bool fn_add_tent_n16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
-                            const void *const *const in[BG_MAX_IN], void *dst)
-{
-    const uint16_t *d = (const uint16_t *)in[1][0];
-    if (bg_in_zero(ctx, 0, 0, 2)) {
-        memcpy(dst, d, (size_t)n->w * 3u * sizeof *d);
-        return true;
+    const uint16_t *add = bg_in_zero(ctx, 1, 0, 0) ? NULL : d;
+    const int sw = bg_node_in_w(ctx, n, 0);
+    if (ctx->node[n->in[0].node].sb == 4) {
+        const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                      (const uint32_t *)in[0][2]};
+        uint32_t *t = bg_scratch(ctx, 0);
+        ctx->kern.tent(u, r & 1, NULL, t, 0, n->w, sw);
+        bloom_row_narrow16_add_c(t, add, (uint16_t *)dst, n->w * 3, ctx->par.s16);
+    } else {
+        const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                      (const uint16_t *)in[0][2]};
+        bloom_row_tent16_k(&ctx->kern, u, r & 1, add, (uint16_t *)dst, n->w, sw);
     }
-    const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
-                                  (const uint32_t *)in[0][2]};
-    uint32_t *t = bg_scratch(ctx, 0);
-    ctx->kern.tent(u, r & 1, NULL, t, 0, n->w, bg_node_in_w(ctx, n, 0));
-    bloom_row_narrow16_add_c(t, bg_in_zero(ctx, 1, 0, 0) ? NULL : d, (uint16_t *)dst, n->w * 3, ctx->par.s16);
     return true;
 }
 
@@ -177,13 +165,11 @@ void bloom_stages_s16(bg_graph_t *g, bg_params_t *par, bg_row_fn d1_16)
         if (k > top + 1 || (k == top + 1 && n->fn != bg_fn_box)) /* 32-bit, reading 32-bit rows */
             continue;
         const bool d1 = k == 1 && n->nin >= 1 && n->in[0].node == BG_SRC; /* the first stage */
-        n->fn = d1                                    ? d1_16
-                : n->fn == bg_fn_box && k <= top      ? fn_box16
-                : n->fn == bg_fn_box                  ? fn_box16w /* into level top + 1 */
-                : n->fn == bg_fn_add_tent && k < top  ? fn_add_tent16
-                : n->fn == bg_fn_add_tent && k == top ? fn_add_tent_n16 /* from level top + 1 */
-                : n->fn == bg_fn_out_add              ? fn_out_add16
-                                                      : NULL; /* (no other stage has a 16-bit twin) */
+        n->fn = d1                        ? d1_16
+                : n->fn == bg_fn_box      ? fn_box16      /* (into level top + 1: 32-bit samples) */
+                : n->fn == bg_fn_add_tent ? fn_add_tent16 /* (at level top: reads 32-bit rows) */
+                : n->fn == bg_fn_out_add  ? fn_out_add16
+                                          : NULL; /* (no other stage has a 16-bit twin) */
         if (!n->fn)
             g->failed = true;
         if (i != g->out_node && k <= top)
