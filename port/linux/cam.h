@@ -213,6 +213,7 @@ typedef struct {
     int fps;                 /* the frame rate in force after VIDIOC_S_PARM (0 unknown) */
     cam_vbuf_t bufs[CAM_MAX_BUFFERS];
     int nbufs, streaming;
+    int events; /* subscribed to V4L2_EVENT_SOURCE_CHANGE (the driver has it) */
     char card[32], driver[16];
     const sigset_t *wait_mask; /* the signal mask inside the wait (NULL: the current one) */
     struct cam_mjpeg *jpeg;    /* MJPEG's decoder (cam_mjpeg.c), made by cam_v4l2_open; else NULL */
@@ -222,9 +223,11 @@ typedef struct {
 } cam_v4l2_t;
 
 /* What a fault was (cam_v4l2_t.lost): the device stopped delivering
- * (timeout), went away or failed (ENODEV, EIO, POLLERR, ...), or refuses
- * what was asked of it (a configuration: no reconnection mends it). */
-enum { CAM_LOST_NONE = 0, CAM_LOST_TIMEOUT, CAM_LOST_DEVICE, CAM_LOST_CONFIG };
+ * (timeout), went away or failed (ENODEV, EIO, POLLERR, ...), refuses
+ * what was asked of it (a configuration: no reconnection mends it), or its
+ * source changed (V4L2_EVENT_SOURCE_CHANGE: the format must be negotiated
+ * again, which the reconnection does by opening the device afresh). */
+enum { CAM_LOST_NONE = 0, CAM_LOST_TIMEOUT, CAM_LOST_DEVICE, CAM_LOST_CONFIG, CAM_LOST_SOURCE };
 /* A frame that came but cannot be shown (cam_frame_t.bad): requeued and
  * counted, never fatal. CAM_BAD_JPEG: an MJPEG frame libjpeg cannot
  * decode whole (found while it is processed: cam_cap_next). */

@@ -83,7 +83,7 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 # built out here so the refusal of --gpio-* is what is tested.
 # test_cam_mt: the --threads frame path (cam_mt.c on the real pool) against
 # the untiled engine, every format, placement and mode, under the sanitizers.
-CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c \
+CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/test_dequeue.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c \
                 $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/gpio.c \
                 $(CAM_DIR)/cam_aux.c \
                 $(CAM_DIR)/v4l2.c $(CAM_DIR)/drm_pick.c $(CAM_DIR)/cam_mjpeg.c
@@ -140,7 +140,7 @@ linux-clang:
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) $(CAM_GPIO_CFLAGS) $(CAM_DRM_CFLAGS) $(CAM_SRC)
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -DCAM_NO_GPIOD -DCAM_NO_DRM $(CAM_SRC)
 	$(CLANG) $(WARN) -fsyntax-only $(CAM_CPPFLAGS) -Isim/bench -DCAM_NO_GPIOD $(CAM_DIR)/bench_cam.c
-	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c \
+	$(CLANG) $(WARN) -fsyntax-only $(HOST_CPPFLAGS) -Iport/threads $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/test_dequeue.c \
 	  $(CAM_DIR)/test_cam_mt.c $(CAM_DIR)/test_drm.c $(CAM_DIR)/test_mjpeg.c
 
 test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/linux/test_cam_drm \

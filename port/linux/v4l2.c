@@ -450,11 +450,31 @@ int cam_v4l2_start(cam_v4l2_t *c)
     for (int i = 0; i < c->nbufs; i++)
         if (queue(c, i))
             return -1;
+    /* A source change (a resolution or signal change on HDMI or analogue
+     * inputs, a sensor reconfigured) is an event; a driver without sources
+     * that change refuses the subscription, and that is fine. */
+    struct v4l2_event_subscription sub;
+    memset(&sub, 0, sizeof sub);
+    sub.type = V4L2_EVENT_SOURCE_CHANGE;
+    c->events = !xioctl(c, VIDIOC_SUBSCRIBE_EVENT, &sub);
     enum v4l2_buf_type t = (enum v4l2_buf_type)buf_type(c);
     if (xioctl(c, VIDIOC_STREAMON, &t))
         return dev_fail(c, "VIDIOC_STREAMON");
     c->streaming = 1;
     return 0;
+}
+
+/* POLLPRI: an event is pending. 0 when it was not a source change, -1
+ * (CAM_LOST_SOURCE) when it was. */
+static int event(cam_v4l2_t *c)
+{
+    struct v4l2_event ev;
+    memset(&ev, 0, sizeof ev);
+    if (xioctl(c, VIDIOC_DQEVENT, &ev) || ev.type != V4L2_EVENT_SOURCE_CHANGE)
+        return 0;
+    say(c, "the source changed (changes 0x%x): negotiating the format again",
+        (unsigned)ev.u.src_change.changes);
+    return lost(c, CAM_LOST_SOURCE);
 }
 
 /* The buffer just dequeued as a frame: 0, 2 when it is bad (requeued), -1
@@ -496,7 +516,7 @@ static int take(cam_v4l2_t *c, const vbuf_t *v, cam_frame_t *f)
 int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_ready, cam_frame_t *f)
 {
     for (;;) {
-        struct pollfd p[2] = {{c->fd, POLLIN, 0}, {extra_fd, POLLIN, 0}};
+        struct pollfd p[2] = {{c->fd, (short)(POLLIN | (c->events ? POLLPRI : 0)), 0}, {extra_fd, POLLIN, 0}};
         int r = c->poll_fn(p, extra_fd >= 0 ? 2 : 1, timeout_ms, c->wait_mask);
         if (r < 0) {
             if (errno == EINTR)
@@ -509,8 +529,10 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
         }
         if (extra_fd >= 0 && (p[1].revents & POLLIN))
             *extra_ready = 1;
-        if (!p[0].revents)
-            continue; /* only the button: wait again */
+        if ((p[0].revents & POLLPRI) && event(c))
+            return -1;
+        if (!(p[0].revents & ~POLLPRI))
+            continue; /* only the button, or another event: wait again */
         /* POLLERR: DQBUF tells why (ENODEV after a disconnect, EPIPE, ...) */
 
         vbuf_t v;
