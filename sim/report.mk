@@ -1,7 +1,8 @@
 # make report (issue 3, sections 2-4): error against run time over the
-# precision knob (BLOOM_LIN_BITS F = 16..20) and the level count, the
-# stability matrix, the skip savings; memory and run time against tile
-# width (issue 14). Writes sim/docs/report.md,
+# precision knob (BLOOM_LIN_BITS F = 16..20), the level count and the row
+# sample width (issue 21: 32 or 16 bits, also on the targets from
+# sim/docs/targets.csv, make target-cost), the stability matrix, the skip
+# savings; memory and run time against tile width (issue 14). Writes sim/docs/report.md,
 # sim/docs/report_*.png and sim/docs/report_*.csv (sim/report/run.sh).
 # Not a test: nothing here joins CHECKS, nothing asserts a time.
 # Installs gnuplot-nox (and valgrind, through sim/bench/deps.sh) if missing.

@@ -7,6 +7,9 @@
  *   bloom_icount --repeat N VARIANT W H [IMAGE]
  *                                        the same frame call N times (for a
  *                                        sampling profiler: make profile)
+ *   bloom_icount [--repeat N] --levels L VARIANT W H [IMAGE]
+ *                                        at L levels instead of the row's
+ *                                        (make target-cost's level sweep)
  *
  * Deterministic: no clocks, no randomness, no address-dependent choices. */
 #include <stdio.h>
@@ -30,16 +33,20 @@ int main(int argc, char **argv)
             printf("%s\n", bench_engines[i].name);
         return 0;
     }
-    int repeat = 1;
-    if (argc >= 3 && !strcmp(argv[1], "--repeat")) {
-        repeat = atoi(argv[2]);
-        if (repeat < 1 || repeat > 100000)
-            return fail("--repeat", "needs a count of 1 .. 100000");
+    int repeat = 1, levels = 0;
+    while (argc >= 3 && (!strcmp(argv[1], "--repeat") || !strcmp(argv[1], "--levels"))) {
+        const int v = atoi(argv[2]);
+        if (argv[1][2] == 'r') {
+            if ((repeat = v) < 1 || v > 100000)
+                return fail("--repeat", "needs a count of 1 .. 100000");
+        } else if ((levels = v) < 1 || v > BLOOM_MAX_LEVELS) {
+            return fail("--levels", "needs a count of 1 .. BLOOM_MAX_LEVELS");
+        }
         argc -= 2;
         argv += 2;
     }
     if (argc < 4 || argc > 5) {
-        fprintf(stderr, "usage: bloom_icount --list | [--repeat N] VARIANT W H [IMAGE]\n");
+        fprintf(stderr, "usage: bloom_icount --list | [--repeat N] [--levels L] VARIANT W H [IMAGE]\n");
         return 2;
     }
     const bench_engine_t *e = NULL;
@@ -57,6 +64,8 @@ int main(int argc, char **argv)
         printf("skipped: %s not available\n", e->name);
         return 0;
     }
+    if (levels)
+        cfg.levels = levels;
 #ifdef BLOOM_COST_SAMPLE_BITS /* make target-cost's width (COST_CFLAGS_16) */
     cfg.sample_bits = BLOOM_COST_SAMPLE_BITS;
 #endif

@@ -87,22 +87,26 @@ QEMU = {"aarch64": "qemu-aarch64", "armhf": "qemu-arm"}
 A_ROWS = [("aarch64", "RGB888->RGB888", "NEON"), ("aarch64", "RGB888->RGB888,C-only", "C only"),
           ("armhf", "RGB888->RGB888", "C (no SIMD twins)")]
 A_SIZES = [(640, 480), (1920, 1080)]
+# The level sweep of make report's targets section: aarch64, NEON, 640x480
+# (5 levels is in the table above).
+A_LEVELS = [lv for lv in range(1, 9) if lv != 5]
 
 
-def a_count(plugin, binary, arch, row, w, h, repeat):
+def a_count(plugin, binary, arch, row, w, h, repeat, levels=0):
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "n")
-        r = subprocess.run([QEMU[arch], "-plugin", f"{plugin},out={out}", binary, "--repeat", str(repeat), row,
-                            str(w), str(h)], capture_output=True, text=True)
+        lv = ["--levels", str(levels)] if levels else []
+        r = subprocess.run([QEMU[arch], "-plugin", f"{plugin},out={out}", binary, "--repeat", str(repeat)] + lv +
+                           [row, str(w), str(h)], capture_output=True, text=True)
         if r.returncode or not os.path.exists(out):
             fail(f"{arch} {row} {w}x{h}: {r.stdout}{r.stderr}")
         return int(open(out).read().split()[1]), r.stdout.strip()
 
 
-def a_run(plugin, build, w32, arch, row, w, h, third):
+def a_run(plugin, build, w32, arch, row, w, h, third, levels=0):
     binary = os.path.join(build, f"w{w32}", arch, "bloom_icount")
-    c1, o1 = a_count(plugin, binary, arch, row, w, h, 1)
-    c2, o2 = a_count(plugin, binary, arch, row, w, h, 2)
+    c1, o1 = a_count(plugin, binary, arch, row, w, h, 1, levels)
+    c2, o2 = a_count(plugin, binary, arch, row, w, h, 2, levels)
     if o1 != o2:
         fail(f"{arch} {row} {w}x{h}: the output differs with the repeat count")
     res = {"frame": c2 - c1, "out": o1, "setup": 2 * c1 - c2}
@@ -351,7 +355,8 @@ def main():
         d = json.load(open(saved))
         mres = {(w, cpu, tuple(job)): r for w, cpu, job, r in d["m"]}
         ares = {(w, arch, row, tuple(size)): r for w, arch, row, size, r in d["a"]}
-        write(a, mres, ares, d["secs"])
+        lres = {(w, lv): r for w, lv, r in d.get("al", [])}
+        write(a, mres, ares, lres, d["secs"])
         return
     t0 = time.time()
     widths, builds, archs = a.widths.split(), a.builds.split(), a.archs.split()
@@ -387,19 +392,50 @@ def main():
                 ares[(w, arch, row, (fw, fh))] = r
                 print(f"target-cost: {arch} w{w} {row} {fw}x{fh}: {r['frame'] / (fw * fh):.1f} "
                       "instructions/pixel", flush=True)
+    lres = {}
+    if "aarch64" in archs:
+        for w in widths:
+            for lv in A_LEVELS:
+                r = a_run(plugin, a.build, w, "aarch64", "RGB888->RGB888", 640, 480, third=False, levels=lv)
+                lres[(w, lv)] = r
+                print(f"target-cost: aarch64 w{w} 640x480 levels {lv}: {r['frame'] / 307200:.1f} "
+                      "instructions/pixel", flush=True)
     secs = time.time() - t0
     with open(saved, "w") as f:
         json.dump({"secs": secs, "m": [[w, cpu, list(job), r] for (w, cpu, job), r in mres.items()],
-                   "a": [[w, arch, row, list(size), r] for (w, arch, row, size), r in ares.items()]}, f)
-    write(a, mres, ares, secs)
+                   "a": [[w, arch, row, list(size), r] for (w, arch, row, size), r in ares.items()],
+                   "al": [[w, lv, r] for (w, lv), r in lres.items()]}, f)
+    write(a, mres, ares, lres, secs)
 
 
-def write(a, mres, ares, secs):
+def csv_rows(mres, ares, lres):
+    """The level sweep per target for make report's section 1 (targets.csv):
+    Cortex-M cycles at 320x240 RGB565 (full build, default preset), aarch64
+    NEON instructions at 640x480 RGB888, both sample widths."""
+    rows = ["target,sample_bits,levels,frame,instructions_per_px,cycles_lo_per_px,cycles_hi_per_px,clock_mhz"]
+    for (w, cpu, job), r in sorted(mres.items(), key=lambda kv: (kv[0][1], kv[0][0], kv[0][2][2])):
+        if job[6] == "levels":
+            t, n = r["bloom_process"], job[3] * job[4]
+            rows.append(f"{CPUNAME[cpu]},{w},{job[2]},{job[3]}x{job[4]},{t['insns'] / n:.3f},"
+                        f"{t[cpu + '_lo'] / n:.3f},{t[cpu + '_hi'] / n:.3f},{CLOCK[cpu] / 1e6:.0f}")
+    a = {(w, 5): r for (w, arch, row, size), r in ares.items()
+         if arch == "aarch64" and row == "RGB888->RGB888" and size == (640, 480)}
+    a.update(lres)
+    for (w, lv), r in sorted(a.items(), key=lambda kv: (kv[0][0], kv[0][1])):
+        rows.append(f"aarch64,{w},{lv},640x480,{r['frame'] / 307200:.3f},,,")
+    return "\n".join(rows) + "\n"
+
+
+def write(a, mres, ares, lres, secs):
     text = page(a, mres, ares, secs)
     with open(a.out + ".tmp", "w") as f:
         f.write(text)
     os.replace(a.out + ".tmp", a.out)
-    print(f"target-cost: wrote {a.out}")
+    csv = os.path.join(os.path.dirname(a.out), "targets.csv")
+    with open(csv + ".tmp", "w") as f:
+        f.write(csv_rows(mres, ares, lres))
+    os.replace(csv + ".tmp", csv)
+    print(f"target-cost: wrote {a.out} and {csv}")
 
 
 if __name__ == "__main__":

@@ -1,9 +1,10 @@
 /* report_icount: exactly one bloom_process call, for
  * `valgrind --tool=callgrind --toggle-collect=bloom_process` (run.sh).
  *
- *   report_icount DATA_DIR INPUT W H LEVELS THRESHOLD [noskip]
+ *   report_icount DATA_DIR INPUT W H LEVELS THRESHOLD [noskip] [s16]
  *
- * INPUT as rin_make (report.h); THRESHOLD linear (e.g. 0.6); output RGB888.
+ * INPUT as rin_make (report.h); THRESHOLD linear (e.g. 0.6); output RGB888;
+ * s16: 16-bit row samples (cfg.sample_bits 16).
  * Prints the output's FNV-1a so that skip and no-skip runs can be seen to
  * agree next to their counts. Deterministic: no clocks. */
 #include <stdlib.h>
@@ -13,8 +14,17 @@
 
 int main(int argc, char **argv)
 {
-    if (argc < 7 || argc > 8 || (argc == 8 && strcmp(argv[7], "noskip"))) {
-        fprintf(stderr, "usage: report_icount DATA_DIR INPUT W H LEVELS THRESHOLD [noskip]\n");
+    int noskip = 0, s16 = 0;
+    for (int i = 7; i < argc; i++) {
+        if (!strcmp(argv[i], "noskip"))
+            noskip = 1;
+        else if (!strcmp(argv[i], "s16"))
+            s16 = 1;
+        else
+            argc = 0; /* the usage below */
+    }
+    if (argc < 7) {
+        fprintf(stderr, "usage: report_icount DATA_DIR INPUT W H LEVELS THRESHOLD [noskip] [s16]\n");
         return 2;
     }
     const int w = atoi(argv[3]), h = atoi(argv[4]), lv = atoi(argv[5]);
@@ -30,8 +40,10 @@ int main(int argc, char **argv)
     c.levels = lv;
     c.threshold = BLOOM_Q16(t);
     c.in_fmt = in.fmt;
-    if (argc == 8)
+    if (noskip)
         c.flags |= BLOOM_FLAG_NO_SKIP;
+    if (s16)
+        c.sample_bits = 16;
     bloom_info_t info;
     bloom_status_t st = bloom_query(&c, &info);
     if (st != BLOOM_OK)
@@ -48,8 +60,8 @@ int main(int argc, char **argv)
     uint32_t sum = 2166136261u;
     for (size_t i = 0; i < (size_t)w * (size_t)h * 3u; i++)
         sum = (sum ^ dst[i]) * 16777619u;
-    printf("F%d %s %dx%d L%d%s fnv1a %08x\n", BLOOM_LIN_BITS, in.name, w, h, info.levels,
-           argc == 8 ? " noskip" : "", (unsigned)sum);
+    printf("F%d %s %dx%d L%d%s%s fnv1a %08x\n", BLOOM_LIN_BITS, in.name, w, h, info.levels,
+           noskip ? " noskip" : "", s16 ? " s16" : "", (unsigned)sum);
     free(ws);
     free(dst);
     rin_free(&in);

@@ -41,6 +41,50 @@ plot for [F=16:20] d using ($3 == F ? $1 : NaN):2 with points pt 7 ps 1.1 lc rgb
 }
 unset multiplot
 
+# ---- sample width: 32- against 16-bit rows (width.awk), 8-bit inputs --------
+set output docs."/report_width.png"
+set multiplot layout 2,2 title "Sample width: MSE vs the float model (8-bit inputs, RGB888) against cost\ndiscs = 32-bit rows, triangles = 16-bit; colours = fraction bits F; labels = level count N; line = Pareto front; ring = default (F 20, N 5, 32-bit)"
+set xlabel "engine CPU time / cold memcpy CPU time (same rounds)"
+do for [s in sizes] {
+    set title s
+    d = out."/widthp_".s.".dat"
+    f = out."/widthf_".s.".dat"
+    plot for [F=16:20] d using (($3 == F && $5 == 32) ? $1 : NaN):2 with points pt 7 ps 1.0 lc rgb fcol(F) title sprintf("F %d", F), \
+         for [F=16:20] d using (($3 == F && $5 == 16) ? $1 : NaN):2 with points pt 9 ps 1.2 lc rgb fcol(F) notitle, \
+         d using 1:2:(sprintf("%d", $4)) with labels offset 0.9,0.5 font ",8" notitle, \
+         f using 1:2 with lines lw 2 lc rgb "black" title "Pareto front", \
+         d using ($7 > 0 ? $1 : NaN):2 with points pt 6 ps 3 lw 2 lc rgb "red" title "default"
+}
+if (icpanel) {
+set title "640x480 against instructions per pixel (callgrind): repeatable"
+set xlabel "instructions per output pixel, one bloom_process call"
+d = out."/widthp_ic.dat"
+f = out."/widthf_ic.dat"
+plot for [F=16:20] d using (($3 == F && $5 == 32) ? $1 : NaN):2 with points pt 7 ps 1.0 lc rgb fcol(F) title sprintf("F %d", F), \
+     for [F=16:20] d using (($3 == F && $5 == 16) ? $1 : NaN):2 with points pt 9 ps 1.2 lc rgb fcol(F) notitle, \
+     d using 1:2:(sprintf("%d", $4)) with labels offset 0.9,0.5 font ",8" notitle, \
+     f using 1:2 with lines lw 2 lc rgb "black" title "Pareto front", \
+     d using ($7 > 0 ? $1 : NaN):2 with points pt 6 ps 3 lw 2 lc rgb "red" title "default"
+}
+unset multiplot
+
+# ---- the targets (targets.awk): F 20, N and the sample width ------------------
+set output docs."/report_targets.png"
+set multiplot layout 2,2 title "Error against cost on the targets (F 20): MSE vs the float model (8-bit inputs) against each CPU's cost per pixel\ndiscs = 32-bit rows, triangles = 16-bit; labels = level count N; line = Pareto front; ring = default (N 5, 32-bit); bars: Cortex-M cycle band"
+do for [k in "x86 a64 m4 m7"] {
+    d = out."/tgt_".k.".dat"
+    f = out."/tgtf_".k.".dat"
+    set title (k eq "x86" ? "x86-64, 640x480 RGB888 (callgrind)" : k eq "a64" ? "aarch64 NEON, 640x480 RGB888 (qemu-user plugin)" : \
+               k eq "m4" ? "Cortex-M4, 320x240 RGB565 (unicorn, TRM timings)" : "Cortex-M7, 320x240 RGB565 (unicorn, TRM timings)")
+    set xlabel ((k eq "m4" || k eq "m7") ? "estimated cycles per pixel (band)" : "instructions per pixel")
+    plot d using ($4 == 32 ? $1 : NaN):2:7:8 with xerrorbars pt 7 ps 1.0 lc rgb "#0072b2" title "32-bit", \
+         d using ($4 == 16 ? $1 : NaN):2:7:8 with xerrorbars pt 9 ps 1.2 lc rgb "#e69f00" title "16-bit", \
+         d using 1:2:(sprintf("%d", $3)) with labels offset 0.9,0.5 font ",8" notitle, \
+         f using 1:2 with lines lw 2 lc rgb "black" title "Pareto front", \
+         d using ($6 > 0 ? $1 : NaN):2 with points pt 6 ps 3 lw 2 lc rgb "red" title "default"
+}
+unset multiplot
+
 # ---- stability curves ----------------------------------------------------------
 set datafile separator ","
 set key top left font ",9"

@@ -49,9 +49,14 @@ job_a() {
         --inputs "$(echo $inputs | tr ' ' ,)"
     for f in 16 17 18 19 20; do
         for l in 1 2 3 4 5 6 7 8; do
-            echo "$f $l $(cg a "$bld/f$f/report_icount" "$data" scene 640 480 $l 0.6)"
+            echo "$f $l 32 $(cg a "$bld/f$f/report_icount" "$data" scene 640 480 $l 0.6)"
+            echo "$f $l 16 $(cg a "$bld/f$f/report_icount" "$data" scene 640 480 $l 0.6 s16)"
         done
     done > "$out/sweep_icount.tsv"
+    # the error at the Cortex-M frame size (320x240) for the targets'
+    # section: errors only (one untimed round), F 20, both widths
+    "$bld/f20/report_sweep" --ref "$ref" --csv "$out/err320.csv" --data "$data" --sizes 320x240 \
+        --levels 1-7 --inputs "$(echo $inputs | tr ' ' ,)" --runs 1 --warmup 0 --ring-mb 16 > "$out/err320.log"
 }
 
 job_b() {
@@ -115,6 +120,14 @@ load2=$(cut -d' ' -f1-3 /proc/loadavg)
     while [ $j -le $i ]; do tail -n +2 "$out/sweep.$j.csv"; j=$((j + 1)); done
 } > "$docs/report_sweep.csv"
 awk -F, -v out="$out" -f "$here/sweep.awk" "$out/sweep_icount.tsv" "$docs/report_sweep.csv"
+awk -F, -v out="$out" -f "$here/width.awk" "$out/sweep_icount.tsv" "$docs/report_sweep.csv"
+cp "$out/err320.csv" "$docs/report_err320.csv"
+# the targets' costs: make target-cost's CSV (a header alone when it has
+# not run: the section then has x86-64 only)
+tcsv=$docs/targets.csv
+[ -r "$tcsv" ] || { tcsv=$out/targets-none.csv; echo "target" > "$tcsv"; }
+awk -F, -v out="$out" -f "$here/targets.awk" "$out/sweep_icount.tsv" "$tcsv" \
+    "$docs/report_err320.csv" "$docs/report_sweep.csv"
 for c in levels intensity; do
     { cat "$out/${c}_f20.csv"; tail -n +2 "$out/${c}_f16.csv"; } > "$out/$c.csv"
     cp "$out/$c.csv" "$docs/report_$c.csv"
@@ -123,9 +136,9 @@ cp "$out/stability.csv" "$docs/report_stability.csv"
 cp "$out/skip.csv" "$docs/report_skip.csv"
 cp "$out/tiles.csv" "$docs/report_tiles.csv"
 {
-    echo "kind,frame,scene,F,levels,mode,threshold,instructions,output_fnv1a"
-    awk '{ printf "sweep,640x480,scene,%s,%s,skip,0.6,%s,%s\n", $1, $2, $3, $4 }' "$out/sweep_icount.tsv"
-    awk '{ printf "skip,%s,%s,20,5,%s,1.0,%s,%s\n", $1, $2, $3, $4, $5 }' "$out/skip_icount.tsv"
+    echo "kind,frame,scene,F,levels,mode,threshold,instructions,output_fnv1a,sample_bits"
+    awk '{ printf "sweep,640x480,scene,%s,%s,skip,0.6,%s,%s,%s\n", $1, $2, $4, $5, $3 }' "$out/sweep_icount.tsv"
+    awk '{ printf "skip,%s,%s,20,5,%s,1.0,%s,%s,32\n", $1, $2, $3, $4, $5 }' "$out/skip_icount.tsv"
 } > "$docs/report_icount.csv"
 icpanel=$(grep -vc '^#' "$out/pareto_ic.dat" || true)
 gnuplot -e "out='$out'; docs='$docs'; sizes='$(echo "$sizes" | tr , ' ')'; icpanel=$icpanel; \

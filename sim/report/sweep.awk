@@ -1,14 +1,17 @@
 # The error-against-run-time table, the Pareto fronts and the plot data, from
 # the report_sweep CSV (one row per F, size, N and input; pooled here).
 #   awk -F, -v out=DIR -f sweep.awk ICOUNT.tsv SWEEP.csv
-# ICOUNT.tsv: "F L Ir fnv" of one bloom_process at 640x480 (callgrind).
+# ICOUNT.tsv: "F L W Ir fnv" of one bloom_process at 640x480 (callgrind),
+# W the row sample width. This file takes the 32-bit rows only (all six
+# inputs); width.awk compares the widths.
 # Writes DIR/sweep_table.md, DIR/sweep_default.md, DIR/pareto_WxH.dat,
 # DIR/front_WxH.dat. x = CPU-time ratio to the cold memcpy of the same rounds;
 # y = MSE in 8-bit LSB^2 against the float model. CSV fields 21-23: signed
 # mean (engine - model), samples above and below (engine > / < model).
 FNR == 1 { file++ }
-file == 1 { split($0, q, /[ \t]+/); ic[q[1], q[2]] = q[3]; next }
+file == 1 { split($0, q, /[ \t]+/); if (q[3] == 32) ic[q[1], q[2]] = q[4]; next }
 FNR == 1 { next }
+$24 == 16 { next }
 {   # pool the inputs of one (F, size, N): equal sample counts, so plain means
     k = $1 SUBSEP $2 "x" $3 SUBSEP $4
     if (!(k in cnt)) { keys[++nk] = k; kF[k] = $1; kS[k] = $2 "x" $3; kL[k] = $4 }

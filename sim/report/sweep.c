@@ -3,7 +3,7 @@
  *
  *   report_sweep --ref DIR [--csv PATH] [--data DIR] [--sizes WxH,...]
  *                [--levels A-B] [--inputs a,b,...] [--runs N] [--runs-big N]
- *                [--warmup N] [--ring-mb N] [--model-only]
+ *                [--warmup N] [--ring-mb N] [--widths 32,16] [--model-only]
  *
  * Per size, input and level count: the float model's RGB888 output (cached
  * in DIR: it does not depend on F, so one run of the model serves every F;
@@ -11,7 +11,9 @@
  * RGB888 frame, engine}, medians of both, and the engine's output of the
  * last round against the model (peak, mean |e|, signed mean with the samples
  * above and below it, MSE, % exact); one CSV row each (run.sh pools the
- * inputs).
+ * inputs). --widths lists the row sample widths (cfg.sample_bits) run at
+ * every level count; the model does not depend on them either. A width the
+ * engine refuses for a configuration is reported and left out.
  * Measures and prints; asserts nothing. */
 #include <stdlib.h>
 #include <string.h>
@@ -30,6 +32,7 @@ typedef struct {
     const char *inputs[MAX_INPUTS];
     int ninputs;
     int runs, runs_big, warm, model_only;
+    int widths[2], nwidths;
     size_t ring_bytes;
 } opts_t;
 
@@ -78,17 +81,18 @@ static uint8_t *reference(const opts_t *o, const rin_t *in, const bloom_config_t
     return ref;
 }
 
-static void csv_row(FILE *f, int w, int h, int lv, const char *input, const char *fmt, const row_t *a)
+static void csv_row(FILE *f, int w, int h, int lv, int bits, const char *input, const char *fmt,
+                    const row_t *a)
 {
     char ps[32];
     /* the bias fields last: sweep.awk reads the columns by index */
     fprintf(f,
             "%d,%d,%d,%d,%d,%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%lld,%.6f,%.6f,%s,%.4f,%zu,"
-            "%.6f,%lld,%lld\n",
+            "%.6f,%lld,%lld,%d\n",
             BLOOM_LIN_BITS, w, h, lv, a->built, input, fmt, a->runs, a->eng_ms, a->eng_cpu, a->mc_ms,
             a->mc_cpu, a->x_wall, a->x_cpu, a->st.peak, rstat_mean(&a->st), rstat_mse(&a->st),
             rpsnr_str(rstat_psnr(&a->st), ps, sizeof ps), rstat_exact(&a->st), a->ws,
-            rstat_signed_mean(&a->st), a->st.above, a->st.below);
+            rstat_signed_mean(&a->st), a->st.above, a->st.below, bits);
 }
 
 static void sweep_size(const opts_t *o, int w, int h, rring_t *ring, FILE *csv)
@@ -110,41 +114,50 @@ static void sweep_size(const opts_t *o, int w, int h, rring_t *ring, FILE *csv)
                 free(ref);
                 continue;
             }
-            bloom_info_t info;
-            bloom_status_t st = bloom_query(&c, &info);
-            void *ws = NULL;
-            bloom_t *b = NULL;
-            if (st != BLOOM_OK || posix_memalign(&ws, BLOOM_WORKSPACE_ALIGN, info.workspace_bytes) ||
-                (st = bloom_init(&b, ws, info.workspace_bytes, &c)) != BLOOM_OK)
-                rdie("engine %s %dx%d L%d: %s", in.name, w, h, lv, bloom_status_str(st));
-            size_t mc_bytes = rgb_bytes;
-            rengine_ctx_t ec = {b, (ptrdiff_t)in.stride, (ptrdiff_t)(w * 3)};
-            rtimer_t t[2] = {{rrun_memcpy, &mc_bytes, 0, 0, 0, NULL}, {rrun_engine, &ec, 0, 0, 0, NULL}};
-            if (rtime_rounds(ring, t, 2, o->warm, runs))
-                rdie("engine run failed");
-            row_t one;
-            memset(&one, 0, sizeof one);
-            for (size_t i = 0; i < rgb_bytes; i++)
-                rstat_add(&one.st, t[1].last_dst[i], ref[i], 255);
-            one.eng_ms = t[1].wall_ms;
-            one.eng_cpu = t[1].cpu_ms;
-            one.mc_ms = t[0].wall_ms;
-            one.mc_cpu = t[0].cpu_ms;
-            one.x_wall = t[1].wall_ms / t[0].wall_ms;
-            one.x_cpu = t[1].cpu_ms / t[0].cpu_ms;
-            one.built = info.levels;
-            one.runs = runs;
-            bloom_config_t c8 = c; /* the RGB888-input figure, as README's memory table */
-            c8.in_fmt = BLOOM_FMT_RGB888;
-            one.ws = bloom_workspace_size(&c8);
-            csv_row(csv, w, h, lv, in.name, in.fmt == BLOOM_FMT_RGBQ16 ? "RGBQ16" : "RGB888", &one);
-            printf("F%d %dx%d L%d %-12s x memcpy %7.2f (CPU %7.2f)  peak %lld exact %.3f%% "
-                   "signed mean %+.5f (%lld above, %lld below) mean |e| %.5f\n",
-                   BLOOM_LIN_BITS, w, h, lv, in.name, one.x_wall, one.x_cpu, one.st.peak,
-                   rstat_exact(&one.st), rstat_signed_mean(&one.st), one.st.above, one.st.below,
-                   rstat_mean(&one.st));
-            fflush(stdout);
-            free(ws);
+            for (int wi = 0; wi < o->nwidths; wi++) {
+                c.sample_bits = o->widths[wi];
+                bloom_info_t info;
+                bloom_status_t st = bloom_query(&c, &info);
+                if (st == BLOOM_E_SAMPLE_BITS) { /* RGBQ16 input, or a format it cannot carry */
+                    printf("F%d %dx%d L%d %-12s %d-bit samples refused: %s\n", BLOOM_LIN_BITS, w, h, lv,
+                           in.name, c.sample_bits, bloom_status_str(st));
+                    continue;
+                }
+                void *ws = NULL;
+                bloom_t *b = NULL;
+                if (st != BLOOM_OK || posix_memalign(&ws, BLOOM_WORKSPACE_ALIGN, info.workspace_bytes) ||
+                    (st = bloom_init(&b, ws, info.workspace_bytes, &c)) != BLOOM_OK)
+                    rdie("engine %s %dx%d L%d: %s", in.name, w, h, lv, bloom_status_str(st));
+                size_t mc_bytes = rgb_bytes;
+                rengine_ctx_t ec = {b, (ptrdiff_t)in.stride, (ptrdiff_t)(w * 3)};
+                rtimer_t t[2] = {{rrun_memcpy, &mc_bytes, 0, 0, 0, NULL}, {rrun_engine, &ec, 0, 0, 0, NULL}};
+                if (rtime_rounds(ring, t, 2, o->warm, runs))
+                    rdie("engine run failed");
+                row_t one;
+                memset(&one, 0, sizeof one);
+                for (size_t i = 0; i < rgb_bytes; i++)
+                    rstat_add(&one.st, t[1].last_dst[i], ref[i], 255);
+                one.eng_ms = t[1].wall_ms;
+                one.eng_cpu = t[1].cpu_ms;
+                one.mc_ms = t[0].wall_ms;
+                one.mc_cpu = t[0].cpu_ms;
+                one.x_wall = t[1].wall_ms / t[0].wall_ms;
+                one.x_cpu = t[1].cpu_ms / t[0].cpu_ms;
+                one.built = info.levels;
+                one.runs = runs;
+                bloom_config_t c8 = c; /* the RGB888-input figure, as README's memory table */
+                c8.in_fmt = BLOOM_FMT_RGB888;
+                one.ws = bloom_workspace_size(&c8);
+                csv_row(csv, w, h, lv, c.sample_bits, in.name,
+                        in.fmt == BLOOM_FMT_RGBQ16 ? "RGBQ16" : "RGB888", &one);
+                printf("F%d %dx%d L%d w%d %-12s x memcpy %7.2f (CPU %7.2f)  peak %lld exact %.3f%% "
+                       "signed mean %+.5f (%lld above, %lld below) mean |e| %.5f\n",
+                       BLOOM_LIN_BITS, w, h, lv, c.sample_bits, in.name, one.x_wall, one.x_cpu, one.st.peak,
+                       rstat_exact(&one.st), rstat_signed_mean(&one.st), one.st.above, one.st.below,
+                       rstat_mean(&one.st));
+                fflush(stdout);
+                free(ws);
+            }
             free(ref);
         }
         rin_free(&in);
@@ -165,6 +178,7 @@ int main(int argc, char **argv)
     o.ninputs = 6;
     o.runs = 7, o.runs_big = 5, o.warm = 1;
     o.ring_bytes = 0;
+    o.widths[0] = 32, o.widths[1] = 16, o.nwidths = 2;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--model-only")) {
@@ -198,7 +212,14 @@ int main(int argc, char **argv)
             o.runs_big = atoi(v);
         else if (!strcmp(a, "--warmup"))
             o.warm = atoi(v);
-        else if (!strcmp(a, "--ring-mb"))
+        else if (!strcmp(a, "--widths")) {
+            o.nwidths = sscanf(v, "%d,%d", &o.widths[0], &o.widths[1]);
+            for (int k = 0; k < o.nwidths; k++)
+                if (o.widths[k] != 32 && o.widths[k] != 16)
+                    o.nwidths = 0;
+            if (o.nwidths < 1)
+                rdie("bad --widths '%s' (32, 16 or 32,16)", v);
+        } else if (!strcmp(a, "--ring-mb"))
             o.ring_bytes = (size_t)atol(v) << 20;
         else
             rdie("unknown option %s", a);
@@ -221,7 +242,7 @@ int main(int argc, char **argv)
         csv = ropen(o.csv, tmp, sizeof tmp);
         fprintf(csv, "F,width,height,levels,levels_built,input,format,runs,engine_ms,engine_cpu_ms,"
                      "memcpy_ms,memcpy_cpu_ms,x_memcpy,x_memcpy_cpu,peak_lsb,mean_lsb,mse,psnr_db,"
-                     "exact_pct,workspace,signed_mean_lsb,n_above,n_below\n");
+                     "exact_pct,workspace,signed_mean_lsb,n_above,n_below,sample_bits\n");
     }
     for (int s = 0; s < o.nsizes; s++)
         sweep_size(&o, o.sw[s], o.sh[s], &ring, csv);
