@@ -145,14 +145,14 @@ static void bit_exact(void)
            runs, diff, tiles);
 }
 
-/* The 16-bit kernels' twins (the SSE2 ones on x86-64; elsewhere the C ones
- * against themselves, and test-cross runs this on ARM) and the flat tent
- * against the C tent, on random rows, every rounding residue and the
- * largest values the format's bound allows. */
-static void twins(void)
+/* The 16-bit kernels' twins of a kernel set (AVX2 and SSE2 on x86-64;
+ * elsewhere the C ones against themselves, and test-cross runs this on ARM)
+ * and the flat tent against the C tent, on random rows, every rounding
+ * residue and the largest values the format's bound allows. */
+static void twins_of(uint32_t flags)
 {
     bloom_kernels_t simd, c;
-    bloom_kernels_select(&simd, 0);
+    bloom_kernels_select(&simd, flags);
     bloom_kernels_select(&c, BLOOM_FLAG_NO_SIMD);
     uint32_t s = 99;
     long bad = 0, cases = 0;
@@ -172,9 +172,24 @@ static void twins(void)
         const uint32_t o1 = bloom_row_narrow16_k(&simd, src, d1, 3 * n, sh),
                        o2 = bloom_row_narrow16_c(src, d2, 3 * n, sh);
         bad += o1 != o2 || memcmp(d1, d2, (size_t)(3 * n) * 2u);
+        for (int i = 0; i < 3 * n; i++) /* narrowed + add stays within 16 bits: the format's bound */
+            src[i] = src[i] >> 1;
+        bloom_row_narrow16_add_k(&simd, src, it & 1 ? add : NULL, d1, 3 * n, sh);
+        bloom_row_narrow16_add_c(src, it & 1 ? add : NULL, d2, 3 * n, sh);
+        bad += memcmp(d1, d2, (size_t)(3 * n) * 2u) != 0;
         const uint32_t v1 = bloom_row_vtent16w_k(&simd, a, b, cc, w32a, 3 * n, sh - 1),
                        v2 = bloom_row_vtent16w_c(a, b, cc, w32b, 3 * n, sh - 1);
         bad += v1 != v2 || memcmp(w32a, w32b, (size_t)(3 * n) * 4u);
+        { /* the boxes: n source pixels into (n + 1) / 2, both outputs */
+            const uint16_t *const rows[4] = {a, b, cc, add};
+            const int dw = (n + 1) / 2;
+            bloom_row_box16_k(&simd, rows, d1, false, dw, n, 0);
+            bloom_row_box16_c(rows, d2, dw, n);
+            bad += memcmp(d1, d2, (size_t)(3 * dw) * 2u) != 0;
+            bloom_row_box16_k(&simd, rows, w32a, true, dw, n, sh - 1);
+            bloom_row_box16w_c(rows, w32b, dw, n, sh - 1);
+            bad += memcmp(w32a, w32b, (size_t)(3 * dw) * 4u) != 0;
+        }
         /* the flat tent: sw low-resolution columns, a row of 2 sw or 2 sw - 1 */
         const int sw = 1 + n / 2, w = 2 * sw - (it & 4 ? 1 : 0);
         if (3 * w <= 600) {
@@ -194,9 +209,18 @@ static void twins(void)
         cases++;
     }
     CHECKF(bad == 0, "16-bit kernels (%s): %ld of %ld cases differ from C", simd.name, bad, cases);
-    printf(
-        "16-bit kernels, %s against C: %ld random cases, narrowing, vertical tent, flat tent: %ld differ\n",
-        simd.name, cases, bad);
+    printf("16-bit kernels, %s against C: %ld random cases, narrowing (with add), vertical tent, boxes, flat "
+           "tent: "
+           "%ld differ\n",
+           simd.name, cases, bad);
+}
+
+static void twins(void)
+{
+    twins_of(0);
+#if defined(__x86_64__)
+    twins_of(BLOOM_FLAG_NO_AVX2); /* the SSE2 set */
+#endif
 }
 
 /* Every sample at 1.0, threshold 0 (everything blooms), as deep as each

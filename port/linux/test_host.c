@@ -449,7 +449,8 @@ int main(void)
     test_conv(&harness_pass, &harness_fail);
     printf("bloom_cam host tests: options, presets and --aux, Y'CbCr rows, framebuffer layouts, placement, "
            "line feed,\n"
-           "  capture faults (EINTR, EAGAIN, ENODEV, timeout, a source change: fatal, with their kind; short bytesused,\n"
+           "  capture faults (EINTR, EAGAIN, ENODEV, timeout, a source change: fatal, with their kind; short "
+           "bytesused,\n"
            "  V4L2_BUF_FLAG_ERROR: requeued and counted), --latest, the button's debounce;\n"
            "  test_conv.c: every capture format and Y'CbCr rule against bloom_sim's reader, --format auto\n");
     return harness_finish();

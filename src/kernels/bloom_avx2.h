@@ -27,6 +27,40 @@ static inline __m256i bloom_box_rnd8(__m256i s)
     return _mm256_srli_epi32(_mm256_add_epi32(_mm256_add_epi32(s, _mm256_set1_epi32(7)), odd), 4);
 }
 
+/* The box's horizontal pass (bloom_row_box_avx2, and its 16-bit twins in
+ * bloom_row16_avx2.c). Output pixel x, channel c is the rounded sum of the
+ * column sums V (four rows added) at samples 6x - 3 + c + {0, 3, 6, 9}
+ * (columns 2x - 1 .. 2x + 2). Per block of 8 pixels (24 samples, V from
+ * w = V + base b = 6x - 3) the sums Y(r) = V(b + r) + V(b + r + 3) +
+ * V(b + r + 6) + V(b + r + 9) are formed 8 at a time at r = 0, 8, 14, 24,
+ * 31, 42 and the wanted r = 6m + c picked by permutes: fewer instructions
+ * than the SSE2 twin's pairs. The sums are those of the C kernel (uint32,
+ * below 2^32: bloom_row_simd.h), so the bits are. Reads w[0 .. 58]. V is
+ * made once per chunk of BLOOM_BOX_CHUNK blocks into a stack row. */
+#define BLOOM_BOX_CHUNK 16
+
+static inline __m256i bloom_box_ysum(const uint32_t *v)
+{
+    return _mm256_add_epi32(_mm256_add_epi32(LD8(v), LD8(v + 3)), _mm256_add_epi32(LD8(v + 6), LD8(v + 9)));
+}
+
+/* Lanes of a by ia, and where the constant mask m_ has its bits, of b by
+ * ib (a macro: the blend's mask must be a constant expression). */
+#define PICK(a_, ia_, b_, ib_, m_)                                                                           \
+    _mm256_blend_epi32(_mm256_permutevar8x32_epi32((a_), (ia_)), _mm256_permutevar8x32_epi32((b_), (ib_)),   \
+                       (m_))
+
+/* The 24 rounded sums of the block whose V starts at w. */
+static inline __attribute__((always_inline)) void bloom_box_block8(const uint32_t *w, __m256i o[3])
+{
+    o[0] = bloom_box_rnd8(PICK(bloom_box_ysum(w), SET8(0, 1, 2, 6, 7, 0, 0, 0), bloom_box_ysum(w + 8),
+                               SET8(0, 0, 0, 0, 0, 0, 4, 5), 0xE0));
+    o[1] = bloom_box_rnd8(PICK(bloom_box_ysum(w + 14), SET8(0, 4, 5, 6, 0, 0, 0, 0), bloom_box_ysum(w + 24),
+                               SET8(0, 0, 0, 0, 0, 1, 2, 6), 0xF0));
+    o[2] = bloom_box_rnd8(PICK(bloom_box_ysum(w + 31), SET8(0, 1, 5, 6, 7, 0, 0, 0), bloom_box_ysum(w + 42),
+                               SET8(0, 0, 0, 0, 0, 0, 1, 2), 0xE0));
+}
+
 /* The OR of the 8 lanes. */
 static inline uint32_t or_lanes8(__m256i v)
 {

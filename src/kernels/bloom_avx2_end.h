@@ -4,6 +4,7 @@
 #undef SET8
 #undef GATHER
 #undef PERM
+#undef PICK
 #if defined(__clang__)
 #pragma clang attribute pop
 #else

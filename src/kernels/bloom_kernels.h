@@ -174,6 +174,15 @@ uint32_t bloom_row_vtent16w_c(const uint16_t *a, const uint16_t *b, const uint16
 void bloom_row_tent16w_c(const uint16_t *const u[3], int odd, uint32_t *dst, int x0, int n, int sw, int sh);
 /* bloom_row_box_c on 16-bit rows (sums in 32 bits; the same rounding). */
 void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
+/* Either box for destination pixels xa .. xb-1 only: into 16-bit samples,
+ * or (wide) into 32-bit ones widened by sh (dst is the row). */
+void bloom_row_box16_range_c(const uint16_t *const s[4], void *dst, bool wide, int xa, int xb, int sw,
+                             int sh);
+/* The tent's interleave (bloom_row_tent16_k): pixels x0 .. np-1 from the
+ * even columns' e and the odd columns' o (32-bit, 3 per column), plus add
+ * (NULL: none), as 16-bit samples. */
+void bloom_row_il16_c(const uint32_t *e, const uint32_t *o, const uint16_t *add, uint16_t *dst, int x0,
+                      int np);
 /* bloom_row_tent_c on 16-bit rows (add may be NULL or equal dst). */
 void bloom_row_tent16_c(const uint16_t *const u[3], int odd, const uint16_t *add, uint16_t *dst, int x0,
                         int n, int sw);
@@ -217,11 +226,17 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
  * decoded 8/6/5-bit samples). */
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
                      uint8_t *dst, int w, int sw, const bloom_out_t *o);
-/* The 16-bit kernels of k's instruction set: the SSE2 twins with an SSE2 or
- * AVX2 set (bloom_row16_sse2.c), the C ones otherwise; same bits. */
+/* The 16-bit kernels of k's instruction set: the AVX2 twins with the AVX2
+ * set (bloom_row16_avx2.c), the SSE2 ones with SSE2 (bloom_row16_sse2.c),
+ * the C ones otherwise; same bits. */
 uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uint16_t *dst, int n, int sh);
+void bloom_row_narrow16_add_k(const bloom_kernels_t *k, const uint32_t *src, const uint16_t *add,
+                              uint16_t *dst, int n, int sh);
 uint32_t bloom_row_vtent16w_k(const bloom_kernels_t *k, const uint16_t *a, const uint16_t *b,
                               const uint16_t *c, uint32_t *dst, int n, int sh);
+/* bloom_row_box16_c (wide: bloom_row_box16w_c) with the kernels of k. */
+void bloom_row_box16_k(const bloom_kernels_t *k, const uint16_t *const s[4], void *dst, bool wide, int dw,
+                       int sw, int sh);
 /* bloom_row_tent16_c for a whole row (x0 = 0) through flat passes: the
  * vertical tent (bloom_row_vtent16w_k, sh 0), k's horizontal tent into
  * even and odd columns, the interleave with add. Same bits. */
@@ -300,6 +315,16 @@ static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
 /* A row with B = 0: the source decoded and encoded again (no tent). */
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
 
+/* The AVX2 twins of the 16-bit kernels (bloom_row16_avx2.c). */
+#if defined(BLOOM_SIMD_AVX2) && BLOOM_USE_S16
+uint32_t bloom_row_narrow16_avx2(const uint32_t *src, uint16_t *dst, int n, int sh);
+void bloom_row_narrow16_add_avx2(const uint32_t *src, const uint16_t *add, uint16_t *dst, int n, int sh);
+uint32_t bloom_row_vtent16w_avx2(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst,
+                                 int n, int sh);
+void bloom_row_box16_avx2(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
+void bloom_row_box16w_avx2(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh);
+void bloom_row_il16_avx2(const uint32_t *e, const uint32_t *o, const uint16_t *add, uint16_t *dst, int np);
+#endif
 /* The SSE2 twins of the 16-bit kernels (bloom_row16_sse2.c). */
 #if defined(BLOOM_SIMD_SSE2) && BLOOM_USE_S16
 uint32_t bloom_row_narrow16_sse2(const uint32_t *src, uint16_t *dst, int n, int sh);

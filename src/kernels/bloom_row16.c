@@ -91,17 +91,18 @@ static inline void colsum4(const uint16_t *const s[4], int c, uint32_t out[3])
         out[ch] = (uint32_t)s[0][i + ch] + s[1][i + ch] + s[2][i + ch] + s[3][i + ch];
 }
 
-/* Both boxes: each sum widened by sh (0: none) and rounded as the 32-bit box
- * rounds it, stored as 16-bit samples or (wide) 32-bit ones. */
-static BLOOM_ALWAYS_INLINE void box16(const uint16_t *const s[4], void *dst, bool wide, int dw, int sw,
-                                      int sh)
+/* Both boxes for destination pixels xa .. xb-1: each sum widened by sh (0:
+ * none) and rounded as the 32-bit box rounds it, stored as 16-bit samples
+ * or (wide) 32-bit ones. */
+static BLOOM_ALWAYS_INLINE void box16(const uint16_t *const s[4], void *dst, bool wide, int xa, int xb,
+                                      int sw, int sh)
 {
     uint32_t a[3], b[3], c[3], d[3];
-    if (dw < 1)
+    if (xb <= xa)
         return;
-    colsum4(s, 0, a); /* column -1 clamps to 0 */
-    colsum4(s, 0, b);
-    for (int x = 0; x < dw; x++) {
+    colsum4(s, imax(2 * xa - 1, 0), a); /* column -1 clamps to 0 */
+    colsum4(s, 2 * xa, b);
+    for (int x = xa; x < xb; x++) {
         colsum4(s, imin(2 * x + 1, sw - 1), c);
         colsum4(s, imin(2 * x + 2, sw - 1), d);
         for (int ch = 0; ch < 3; ch++) {
@@ -118,12 +119,30 @@ static BLOOM_ALWAYS_INLINE void box16(const uint16_t *const s[4], void *dst, boo
 
 void bloom_row_box16_c(const uint16_t *const s[4], uint16_t *dst, int dw, int sw)
 {
-    box16(s, dst, false, dw, sw, 0);
+    box16(s, dst, false, 0, dw, sw, 0);
 }
 
 void bloom_row_box16w_c(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh)
 {
-    box16(s, dst, true, dw, sw, sh);
+    box16(s, dst, true, 0, dw, sw, sh);
+}
+
+void bloom_row_box16_range_c(const uint16_t *const s[4], void *dst, bool wide, int xa, int xb, int sw, int sh)
+{
+    if (wide)
+        box16(s, dst, true, xa, xb, sw, sh);
+    else
+        box16(s, dst, false, xa, xb, sw, 0);
+}
+
+void bloom_row_il16_c(const uint32_t *e, const uint32_t *o, const uint16_t *add, uint16_t *dst, int x0,
+                      int np)
+{
+    for (int x = x0; x < np; x++) { /* pixel x: column x / 2 of the even or the odd half */
+        const uint32_t *p = (x & 1 ? o : e) + 3 * (x >> 1);
+        for (int c = 0; c < 3; c++)
+            dst[3 * x + c] = (uint16_t)(p[c] + (add ? add[3 * x + c] : 0u));
+    }
 }
 
 /* The vertical tent of rows u0..u2 at sample i: (3, 4, 1) or (1, 4, 3), half up. */
@@ -162,6 +181,10 @@ void bloom_row_tent16_c(const uint16_t *const u[3], int odd, const uint16_t *add
 
 uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uint16_t *dst, int n, int sh)
 {
+#if defined(BLOOM_SIMD_AVX2)
+    if (k->isa == BLOOM_ISA_AVX2)
+        return bloom_row_narrow16_avx2(src, dst, n, sh);
+#endif
 #if defined(BLOOM_SIMD_SSE2)
     if (bloom_kernels_simd(k))
         return bloom_row_narrow16_sse2(src, dst, n, sh);
@@ -170,15 +193,48 @@ uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uin
     return bloom_row_narrow16_c(src, dst, n, sh);
 }
 
+void bloom_row_narrow16_add_k(const bloom_kernels_t *k, const uint32_t *src, const uint16_t *add,
+                              uint16_t *dst, int n, int sh)
+{
+#if defined(BLOOM_SIMD_AVX2)
+    if (k->isa == BLOOM_ISA_AVX2) {
+        bloom_row_narrow16_add_avx2(src, add, dst, n, sh);
+        return;
+    }
+#endif
+    (void)k;
+    bloom_row_narrow16_add_c(src, add, dst, n, sh);
+}
+
 uint32_t bloom_row_vtent16w_k(const bloom_kernels_t *k, const uint16_t *a, const uint16_t *b,
                               const uint16_t *c, uint32_t *dst, int n, int sh)
 {
+#if defined(BLOOM_SIMD_AVX2)
+    if (k->isa == BLOOM_ISA_AVX2)
+        return bloom_row_vtent16w_avx2(a, b, c, dst, n, sh);
+#endif
 #if defined(BLOOM_SIMD_SSE2)
     if (bloom_kernels_simd(k))
         return bloom_row_vtent16w_sse2(a, b, c, dst, n, sh);
 #endif
     (void)k;
     return bloom_row_vtent16w_c(a, b, c, dst, n, sh);
+}
+
+void bloom_row_box16_k(const bloom_kernels_t *k, const uint16_t *const s[4], void *dst, bool wide, int dw,
+                       int sw, int sh)
+{
+#if defined(BLOOM_SIMD_AVX2)
+    if (k->isa == BLOOM_ISA_AVX2) {
+        if (wide)
+            bloom_row_box16w_avx2(s, (uint32_t *)dst, dw, sw, sh);
+        else
+            bloom_row_box16_avx2(s, (uint16_t *)dst, dw, sw);
+        return;
+    }
+#endif
+    (void)k;
+    bloom_row_box16_range_c(s, dst, wide, 0, dw, sw, sh);
 }
 
 /* Low-resolution columns per chunk of bloom_row_tent16_k (stack: 9 x 32 words). */
@@ -208,11 +264,13 @@ void bloom_row_tent16_k(const bloom_kernels_t *k, const uint16_t *const u[3], in
         (void)k->htent_eo(vb + 3, eo, eo + 3 * TENT16_CH, 3 * nn);
         uint16_t *d = dst + (size_t)m0 * 6u;
         const uint16_t *ad = add ? add + (size_t)m0 * 6u : NULL;
-        for (int x = 0; x < np; x++) { /* pixel x: column x / 2 of the even or the odd half */
-            const uint32_t *p = eo + (x & 1 ? 3 * TENT16_CH : 0) + 3 * (x >> 1);
-            for (int c = 0; c < 3; c++)
-                d[3 * x + c] = (uint16_t)(p[c] + (ad ? ad[3 * x + c] : 0u));
+#if defined(BLOOM_SIMD_AVX2)
+        if (k->isa == BLOOM_ISA_AVX2) {
+            bloom_row_il16_avx2(eo, eo + 3 * TENT16_CH, ad, d, np);
+            continue;
         }
+#endif
+        bloom_row_il16_c(eo, eo + 3 * TENT16_CH, ad, d, 0, np);
     }
 }
 

@@ -286,27 +286,6 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
 
 /* ---- box down (levels 2 ..): column sums, then four of them ------------- */
 
-/* Output pixel x, channel c is the rounded sum of the column sums V (four
- * rows added) at samples 6x - 3 + c + {0, 3, 6, 9} (columns 2x - 1 ..
- * 2x + 2). Per block of 8 pixels (24 samples, base b = 6x - 3) the sums
- * Y(r) = V(b + r) + V(b + r + 3) + V(b + r + 6) + V(b + r + 9) are formed
- * 8 at a time at r = 0, 8, 14, 24, 31, 42 and the wanted r = 6m + c picked
- * by permutes: fewer instructions than the SSE2 twin's pairs. The sums
- * are those of the C kernel (uint32, below 2^32: bloom_row_simd.h), so the
- * bits are. V is made once per chunk of blocks into a stack row. */
-#define BOX_CHUNK 16 /* blocks of 8 pixels per V row */
-
-static inline __m256i ysum(const uint32_t *v)
-{
-    return _mm256_add_epi32(_mm256_add_epi32(LD8(v), LD8(v + 3)), _mm256_add_epi32(LD8(v + 6), LD8(v + 9)));
-}
-
-/* Lanes of a by ia, and where the constant mask m_ has its bits, of b by
- * ib (a macro: the blend's mask must be a constant expression). */
-#define PICK(a_, ia_, b_, ib_, m_)                                                                           \
-    _mm256_blend_epi32(_mm256_permutevar8x32_epi32((a_), (ia_)), _mm256_permutevar8x32_epi32((b_), (ib_)),   \
-                       (m_))
-
 void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
 {
     /* blocks start at x = 1 (no clamp on the left); block x reads V up
@@ -320,15 +299,9 @@ void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int s
         return;
     }
     bloom_row_box_range_c(s, dst, 0, xa, sw);
-    const __m256i i0a = _mm256_setr_epi32(0, 1, 2, 6, 7, 0, 0, 0),
-                  i0b = _mm256_setr_epi32(0, 0, 0, 0, 0, 0, 4, 5);
-    const __m256i i1a = _mm256_setr_epi32(0, 4, 5, 6, 0, 0, 0, 0),
-                  i1b = _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 2, 6);
-    const __m256i i2a = _mm256_setr_epi32(0, 1, 5, 6, 7, 0, 0, 0),
-                  i2b = _mm256_setr_epi32(0, 0, 0, 0, 0, 0, 1, 2);
-    uint32_t v[BOX_CHUNK * 48 + 16];
-    for (int j = 0; j < nb; j += BOX_CHUNK) {
-        const int k = imin(BOX_CHUNK, nb - j), x = xa + 8 * j;
+    uint32_t v[BLOOM_BOX_CHUNK * 48 + 16];
+    for (int j = 0; j < nb; j += BLOOM_BOX_CHUNK) {
+        const int k = imin(BLOOM_BOX_CHUNK, nb - j), x = xa + 8 * j;
         const size_t b = (size_t)(6 * x - 3);
         const int nv = (48 * (k - 1) + 59 + 7) / 8;
         for (int i = 0; i < nv; i++) {
@@ -338,10 +311,11 @@ void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int s
         }
         uint32_t *d = dst + 3u * (size_t)x;
         for (int q = 0; q < k; q++, d += 24) {
-            const uint32_t *w = v + 48 * q;
-            ST8(d, bloom_box_rnd8(PICK(ysum(w), i0a, ysum(w + 8), i0b, 0xE0)));
-            ST8(d + 8, bloom_box_rnd8(PICK(ysum(w + 14), i1a, ysum(w + 24), i1b, 0xF0)));
-            ST8(d + 16, bloom_box_rnd8(PICK(ysum(w + 31), i2a, ysum(w + 42), i2b, 0xE0)));
+            __m256i o[3];
+            bloom_box_block8(v + 48 * q, o);
+            ST8(d, o[0]);
+            ST8(d + 8, o[1]);
+            ST8(d + 16, o[2]);
         }
     }
     bloom_row_box_range_c(s, dst, xa + 8 * nb, dw, sw);

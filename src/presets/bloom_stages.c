@@ -101,10 +101,7 @@ static bool fn_box16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void 
     (void)r;
     const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
-    if (n->sb == 4)
-        bloom_row_box16w_c(s, (uint32_t *)dst, n->w, bg_node_in_w(ctx, n, 0), ctx->par.s16);
-    else
-        bloom_row_box16_c(s, (uint16_t *)dst, n->w, bg_node_in_w(ctx, n, 0));
+    bloom_row_box16_k(&ctx->kern, s, dst, n->sb == 4, n->w, bg_node_in_w(ctx, n, 0), ctx->par.s16);
     return true;
 }
 
@@ -126,7 +123,7 @@ static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                                       (const uint32_t *)in[0][2]};
         uint32_t *t = bg_scratch(ctx, 0);
         ctx->kern.tent(u, r & 1, NULL, t, 0, n->w, sw);
-        bloom_row_narrow16_add_c(t, add, (uint16_t *)dst, n->w * 3, ctx->par.s16);
+        bloom_row_narrow16_add_k(&ctx->kern, t, add, (uint16_t *)dst, n->w * 3, ctx->par.s16);
     } else {
         const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                       (const uint16_t *)in[0][2]};
