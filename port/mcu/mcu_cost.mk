@@ -9,6 +9,8 @@
 #                        the cross compilers if missing: port/mcu/cost_deps.sh)
 #   make target-cost-page  rewrite the page from the last run's results
 #                        ($(B)/cost/results.json), running nothing
+#   make target-cost-a   count Cortex-A again, keep the last Cortex-M results
+#                        (a change to the NEON or the armhf code only)
 #   make cost-build      only build $(B)/cost/
 # COST_JOBS=N runs N emulations at once (500 to 940 s for the whole page
 # with COST_JOBS=2 on this 2-core machine, shared with other work).
@@ -28,7 +30,7 @@ COST_FW := fw_main startup semihost fw_app fw_cost
 COST_A_SRC := sim/bench/icount.c sim/bench/scene.c sim/bench/variants.c sim/imgio.c
 COST_HDR := $(MCU_HDR) $(MCU_CORE_HDR)
 
-.PHONY: target-cost target-cost-page cost-build cost-selftest
+.PHONY: target-cost target-cost-page target-cost-a cost-build cost-selftest
 
 # $(1) width, $(2) cpu, $(3) build: the bench firmware, core and firmware
 # objects compiled as mcu.mk compiles the firmware's, plus the width's flags.
@@ -81,6 +83,12 @@ target-cost:
 
 target-cost-page:
 	@/usr/bin/python3 sim/bench/targets.py --build $(COST_B) --page-only --out sim/docs/targets.md
+
+target-cost-a:
+	@sh $(MCU)/cost_deps.sh
+	@$(MAKE) --no-print-directory cost-build
+	@/usr/bin/python3 sim/bench/targets.py --build $(COST_B) --widths '$(COST_WIDTHS)' --cortex-a-only \
+	  --builds '$(COST_MCU_BUILDS)' --archs '$(COST_A_ARCHS)' --out sim/docs/targets.md
 
 # The counters checked on hand-written programs of known counts (run by
 # make test-runner through tests/selftest/selftest.sh).

@@ -349,6 +349,8 @@ def main():
     ap.add_argument("--archs", default="aarch64 armhf")
     ap.add_argument("--out", required=True)
     ap.add_argument("--page-only", action="store_true")
+    ap.add_argument("--cortex-a-only", action="store_true",
+                    help="run the Cortex-A counts again, keep the last run's Cortex-M results")
     a = ap.parse_args()
     saved = os.path.join(a.build, "results.json")
     if a.page_only:
@@ -368,6 +370,10 @@ def main():
             for job in m_jobs(builds, w):
                 work.append((w, cpu, job, os.path.join(a.build, f"w{w}", f"{cpu}-{job[0]}", "fw_cost.elf"), host))
     mres = {}
+    if a.cortex_a_only:  # (a change that moves only the Cortex-A kernels)
+        d = json.load(open(saved))
+        mres = {(w, cpu, tuple(job)): r for w, cpu, job, r in d["m"]}
+        work = []
     with cf.ProcessPoolExecutor(max_workers=jobs) as ex:
         futs = {(w, cpu, job): ex.submit(m_run, elf, cpu, job) for w, cpu, job, elf, _h in work}
         for w, cpu, job, _elf, host in work:

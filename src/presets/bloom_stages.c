@@ -68,7 +68,7 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
                                   (const uint32_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
         bloom_row_copy_c(src, (uint8_t *)dst, n->w, &ctx->par.out);
-    else if (ctx->kern.htent_eo) /* (the flat kernels: every set but BLOOM_SMALL's) */
+    else if (!BLOOM_SMALL && ctx->kern.htent_eo) /* the flat kernels: every set but BLOOM_SMALL's */
         bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     else
         bloom_row_out_c(u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
