@@ -139,14 +139,16 @@ EOF
 cat "$out/width_default.md"
 cat <<EOF
 
-On this x86-64 host the 16-bit rows cost more than they save: the narrowing
-and the vertical tents have SSE2 twins, the boxes and the interleave are C,
-while the 32-bit path is SIMD throughout; the error grows by about an order
-of magnitude in MSE (still 1 LSB peak). What 16 bits buy here is memory (the
-workspace column). The trade turns where the 32-bit path has no SIMD to
-lose: the Cortex-M targets below. F 20 rows only in the table (every F is in
-the plot and in \`report_sweep.csv\`); "within N": against the other F and W
-at the same N.
+The 16-bit rows buy memory (the workspace column), not speed: every
+16-bit kernel has an AVX2 twin (the box shares the 32-bit box's horizontal
+pass), but the 16-bit path adds passes the 32-bit one has not (D_1
+narrowed, the tents' interleave, the tent out of level 3 narrowed), and
+its sums are formed in 32 bits as the 32-bit path's are; the error grows
+by about an order of magnitude in MSE (still 1 LSB peak). The targets
+below show the same on every CPU (sim/docs/fixed-point.md, "16-bit
+samples", has the reasons, and why the Cortex-M DSP instructions do not
+help). F 20 rows only in the table (every F is in the plot and in
+\`report_sweep.csv\`); "within N": against the other F and W at the same N.
 
 ![Sample width](report_width.png)
 
