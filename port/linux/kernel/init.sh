@@ -239,6 +239,7 @@ mkfifo /tmp/rec.fifo
 head -c 100000 /tmp/rec.fifo > /dev/null &
 /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --record /tmp/rec.fifo > /out/sigpipe.txt 2>&1
 echo "exit $?" >> /out/sigpipe.txt; echo "/sys pan after: $(cat $fb16pan)" >> /out/sigpipe.txt
+echo "vt after: $(/vtmode /dev/tty0 2>&1)" >> /out/sigpipe.txt
 rm -f /tmp/rec.fifo
 # a stalled stream that does not recover: every buffer dropped -> timeouts,
 # reopened until --reconnect gives up

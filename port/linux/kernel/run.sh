@@ -499,6 +499,8 @@ done
 fault_check sigterm 0 "vt during: graphics"
 fault_check sigterm 0 "vt after: text"
 fault_check sighup 0 "vt after: text"
+fault_check sigquit 0 "vt after: text"
+fault_check sigpipe 0 "vt after: text"
 fault_check disconnect-off 3 "vt after: text"
 # the double-buffered screen pans after the vertical blank (bochs-drm's fbdev
 # emulation waits for it)
