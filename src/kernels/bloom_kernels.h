@@ -228,7 +228,8 @@ void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int o
                      uint8_t *dst, int w, int sw, const bloom_out_t *o);
 /* The 16-bit kernels of k's instruction set: the AVX2 twins with the AVX2
  * set (bloom_row16_avx2.c), the SSE2 ones with SSE2 (bloom_row16_sse2.c),
- * the C ones otherwise; same bits. */
+ * the NEON ones with NEON (bloom_row16_neon.c), the C ones otherwise; same
+ * bits. */
 uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uint16_t *dst, int n, int sh);
 void bloom_row_narrow16_add_k(const bloom_kernels_t *k, const uint32_t *src, const uint16_t *add,
                               uint16_t *dst, int n, int sh);
@@ -324,6 +325,16 @@ uint32_t bloom_row_vtent16w_avx2(const uint16_t *a, const uint16_t *b, const uin
 void bloom_row_box16_avx2(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
 void bloom_row_box16w_avx2(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh);
 void bloom_row_il16_avx2(const uint32_t *e, const uint32_t *o, const uint16_t *add, uint16_t *dst, int np);
+#endif
+/* The NEON twins of the 16-bit kernels (bloom_row16_neon.c). */
+#if defined(BLOOM_SIMD_NEON) && BLOOM_USE_S16
+uint32_t bloom_row_narrow16_neon(const uint32_t *src, uint16_t *dst, int n, int sh);
+void bloom_row_narrow16_add_neon(const uint32_t *src, const uint16_t *add, uint16_t *dst, int n, int sh);
+uint32_t bloom_row_vtent16w_neon(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst,
+                                 int n, int sh);
+void bloom_row_box16_neon(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
+void bloom_row_box16w_neon(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh);
+void bloom_row_il16_neon(const uint32_t *e, const uint32_t *o, const uint16_t *add, uint16_t *dst, int np);
 #endif
 /* The SSE2 twins of the 16-bit kernels (bloom_row16_sse2.c). */
 #if defined(BLOOM_SIMD_SSE2) && BLOOM_USE_S16

@@ -185,6 +185,10 @@ uint32_t bloom_row_narrow16_k(const bloom_kernels_t *k, const uint32_t *src, uin
     if (k->isa == BLOOM_ISA_AVX2)
         return bloom_row_narrow16_avx2(src, dst, n, sh);
 #endif
+#if defined(BLOOM_SIMD_NEON)
+    if (k->isa == BLOOM_ISA_NEON)
+        return bloom_row_narrow16_neon(src, dst, n, sh);
+#endif
 #if defined(BLOOM_SIMD_SSE2)
     if (bloom_kernels_simd(k))
         return bloom_row_narrow16_sse2(src, dst, n, sh);
@@ -202,6 +206,12 @@ void bloom_row_narrow16_add_k(const bloom_kernels_t *k, const uint32_t *src, con
         return;
     }
 #endif
+#if defined(BLOOM_SIMD_NEON)
+    if (k->isa == BLOOM_ISA_NEON) {
+        bloom_row_narrow16_add_neon(src, add, dst, n, sh);
+        return;
+    }
+#endif
     (void)k;
     bloom_row_narrow16_add_c(src, add, dst, n, sh);
 }
@@ -212,6 +222,10 @@ uint32_t bloom_row_vtent16w_k(const bloom_kernels_t *k, const uint16_t *a, const
 #if defined(BLOOM_SIMD_AVX2)
     if (k->isa == BLOOM_ISA_AVX2)
         return bloom_row_vtent16w_avx2(a, b, c, dst, n, sh);
+#endif
+#if defined(BLOOM_SIMD_NEON)
+    if (k->isa == BLOOM_ISA_NEON)
+        return bloom_row_vtent16w_neon(a, b, c, dst, n, sh);
 #endif
 #if defined(BLOOM_SIMD_SSE2)
     if (bloom_kernels_simd(k))
@@ -230,6 +244,15 @@ void bloom_row_box16_k(const bloom_kernels_t *k, const uint16_t *const s[4], voi
             bloom_row_box16w_avx2(s, (uint32_t *)dst, dw, sw, sh);
         else
             bloom_row_box16_avx2(s, (uint16_t *)dst, dw, sw);
+        return;
+    }
+#endif
+#if defined(BLOOM_SIMD_NEON)
+    if (k->isa == BLOOM_ISA_NEON) {
+        if (wide)
+            bloom_row_box16w_neon(s, (uint32_t *)dst, dw, sw, sh);
+        else
+            bloom_row_box16_neon(s, (uint16_t *)dst, dw, sw);
         return;
     }
 #endif
@@ -267,6 +290,12 @@ void bloom_row_tent16_k(const bloom_kernels_t *k, const uint16_t *const u[3], in
 #if defined(BLOOM_SIMD_AVX2)
         if (k->isa == BLOOM_ISA_AVX2) {
             bloom_row_il16_avx2(eo, eo + 3 * TENT16_CH, ad, d, np);
+            continue;
+        }
+#endif
+#if defined(BLOOM_SIMD_NEON)
+        if (k->isa == BLOOM_ISA_NEON) {
+            bloom_row_il16_neon(eo, eo + 3 * TENT16_CH, ad, d, np);
             continue;
         }
 #endif
