@@ -46,11 +46,26 @@ static void refusals(void)
         if (bloom_config_preset(&o, (bloom_preset_t)p) != BLOOM_OK)
             continue;
         o.sample_bits = 16;
-        const bloom_status_t want = p == BLOOM_PRESET_ATTENUATION ? BLOOM_OK : BLOOM_E_SAMPLE_BITS;
+        const bloom_status_t want =
+            p == BLOOM_PRESET_ATTENUATION || p == BLOOM_PRESET_ARM ? BLOOM_OK : BLOOM_E_SAMPLE_BITS;
         CHECKF(bloom_query(&o, NULL) == want, "%s with 16-bit samples: %s expected",
                bloom_preset_name((bloom_preset_t)p), bloom_status_str(want));
     }
     CHECK(strstr(bloom_status_str(BLOOM_E_SAMPLE_BITS), "16") != NULL);
+#if BLOOM_USE_ARM
+    bloom_config_t ab; /* arm's baked map has no pyramid: nothing to hold in 16 bits */
+    bloom_config_default(&ab, 64, 48);
+    bloom_config_preset(&ab, BLOOM_PRESET_ARM);
+    ab.sample_bits = 16;
+    /* G: every value at most the knee's peak, whatever the level count */
+    CHECK(bloom_query(&ab, &info) == BLOOM_OK && info.sample_bits == 16 && info.sample_frac == 19);
+    ab.threshold = 0;
+    ab.levels = 16;
+    CHECK(bloom_query(&ab, &info) == BLOOM_OK && info.sample_frac == 15);
+    ab.flags |= BLOOM_FLAG_BAKED;
+    ab.aux_fmt = BLOOM_AUX_U8;
+    CHECK(bloom_query(&ab, NULL) == BLOOM_E_SAMPLE_BITS);
+#endif
     /* G by level count at threshold 0 (D_1 up to 1.0): L * 2^G < 2^16 */
     const int want[][2] = {{1, 15}, {2, 14}, {3, 14}, {4, 13}, {7, 13}, {8, 12}, {13, 12}};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
@@ -75,7 +90,8 @@ static void bit_exact(void)
     uint32_t s = 16;
     long long diff = 0;
     int runs = 0, tiles = 0;
-    for (int it = 0; it < 160; it++) {
+    int per[BLOOM_PRESET_COUNT] = {0};
+    for (int it = 0; it < 240; it++) {
         bloom_config_t c;
         const int w = 1 + (int)(rng_next(&s) % 90), h = 1 + (int)(rng_next(&s) % 70);
         bloom_config_default(&c, w, h);
@@ -96,6 +112,13 @@ static void bit_exact(void)
             bloom_config_preset(&c, BLOOM_PRESET_ATTENUATION);
             c.aux_fmt = r & 2048 ? BLOOM_AUX_U16 : BLOOM_AUX_U8;
             aux = aux_plane(w, h, c.aux_fmt, (uint32_t)it, &astride);
+        } else if (BLOOM_USE_ARM && (r & 4096)) { /* arm: one channel, its own filters; a mask or not */
+            bloom_config_preset(&c, BLOOM_PRESET_ARM);
+            c.p.tint[0] = rng_next(&s) % (BLOOM_ONE + 1);
+            if (r & 2048) {
+                c.aux_fmt = r & 8192 ? BLOOM_AUX_U16 : BLOOM_AUX_U8;
+                aux = aux_plane(w, h, c.aux_fmt, (uint32_t)it, &astride);
+            }
         }
         frame_t src = frame_random(&c, c.in_fmt, (uint32_t)it);
         if (r & 256) { /* dark rows and dark blocks: the skip paths */
@@ -109,6 +132,7 @@ static void bit_exact(void)
                c.levels, (unsigned)c.flags, pc.bittrue_diff);
         diff += pc.bittrue_diff;
         runs++;
+        per[c.preset]++;
         /* a tile of the same frame: the bits of the whole frame there */
         if (w > 2 && h > 2 && (r & 512) && !aux) {
             frame_t whole = run_engine(&c, &src);
@@ -141,8 +165,9 @@ static void bit_exact(void)
         frame_free(&src);
         free(aux);
     }
-    printf("bit-true: %d random configurations, %lld samples off the model; %d tiles against their frames\n",
-           runs, diff, tiles);
+    printf("bit-true: %d random configurations (unity %d, attenuation %d, arm %d), %lld samples off the "
+           "model; %d tiles against their frames\n",
+           runs, per[BLOOM_PRESET_UNITY], per[BLOOM_PRESET_ATTENUATION], per[BLOOM_PRESET_ARM], diff, tiles);
 }
 
 /* The 16-bit kernels' twins of a kernel set (AVX2 and SSE2 on x86-64;
@@ -254,6 +279,31 @@ static void worst_case(void)
     }
 }
 
+/* The arm preset's worst case: white frames at threshold 0 (D_1 at the
+ * knee's peak, G = 15), every level count, intensity 10 and full tint. */
+static void worst_case_arm(void)
+{
+#if BLOOM_USE_ARM
+    for (int L = 1; L <= 16; L += 3) {
+        bloom_config_t c;
+        bloom_config_default(&c, 300, 130);
+        bloom_config_preset(&c, BLOOM_PRESET_ARM);
+        c.sample_bits = 16;
+        c.levels = L;
+        c.threshold = 0;
+        c.intensity = BLOOM_MAX_INTENSITY;
+        c.flags = BLOOM_FLAG_DEBUG_VIEW;
+        c.out_fmt = BLOOM_FMT_RGBQ16;
+        bloom_info_t info;
+        CHECK(bloom_query(&c, &info) == BLOOM_OK && info.sample_frac == 15);
+        frame_t src = frame_alloc(c.width, c.height, BLOOM_FMT_RGB888, 255);
+        preset_conform_t pc = preset_conform(&c, &src, NULL, 0);
+        CHECKF(pc.ok && pc.bittrue_diff == 0, "arm white, %d levels: %lld off", info.levels, pc.bittrue_diff);
+        frame_free(&src);
+    }
+#endif
+}
+
 /* The workspace of each width (the rings halve; the source rows, the
  * schedule and the engine's own struct do not). */
 static void workspace(void)
@@ -272,6 +322,15 @@ static void workspace(void)
                cases[i][1], cases[i][2] == BLOOM_FMT_RGB565 ? "RGB565" : "RGB888", w32, w16,
                (double)w16 / (double)w32);
         CHECK(w16 > 0 && w16 < w32);
+#if BLOOM_USE_ARM
+        bloom_config_preset(&c, BLOOM_PRESET_ARM);
+        c.sample_bits = 32;
+        const size_t a32 = bloom_workspace_size(&c);
+        c.sample_bits = 16;
+        const size_t a16 = bloom_workspace_size(&c);
+        printf("  arm: %zu bytes with 32-bit samples, %zu with 16 (%.3fx)\n", a32, a16, (double)a16 / (double)a32);
+        CHECK(a16 > 0 && a16 < a32);
+#endif
     }
 }
 
@@ -339,6 +398,7 @@ int main(void)
     twins();
     bit_exact();
     worst_case();
+    worst_case_arm();
     workspace();
     workspace_macro();
     return harness_finish();

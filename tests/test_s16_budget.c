@@ -47,6 +47,53 @@ static void add(acc_t *a, const bloom_config_t *c, const frame_t *src)
 #define FLOOR_RANDOM 99.8
 #define FLOOR_IMAGE 99.4
 
+/* The 16-bit path of a preset other than unity at its defaults (cfg set
+ * but for sizes and formats) over the random corpus and the two images. */
+static void preset_budget(bloom_preset_t p, const frame_t img[2], const int have[2],
+                          const char *const images[2])
+{
+    static const bloom_format_t outs[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565};
+    static const char *const oname[] = {"RGB888", "XRGB8888", "RGB565"};
+    const int sizes[][2] = {{64, 48}, {257, 131}, {300, 200}};
+    for (size_t o = 0; o < 3; o++) {
+        char what[96];
+        acc_t a;
+        memset(&a, 0, sizeof a);
+        for (size_t si = 0; si < 3; si++)
+            for (int in = 0; in < 2; in++) {
+                bloom_config_t c;
+                bloom_config_default(&c, sizes[si][0], sizes[si][1]);
+                bloom_config_preset(&c, p);
+                c.sample_bits = 16;
+                c.in_fmt = in ? BLOOM_FMT_RGB565 : BLOOM_FMT_RGB888;
+                c.out_fmt = outs[o];
+                frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(si * 31 + (size_t)in * 7));
+                add(&a, &c, &src);
+                c.threshold = 0; /* everything blooms: the coarsest G */
+                add(&a, &c, &src);
+                frame_free(&src);
+            }
+        snprintf(what, sizeof what, "%s s16 random (its threshold and 0) -> %s", bloom_preset_name(p), oname[o]);
+        budget(what, &a, FLOOR_RANDOM);
+        for (int i = 0; i < 2; i++) {
+            if (!have[i])
+                continue;
+            memset(&a, 0, sizeof a);
+            bloom_config_t c;
+            bloom_config_default(&c, img[i].w, img[i].h);
+            bloom_config_preset(&c, p);
+            c.sample_bits = 16;
+            c.in_fmt = img[i].fmt;
+            c.out_fmt = outs[o];
+            if (i == 0)
+                c.threshold = BLOOM_Q16(0.6);
+            add(&a, &c, &img[i]);
+            snprintf(what, sizeof what, "%s s16 %s -> %s", bloom_preset_name(p), images[i], oname[o]);
+            budget(what, &a, FLOOR_IMAGE);
+        }
+    }
+}
+
 static void error_budget(void)
 {
     static const bloom_format_t outs[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565};
@@ -115,6 +162,9 @@ static void error_budget(void)
             budget(what, &a, FLOOR_IMAGE);
         }
     }
+#if BLOOM_USE_ARM
+    preset_budget(BLOOM_PRESET_ARM, img, have, images);
+#endif
     for (int i = 0; i < 2; i++)
         if (have[i])
             frame_free(&img[i]);

@@ -88,6 +88,11 @@ static double norm(int bt, double sum, double den, int rnd)
     return q + (r > den / 2 || (r == den / 2 && fmod(q, 2.0) == 1.0));
 }
 
+double bloom_model_round_even(double v, double den)
+{
+    return norm(1, v, den, RND_EVEN);
+}
+
 /* ---- images --------------------------------------------------------- */
 
 static int image_alloc(bloom_model_image_t *im, int w, int h)
@@ -404,6 +409,13 @@ static int s16_frac(const model_t *m, int L)
     while (g > 1 && L * fdiv(peak + ldexp(1.0, F - g - 1), ldexp(1.0, F - g)) > 65535.0)
         g--;
     return g;
+}
+
+int bloom_model_s16_frac(const bloom_model_params_t *p, int L)
+{
+    model_t m;
+    setup(p, &m);
+    return s16_frac(&m, L);
 }
 
 void bloom_model_pyramid_free(bloom_model_pyramid_t *pyr)

@@ -74,6 +74,11 @@ double bloom_model_decode(int bittrue, int linear, uint32_t code, int n, int lin
 uint32_t bloom_model_encode(int bittrue, int linear, double v, int n, int lin_bits);
 /* floor(a / b) for integers a < 2^53, b >= 1 held in doubles, exactly. */
 double bloom_model_fdiv(double a, double b);
+/* G of 16-bit samples for a bit-true p whose largest row value is L times
+ * the knee's peak (fixed-point.md, "16-bit samples"). */
+int bloom_model_s16_frac(const bloom_model_params_t *p, int L);
+/* a / den for integers a < 2^53, den >= 1, rounded half to even. */
+double bloom_model_round_even(double a, double den);
 double bloom_srgb_to_linear(double x); /* the sRGB curve of bloom-model.md, extended unchanged above 1 */
 double bloom_linear_to_srgb(double x); /* its inverse, for x >= 0 */
 int bloom_model_levels(int w, int h, int requested); /* L by the level-count rule; -1 on bad arguments */

@@ -153,6 +153,11 @@ int bloom_model_arm(const bloom_model_preset_args_t *a)
     const int w = c->width, h = c->height, F = p.lin_bits;
     const size_t np = (size_t)w * (size_t)h;
     const double one = ldexp(1.0, F), top = 4294967295.0;
+    /* 16-bit samples (bit-true; arm.md, "16-bit samples"): D_1 narrowed to
+     * G fraction bits (every value is at most the knee's peak: one "level"
+     * of it), the chain in those units, U_1 widened for B */
+    const int s16 = bt && c->sample_bits == 16;
+    const double step = s16 ? ldexp(1.0, F - bloom_model_s16_frac(&p, 1)) : 1.0;
     double *S = malloc(np * 3 * sizeof *S), *V = malloc(np * 3 * sizeof *V);
     plane_t lev[BLOOM_MODEL_MAX_LEVELS + 1], U;
     memset(lev, 0, sizeof lev);
@@ -202,13 +207,27 @@ int bloom_model_arm(const bloom_model_preset_args_t *a)
             if (down(&lev[k - 1], &lev[k], bt))
                 goto out;
             if (k == 1)
-                for (size_t i = 0; i < (size_t)lev[1].w * (size_t)lev[1].h; i++)
+                for (size_t i = 0; i < (size_t)lev[1].w * (size_t)lev[1].h; i++) {
                     lev[1].v[i] = knee1(&p, lev[1].v[i]);
+                    if (s16) /* narrowed to v / 2^-15, half to even */
+                        lev[1].v[i] = bloom_model_round_even(lev[1].v[i], step);
+                }
         }
         /* up: U_L = D_L, U_k = up(U_k+1), B = up(U_1) at level 0 */
         plane_t cur = lev[L];
         for (int k = L - 1; k >= 0; k--) {
             plane_t nxt;
+            if (k == 0 && s16) { /* U_1 widened for B (exact) */
+                plane_t wide;
+                const int fail = plane_new(&wide, cur.w, cur.h);
+                for (size_t i = 0; !fail && i < (size_t)cur.w * (size_t)cur.h; i++)
+                    wide.v[i] = cur.v[i] * step;
+                if (cur.v != lev[L].v)
+                    free(cur.v);
+                if (fail)
+                    goto out;
+                cur = wide;
+            }
             if (up(&cur, &nxt, lev[k].w, lev[k].h, bt)) {
                 if (cur.v != lev[L].v)
                     free(cur.v);

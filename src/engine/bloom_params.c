@@ -138,7 +138,8 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
          * RGBF32's 256.0; the default pipeline's stages only (unity, and
          * attenuation, whose first stage multiplies by at most 1) */
         if (c->sample_bits != 16 ||
-            (c->preset != BLOOM_PRESET_UNITY && c->preset != BLOOM_PRESET_ATTENUATION) ||
+            (c->preset != BLOOM_PRESET_UNITY && c->preset != BLOOM_PRESET_ATTENUATION &&
+             (c->preset != BLOOM_PRESET_ARM || (c->flags & BLOOM_FLAG_BAKED))) ||
             c->in_fmt == BLOOM_FMT_RGBQ16 || c->in_fmt == BLOOM_FMT_RGBF32)
             return BLOOM_E_SAMPLE_BITS;
     }

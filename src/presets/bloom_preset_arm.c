@@ -250,11 +250,18 @@ static bool fn_down(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
  * 3v(n), odd 2n+1 mirrored; the sum S <= 192M is 64-bit; out =
  * floor((S + 96) / 192) = floor(q / 3), q = (S + 96) >> 6 < 2^30,
  * q / 3 = (q * 0xAAAAAAAB) >> 33. Returns the OR of the pixels made. */
-static void up_av(const bloom_arm_kern_t *K, const uint32_t *const u[3], int odd, uint32_t *a, uint32_t *v,
+static void up_av(const bloom_arm_kern_t *K, const void *const u[3], int sh, int odd, uint32_t *a, uint32_t *v,
                   int c0, int c1, int sw)
 {
-    const uint32_t *u0 = odd ? u[2] : u[0], *u2 = odd ? u[0] : u[2];
-    K->up_v(u0 + c0, u[1] + c0, u2 + c0, a + 1 + c0, v + 1 + c0, c1 - c0 + 1);
+    const void *u0 = odd ? u[2] : u[0], *u2 = odd ? u[0] : u[2];
+#if BLOOM_USE_S16
+    if (sh >= 0) /* 16-bit rows (fn_up16, fn_out): their sums << sh */
+        bloom_arm_up_v16((const uint16_t *)u0 + c0, (const uint16_t *)u[1] + c0, (const uint16_t *)u2 + c0,
+                         a + 1 + c0, v + 1 + c0, c1 - c0 + 1, sh);
+    else
+#endif
+        K->up_v((const uint32_t *)u0 + c0, (const uint32_t *)u[1] + c0, (const uint32_t *)u2 + c0, a + 1 + c0,
+                v + 1 + c0, c1 - c0 + 1);
     if (c0 == 0)
         a[0] = a[1], v[0] = v[1];
     if (c1 == sw - 1)
@@ -282,18 +289,82 @@ static bool fn_up(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *co
 {
     const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
     const int sw = bg_in_w(ctx, n, 0), np = imin(sw, (n->w + 1) / 2); /* (sw is more in a tile) */
-    const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
-                                  (const uint32_t *)in[0][2]};
     uint32_t *a = bg_scratch(ctx, 0), *v = bg_scratch(ctx, 1);
-    up_av(K, u, r & 1, a, v, 0, imin(np, sw - 1), sw);
+    up_av(K, in[0], -1, r & 1, a, v, 0, imin(np, sw - 1), sw);
     return up_out(K, a, v, (uint32_t *)dst, 0, np, n->w, 0) != 0;
 }
+
+#if BLOOM_USE_S16
+/* The nodes on 16-bit rows (cfg.sample_bits = 16; arm.md, "16-bit
+ * samples"): the 32-bit node's work into a scratch row, then its samples
+ * stored as uint16_t. D_1 is narrowed by F - G bits, half to even; the
+ * filters average values already in G units, so their results fit and are
+ * copied as they are. */
+static uint32_t store16(const uint32_t *t, uint16_t *dst, int n)
+{
+    uint32_t any = 0;
+    for (int i = 0; i < n; i++) { /* t[i] <= 2^G: an average of values that are */
+        dst[i] = (uint16_t)t[i];
+        any |= t[i];
+    }
+    return any;
+}
+
+static bool fn_d1_16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                     void *dst)
+{
+    uint32_t *t = bg_scratch(ctx, 3); /* (d1_range takes rows 0 .. 2) */
+    (void)fn_d1(ctx, n, r, in, t);
+    return bloom_row_narrow16_k(&ctx->kern, t, (uint16_t *)dst, n->w, ctx->par.s16) != 0;
+}
+
+static bool fn_down16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                      void *dst)
+{
+    (void)r;
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
+    const int sw = bg_in_w(ctx, n, 0);
+    uint32_t *c4 = bg_scratch(ctx, 0), *c2 = bg_scratch(ctx, 1), *t = bg_scratch(ctx, 2);
+    bloom_arm_down_v16((const uint16_t *)in[0][0], (const uint16_t *)in[0][1], (const uint16_t *)in[0][2],
+                       (const uint16_t *)in[0][3], c4 + 1, c2 + 1, sw);
+    pad(c4, sw);
+    pad(c2, sw);
+    K->down_h(c4, c2, t, n->w);
+    return store16(t, (uint16_t *)dst, n->w) != 0;
+}
+
+static bool fn_up16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                    void *dst)
+{
+    const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
+    const int sw = bg_in_w(ctx, n, 0), np = imin(sw, (n->w + 1) / 2);
+    uint32_t *a = bg_scratch(ctx, 0), *v = bg_scratch(ctx, 1), *t = bg_scratch(ctx, 2);
+    up_av(K, in[0], 0, r & 1, a, v, 0, imin(np, sw - 1), sw);
+    (void)up_out(K, a, v, t, 0, np, n->w, 0);
+    return store16(t, (uint16_t *)dst, n->w) != 0;
+}
+#endif
 
 /* Per-channel composite factors g_c = I * tint_c, Q16.16 (< 2^24). */
 static void tint_factors(const bg_ctx_t *ctx, uint32_t f[3])
 {
     for (int c = 0; c < 3; c++)
         f[c] = (uint32_t)(((uint64_t)ctx->par.out.intensity * ctx->cfg->p.tint[c] + 32768u) >> 16);
+}
+
+/* The largest U_1 value of columns c0 .. c0+n-1 of three rows, in internal
+ * units (16-bit rows when sh >= 0). */
+static uint32_t max3(const bloom_arm_kern_t *K, const void *const u[3], int sh, int c0, int n)
+{
+#if BLOOM_USE_S16
+    if (sh >= 0)
+        return bloom_arm_max3_16((const uint16_t *)u[0] + c0, (const uint16_t *)u[1] + c0,
+                                 (const uint16_t *)u[2] + c0, n)
+               << sh;
+#else
+    (void)sh;
+#endif
+    return K->max3((const uint32_t *)u[0] + c0, (const uint32_t *)u[1] + c0, (const uint32_t *)u[2] + c0, n);
 }
 
 static inline uint32_t sat32(uint64_t v)
@@ -322,8 +393,9 @@ static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
         return true;
     }
     const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);
-    const uint32_t *const u[3] = {(const uint32_t *)in[1][0], (const uint32_t *)in[1][1],
-                                  (const uint32_t *)in[1][2]};
+    const void *const *const u = in[1];
+    /* U_1 in 16-bit rows: widened (<< F - G, exact) in the up filter's sums */
+    const int sh = ctx->par.s16 ? ctx->par.s16 : -1;
     uint32_t *a = bg_scratch(ctx, 0), *av = bg_scratch(ctx, 1), *b = bg_scratch(ctx, 2),
              *v = bg_scratch(ctx, 3);
     const size_t ibpp = (size_t)ctx->src_bpp, obpp = (size_t)bloom_format_bpp(ctx->par.out.out_fmt);
@@ -337,13 +409,13 @@ static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
         const int cn = imin(ARM_CHUNK, w - x0), n0 = x0 >> 1, n1 = ((x0 + cn - 1) >> 1) + 1;
         const int c0 = imax(n0 - 1, 0), c1 = imin(n1, sw - 1);
         if (skip) {
-            const uint64_t um = K->max3(u[0] + c0, u[1] + c0, u[2] + c0, c1 - c0 + 1);
+            const uint64_t um = max3(K, u, sh, c0, c1 - c0 + 1);
             if (um == 0 || (keep8 && ((fmax * um + 32768u) >> 16) <= BLOOM_KEEP8_H0)) {
                 bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &ctx->par.out);
                 continue;
             }
         }
-        up_av(K, u, r & 1, a, av, c0, c1, sw);
+        up_av(K, u, sh, r & 1, a, av, c0, c1, sw);
         if (!up_out(K, a, av, b, n0, n1, w, x0) && skip) {
             bloom_row_copy_c(src + (size_t)x0 * ibpp, out + (size_t)x0 * obpp, cn, &ctx->par.out);
             continue;
@@ -490,6 +562,19 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
     bg_input(g, o, u, BG_UP, -1, 1);
     g->out_node = o;
     par->scratch_rows = 4;
+#if BLOOM_USE_S16
+    if (g->cfg->sample_bits == 16) { /* every node but the output on 16-bit rows */
+        /* G: every value is at most the knee's peak (no per-level sums) */
+        par->s16 = (uint8_t)(BLOOM_LIN_BITS - bloom_s16_frac(1, bloom_knee_peak(&par->knee)));
+        for (int i = 0; i < g->nnodes; i++) {
+            bg_node_t *nd = &g->node[i];
+            if (i == o)
+                continue;
+            nd->fn = nd->fn == fn_d1 ? fn_d1_16 : nd->fn == fn_down ? fn_down16 : fn_up16;
+            bg_s16(g, i);
+        }
+    }
+#endif
     if (!BLOOM_SMALL)
         par->views = true; /* every row function reads its widths by bg_in_w */
     return BLOOM_OK;

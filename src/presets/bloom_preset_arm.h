@@ -72,6 +72,21 @@ extern const bloom_arm_kern_t bloom_arm_kern_neon;
 /* The set for an engine's instruction set (the C one for BLOOM_ISA_C). */
 const bloom_arm_kern_t *bloom_arm_kern(bloom_isa_t isa);
 
+#if BLOOM_USE_S16
+/* 16-bit samples (arm.md, "16-bit samples"): on 8/6/5-bit input every
+ * plane value below the source is at most the knee's peak P (the filters
+ * average; the mask only lowers Y), held as v / 2^G in a uint16_t with
+ * P 2^G < 2^16 (bloom_s16_frac(1, P): 15 at threshold 0, 18 at the
+ * default's 1.0). The vertical halves of the filters and the maximum on
+ * such rows (bloom_preset_arm_kern.c): down_v and max3 as above, up_v with
+ * its sums << sh. */
+void bloom_arm_down_v16(const uint16_t *s0, const uint16_t *s1, const uint16_t *s2, const uint16_t *s3,
+                        uint32_t *c4, uint32_t *c2, int n);
+void bloom_arm_up_v16(const uint16_t *u0, const uint16_t *u1, const uint16_t *u2, uint32_t *a, uint32_t *v,
+                      int n, int sh);
+uint32_t bloom_arm_max3_16(const uint16_t *u0, const uint16_t *u1, const uint16_t *u2, int n);
+#endif
+
 /* One output of the up filter from the five sums (q < 2^30 + 45). */
 static inline uint32_t bloom_arm_div192(uint64_t s)
 {

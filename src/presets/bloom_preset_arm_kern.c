@@ -65,6 +65,43 @@ static uint32_t max3_c(const uint32_t *u0, const uint32_t *u1, const uint32_t *u
     return m;
 }
 
+#if BLOOM_USE_S16
+/* The vertical halves and the maximum on 16-bit rows (cfg.sample_bits = 16:
+ * arm.md, "16-bit samples"), into the 32-bit column sums the horizontal
+ * halves read; the up filter's sums widened by << sh on the way (sh = F - G
+ * for the output's filter, 0 between levels). C only: they read what the
+ * 32-bit kernels read and are a small part of the preset's work. */
+void bloom_arm_down_v16(const uint16_t *s0, const uint16_t *s1, const uint16_t *s2, const uint16_t *s3,
+                        uint32_t *c4, uint32_t *c2, int n)
+{
+    for (int i = 0; i < n; i++) {
+        const uint32_t mid = (uint32_t)s1[i] + s2[i];
+        c2[i] = mid;
+        c4[i] = mid + s0[i] + s3[i];
+    }
+}
+
+void bloom_arm_up_v16(const uint16_t *u0, const uint16_t *u1, const uint16_t *u2, uint32_t *a, uint32_t *v,
+                      int n, int sh)
+{
+    for (int i = 0; i < n; i++) { /* 8 (2^16 - 1) << sh < 2^29 for sh <= 10 */
+        a[i] = ((uint32_t)u0[i] + 3u * u1[i]) << sh;
+        v[i] = (3u * u0[i] + 4u * u1[i] + u2[i]) << sh;
+    }
+}
+
+uint32_t bloom_arm_max3_16(const uint16_t *u0, const uint16_t *u1, const uint16_t *u2, int n)
+{
+    uint32_t m = 0;
+    for (int x = 0; x < n; x++) {
+        const uint32_t a = u0[x] > u1[x] ? u0[x] : u1[x];
+        m = a > m ? a : m;
+        m = u2[x] > m ? u2[x] : m;
+    }
+    return m;
+}
+#endif
+
 /* Y <= M: 64-bit products (Q24 weights x 2^28, their sum < 2^53). */
 #define ARM_LUM8_LOOP(OP)                                                                                    \
     for (int x = 0; x < n; x++, p += step) {                                                                 \
