@@ -2,7 +2,8 @@
  * samples"): what is refused and why; the 16-bit kernels against their C
  * twins; the engine bit for bit against the bit-true model with the same
  * option over random configurations (sizes, level counts, formats, flags,
- * tiles, attenuation's plane, C and SIMD kernels); the worst case pushed
+ * tiles, attenuation's plane, arm with and without its mask, xna's passes,
+ * C and SIMD kernels); the worst case pushed
  * through (every sample at 1.0, threshold 0, as deep as the frame goes, the
  * largest intensity); the workspace each width needs and its static bound.
  * The error against the float model is tests/test_s16_budget.c. */
@@ -40,14 +41,16 @@ static void refusals(void)
     bloom_config_t q = c; /* RGBQ16 output is made from S + I*B: taken */
     q.out_fmt = BLOOM_FMT_RGBQ16;
     CHECK(bloom_query(&q, NULL) == BLOOM_OK);
-    for (int p = 1; p < BLOOM_PRESET_COUNT; p++) { /* gamedev, xna, arm, cod: 32-bit stages only */
+    for (int p = 1; p < BLOOM_PRESET_COUNT; p++) { /* gamedev, cod: 32-bit stages only */
         bloom_config_t o;
         bloom_config_default(&o, 64, 48);
         if (bloom_config_preset(&o, (bloom_preset_t)p) != BLOOM_OK)
             continue;
         o.sample_bits = 16;
         const bloom_status_t want =
-            p == BLOOM_PRESET_ATTENUATION || p == BLOOM_PRESET_ARM ? BLOOM_OK : BLOOM_E_SAMPLE_BITS;
+            p == BLOOM_PRESET_ATTENUATION || p == BLOOM_PRESET_ARM || p == BLOOM_PRESET_XNA
+                ? BLOOM_OK
+                : BLOOM_E_SAMPLE_BITS;
         CHECKF(bloom_query(&o, NULL) == want, "%s with 16-bit samples: %s expected",
                bloom_preset_name((bloom_preset_t)p), bloom_status_str(want));
     }
@@ -91,7 +94,7 @@ static void bit_exact(void)
     long long diff = 0;
     int runs = 0, tiles = 0;
     int per[BLOOM_PRESET_COUNT] = {0};
-    for (int it = 0; it < 240; it++) {
+    for (int it = 0; it < 300; it++) {
         bloom_config_t c;
         const int w = 1 + (int)(rng_next(&s) % 90), h = 1 + (int)(rng_next(&s) % 70);
         bloom_config_default(&c, w, h);
@@ -112,6 +115,11 @@ static void bit_exact(void)
             bloom_config_preset(&c, BLOOM_PRESET_ATTENUATION);
             c.aux_fmt = r & 2048 ? BLOOM_AUX_U16 : BLOOM_AUX_U8;
             aux = aux_plane(w, h, c.aux_fmt, (uint32_t)it, &astride);
+        } else if (BLOOM_USE_XNA && (r & 16384)) { /* xna: 16-bit H, Q and passes, 32-bit last pass */
+            bloom_config_preset(&c, BLOOM_PRESET_XNA);
+            c.threshold = r & 1 ? 0 : rng_next(&s) % BLOOM_ONE;
+            c.p.passes = 1 + (int)(rng_next(&s) % 8);
+            c.flags |= r & 2048 ? BLOOM_FLAG_SATURATE : 0;
         } else if (BLOOM_USE_ARM && (r & 4096)) { /* arm: one channel, its own filters; a mask or not */
             bloom_config_preset(&c, BLOOM_PRESET_ARM);
             c.p.tint[0] = rng_next(&s) % (BLOOM_ONE + 1);
@@ -165,9 +173,10 @@ static void bit_exact(void)
         frame_free(&src);
         free(aux);
     }
-    printf("bit-true: %d random configurations (unity %d, attenuation %d, arm %d), %lld samples off the "
-           "model; %d tiles against their frames\n",
-           runs, per[BLOOM_PRESET_UNITY], per[BLOOM_PRESET_ATTENUATION], per[BLOOM_PRESET_ARM], diff, tiles);
+    printf("bit-true: %d random configurations (unity %d, attenuation %d, arm %d, xna %d), %lld samples off "
+           "the model; %d tiles against their frames\n",
+           runs, per[BLOOM_PRESET_UNITY], per[BLOOM_PRESET_ATTENUATION], per[BLOOM_PRESET_ARM],
+           per[BLOOM_PRESET_XNA], diff, tiles);
 }
 
 /* The 16-bit kernels' twins of a kernel set (AVX2 and SSE2 on x86-64;
@@ -322,15 +331,19 @@ static void workspace(void)
                cases[i][1], cases[i][2] == BLOOM_FMT_RGB565 ? "RGB565" : "RGB888", w32, w16,
                (double)w16 / (double)w32);
         CHECK(w16 > 0 && w16 < w32);
-#if BLOOM_USE_ARM
-        bloom_config_preset(&c, BLOOM_PRESET_ARM);
-        c.sample_bits = 32;
-        const size_t a32 = bloom_workspace_size(&c);
-        c.sample_bits = 16;
-        const size_t a16 = bloom_workspace_size(&c);
-        printf("  arm: %zu bytes with 32-bit samples, %zu with 16 (%.3fx)\n", a32, a16, (double)a16 / (double)a32);
-        CHECK(a16 > 0 && a16 < a32);
-#endif
+        const bloom_preset_t others[] = {BLOOM_PRESET_ARM, BLOOM_PRESET_XNA};
+        for (size_t p = 0; p < 2; p++) {
+            bloom_config_t o = c;
+            if (bloom_config_preset(&o, others[p]) != BLOOM_OK)
+                continue; /* (compiled out) */
+            o.sample_bits = 32;
+            const size_t o32 = bloom_workspace_size(&o);
+            o.sample_bits = 16;
+            const size_t o16 = bloom_workspace_size(&o);
+            printf("  %s: %zu bytes with 32-bit samples, %zu with 16 (%.3fx)\n", bloom_preset_name(others[p]),
+                   o32, o16, (double)o16 / (double)o32);
+            CHECK(o16 > 0 && o16 < o32);
+        }
     }
 }
 

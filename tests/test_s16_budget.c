@@ -1,6 +1,7 @@
 /* 16-bit samples (cfg.sample_bits = 16; sim/docs/fixed-point.md, "16-bit
  * samples"): the error against the float model on the random corpus and
- * the real 8-bit images, unity at 3, 5 and 8 levels and attenuation,
+ * the real 8-bit images, unity at 3, 5 and 8 levels, attenuation, arm and
+ * xna,
  * asserted (peak, % exact, signed mean) and printed; the bit-true
  * difference counted (0). A test of its own: the float model on the
  * images is slow under emulation (tests/cross.mk skips it there; test_s16
@@ -73,7 +74,8 @@ static void preset_budget(bloom_preset_t p, const frame_t img[2], const int have
                 add(&a, &c, &src);
                 frame_free(&src);
             }
-        snprintf(what, sizeof what, "%s s16 random (its threshold and 0) -> %s", bloom_preset_name(p), oname[o]);
+        snprintf(what, sizeof what, "%s s16 random (its threshold and 0) -> %s", bloom_preset_name(p),
+                 oname[o]);
         budget(what, &a, FLOOR_RANDOM);
         for (int i = 0; i < 2; i++) {
             if (!have[i])
@@ -164,6 +166,9 @@ static void error_budget(void)
     }
 #if BLOOM_USE_ARM
     preset_budget(BLOOM_PRESET_ARM, img, have, images);
+#endif
+#if BLOOM_USE_XNA
+    preset_budget(BLOOM_PRESET_XNA, img, have, images);
 #endif
     for (int i = 0; i < 2; i++)
         if (have[i])

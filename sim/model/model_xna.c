@@ -40,7 +40,8 @@ static double at(const bloom_model_image_t *im, int x, int y, int c)
  * x+i, x+i+1 (edge rule), weight 1/16 in all; scaled by f on the first pass
  * and by I on the last; optionally clamped to 1.0. */
 static int kawase(const xna_units_t *u, const bloom_model_image_t *src, bloom_model_image_t *dst, int i,
-                  int first, int last, int sat, uint64_t f_q, double f_real, uint32_t I_q, double I_real)
+                  int first, int last, int sat, uint64_t f_q, double f_real, uint32_t I_q, double I_real,
+                  double widen, double one)
 {
     dst->w = src->w;
     dst->h = src->h;
@@ -55,6 +56,7 @@ static int kawase(const xna_units_t *u, const bloom_model_image_t *src, bloom_mo
                 for (int a = 0; a < 4; a++)
                     for (int b = 0; b < 4; b++)
                         sum += at(src, x + off[b], y + off[a], c);
+                sum *= widen; /* 16-bit samples: the last pass's sums in internal units */
                 double v;
                 if (u->bt) {
                     if (first &&
@@ -81,7 +83,7 @@ static int kawase(const xna_units_t *u, const bloom_model_image_t *src, bloom_mo
                         v = fmin(v * I_real, u->lin_max);
                 }
                 if (sat)
-                    v = fmin(v, u->one);
+                    v = fmin(v, one);
                 pix(dst, x, y)[c] = v;
             }
     return 0;
@@ -116,18 +118,29 @@ int bloom_model_xna(const bloom_model_preset_args_t *a)
     for (size_t i = 0; i < (size_t)w * (size_t)h * 3u; i++)
         S.px[i] = bloom_model_decode(u.bt, p.linear, a->src[i], a->src_max[i % 3], F);
     /* half, then quarter with the threshold subtraction */
-    if (bloom_model_box_down(&S, &H, u.bt) || bloom_model_box_down(&H, &Q, u.bt))
+    /* 16-bit samples (bit-true; xna.md, "16-bit samples"): H, Q and the
+     * passes but the last narrowed to G = 15 fraction bits, half to even; Q
+     * is made from H widened, the last pass from its sums widened */
+    const int s16 = u.bt && c->sample_bits == 16;
+    const double step = s16 ? ldexp(1.0, F - 15) : 1.0;
+    if (bloom_model_box_down(&S, &H, u.bt))
+        goto out;
+    for (size_t i = 0; s16 && i < (size_t)H.w * (size_t)H.h * 3u; i++)
+        H.px[i] = bloom_model_round_even(H.px[i], step) * step;
+    if (bloom_model_box_down(&H, &Q, u.bt))
         goto out;
     for (size_t i = 0; i < (size_t)Q.w * (size_t)Q.h * 3u; i++) {
         double v = fmax(Q.px[i] - t, 0.0);
-        Q.px[i] = sat ? fmin(v, u.one) : v;
+        v = sat ? fmin(v, u.one) : v;
+        Q.px[i] = s16 ? bloom_model_round_even(v, step) : v;
     }
     /* Kawase passes at quarter resolution */
     const bloom_model_image_t *prev = &Q;
     for (int i = 0; i < P; i++) {
         bloom_model_image_t *next = &K[i & 1];
         bloom_model_image_free(next);
-        if (kawase(&u, prev, next, i, i == 0, i == P - 1, sat, f_q, f_real, p.intensity_q, I_real))
+        if (kawase(&u, prev, next, i, i == 0, i == P - 1, sat, f_q, f_real, p.intensity_q, I_real,
+                   i == P - 1 ? step : 1.0, i == P - 1 ? u.one : u.one / step))
             goto out;
         prev = next;
     }

@@ -57,7 +57,8 @@ const char *bloom_status_str(bloom_status_t st)
         return "dst overlaps src rows still needed (in place: same format, stride)";
     case BLOOM_E_SAMPLE_BITS:
 #if BLOOM_USE_S16
-        return "sample_bits must be 16 or 32; 16 takes unity and attenuation on 8/6/5-bit input only";
+        return "sample_bits must be 16 or 32; 16 takes unity, attenuation, xna and arm (not baked) on "
+               "8/6/5-bit input only";
 #else
         return "sample_bits not 32"; /* (16-bit samples compiled out: BLOOM_USE_S16 0) */
 #endif
@@ -135,10 +136,13 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     if (c->sample_bits != 0 && c->sample_bits != 32) {
         /* 16-bit rows carry samples up to 1.0 (fixed-point.md, "16-bit
          * samples"): what 8/6/5-bit codes decode to, not RGBQ16's or
-         * RGBF32's 256.0; the default pipeline's stages only (unity, and
-         * attenuation, whose first stage multiplies by at most 1) */
+         * RGBF32's 256.0; the default pipeline's stages (unity, and
+         * attenuation, whose first stage multiplies by at most 1), xna's and
+         * arm's pyramid (baked has none); gamedev and cod keep 32-bit rows
+         * (their pages say why) */
         if (c->sample_bits != 16 ||
             (c->preset != BLOOM_PRESET_UNITY && c->preset != BLOOM_PRESET_ATTENUATION &&
+             c->preset != BLOOM_PRESET_XNA &&
              (c->preset != BLOOM_PRESET_ARM || (c->flags & BLOOM_FLAG_BAKED))) ||
             c->in_fmt == BLOOM_FMT_RGBQ16 || c->in_fmt == BLOOM_FMT_RGBF32)
             return BLOOM_E_SAMPLE_BITS;

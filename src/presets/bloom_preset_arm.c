@@ -250,8 +250,8 @@ static bool fn_down(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
  * 3v(n), odd 2n+1 mirrored; the sum S <= 192M is 64-bit; out =
  * floor((S + 96) / 192) = floor(q / 3), q = (S + 96) >> 6 < 2^30,
  * q / 3 = (q * 0xAAAAAAAB) >> 33. Returns the OR of the pixels made. */
-static void up_av(const bloom_arm_kern_t *K, const void *const u[3], int sh, int odd, uint32_t *a, uint32_t *v,
-                  int c0, int c1, int sw)
+static void up_av(const bloom_arm_kern_t *K, const void *const u[3], int sh, int odd, uint32_t *a,
+                  uint32_t *v, int c0, int c1, int sw)
 {
     const void *u0 = odd ? u[2] : u[0], *u2 = odd ? u[0] : u[2];
 #if BLOOM_USE_S16

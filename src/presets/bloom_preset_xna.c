@@ -189,6 +189,99 @@ static bool fn_kawase(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void
     return true;
 }
 
+#if BLOOM_USE_S16
+/* 16-bit samples (cfg.sample_bits = 16; xna.md, "16-bit samples"): H, Q
+ * and every pass but the last hold uint16_t at G = F - par.s16 = 15 (each
+ * is at most 1.0 on 8/6/5-bit input: averages of decoded samples, Q minus
+ * the threshold, the first pass's range restore back to at most 1.0); the
+ * last pass, which multiplies by I, and the tent keep 32-bit rows. */
+static bool fn_half16(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                      void *dst)
+{
+    uint32_t *t = bg_scratch(ctx, 0);
+    (void)fn_half(ctx, n, r, in, t);
+    (void)bloom_row_narrow16_k(&ctx->kern, t, (uint16_t *)dst, 3 * n->w, ctx->par.s16);
+    return true;
+}
+
+/* Q from 16-bit H: the box's sums widened (<< F - G, the 32-bit box's
+ * rounding), the threshold subtracted in internal units, then narrowed
+ * half to even. */
+static bool fn_quarter16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
+                         const void *const *const in[BG_MAX_IN], void *dst)
+{
+    (void)r;
+    const int cnt = 3 * n->w;
+    if (ctx->zin[0] != 0) {
+        memset(dst, 0, (size_t)cnt * sizeof(uint16_t));
+        return false;
+    }
+    const uint16_t *const s[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                  (const uint16_t *)in[0][2], (const uint16_t *)in[0][3]};
+    uint32_t *row = bg_scratch(ctx, 0);
+    bloom_row_box16_k(&ctx->kern, s, row, true, n->w, bg_in_w(ctx, n, 0), ctx->par.s16);
+    const uint32_t t = ctx->par.knee.t, cap = (n->k[1] & XNA_SAT) ? BLOOM_LIN_ONE : 0xFFFFFFFFu;
+    for (int i = 0; i < cnt; i++) {
+        const uint32_t v = row[i] > t ? row[i] - t : 0u;
+        row[i] = v > cap ? cap : v;
+    }
+    return bloom_row_narrow16_k(&ctx->kern, row, (uint16_t *)dst, cnt, ctx->par.s16) != 0;
+}
+
+/* A Kawase pass over 16-bit rows: fn_kawase's steps on its sums, in G
+ * units into a 16-bit row, or (the last pass) widened first (<< F - G,
+ * exact) into a 32-bit row in internal units. */
+static bool fn_kawase16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
+                        const void *const *const in[BG_MAX_IN], void *dst)
+{
+    (void)r;
+    const int i = (int)n->k[0], w = n->w, cnt = 3 * w;
+    const uint32_t flags = n->k[1];
+    const bool last = (flags & XNA_LAST) != 0;
+    if (bg_in_zero(ctx, 0, 0, 1) && bg_in_zero(ctx, 0, 2 * i + 1, 2 * i + 2)) {
+        memset(dst, 0, (size_t)cnt * (last ? 4u : 2u));
+        return false;
+    }
+    const uint16_t *const rows[4] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
+                                     (const uint16_t *)in[0][2 * i + 1], (const uint16_t *)in[0][2 * i + 2]};
+    uint32_t *cs = bg_scratch(ctx, 0), *sum = last ? (uint32_t *)dst : bg_scratch(ctx, 1);
+    for (int j = 0; j < cnt; j++)
+        cs[j] = (uint32_t)rows[0][j] + rows[1][j] + rows[2][j] + rows[3][j];
+    int xa, xb;
+    xna_kawase_edges(cs, sum, w, i, &xa, &xb);
+    for (int j = 3 * xa; j < 3 * xb; j++)
+        sum[j] = cs[j - 3 * i - 3] + cs[j - 3 * i] + cs[j + 3 * i] + cs[j + 3 * i + 3];
+    const uint64_t f = (uint64_t)n->k[2] | ((uint64_t)n->k[3] << 32);
+    const bool restore = (flags & XNA_FIRST) && f != 1u << 24;
+    const int sh = last ? ctx->par.s16 : 0;
+    const uint32_t one = last ? BLOOM_LIN_ONE : 1u << (BLOOM_LIN_BITS - ctx->par.s16);
+    const uint64_t I = last ? ctx->par.out.intensity : 65536u;
+    uint16_t *d16 = (uint16_t *)dst;
+    uint32_t any = 0;
+    for (int j = 0; j < cnt; j++) {
+        uint32_t v = sum[j] << sh; /* 16 (2^16 - 1) << 5 < 2^26 */
+        if (restore) {             /* as fn_kawase */
+            const uint64_t q = ((uint64_t)(v >> 16) * f + (((v & 0xFFFFu) * f) >> 16) + (1u << 11)) >> 12;
+            v = q > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)q;
+        } else {
+            v = BLOOM_BOX_RND(v);
+        }
+        if (I != 65536u) {
+            const uint64_t q = ((uint64_t)v * I + 32768u) >> 16;
+            v = q > BLOOM_LIN_MAX ? BLOOM_LIN_MAX : (uint32_t)q;
+        }
+        if (flags & XNA_SAT)
+            v = v > one ? one : v;
+        if (last)
+            sum[j] = v;
+        else
+            d16[j] = (uint16_t)v; /* at most 2^G: the restore brings Q back to 1.0 at most */
+        any |= v;
+    }
+    return any != 0 || last; /* (the 32-bit pass tags no row zero: neither does this one) */
+}
+#endif
+
 /* Half resolution, the way back: tent of the last pass (input 0: rows
  * m-1 .. m+1, BG_UP), nothing added (zero-preserving: the tent of zeros is
  * zero). */
@@ -404,6 +497,25 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
     bg_input(g, o, up, BG_UP, -1, 1);
     g->out_node = o;
     par->scratch_rows = 1; /* fn_kawase's column sums */
+#if BLOOM_USE_S16
+    if (g->cfg->sample_bits == 16) { /* H, Q and the passes but the last on 16-bit rows */
+        par->s16 = (uint8_t)(BLOOM_LIN_BITS - 15);
+        par->scratch_rows = 2; /* and fn_kawase16's sums */
+        for (int i = 0; i < g->nnodes; i++) {
+            bg_node_t *nd = &g->node[i];
+            if (nd->fn == fn_kawase)
+                nd->fn = fn_kawase16;
+            else if (nd->fn == fn_half)
+                nd->fn = fn_half16;
+            else if (nd->fn == fn_quarter)
+                nd->fn = fn_quarter16;
+            else
+                continue;
+            if (!(nd->fn == fn_kawase16 && (nd->k[1] & XNA_LAST)))
+                bg_s16(g, i);
+        }
+    }
+#endif
     if (!BLOOM_SMALL)
         par->views = true; /* every row function reads its widths by bg_in_w (or clamps at its own) */
     return BLOOM_OK;
