@@ -313,6 +313,38 @@ static void worst_case_arm(void)
 #endif
 }
 
+/* xna's worst case: white frames where Q's narrowing rounds up most
+ * against the range restore (threshold 1 - 3/65536: 43 690 in a 16-bit
+ * pass), and at threshold 0, 1 - 1/65536 and 1 - 2/65536; one to three
+ * passes, SATURATE or not, intensity 10. */
+static void worst_case_xna(void)
+{
+#if BLOOM_USE_XNA
+    const uint32_t th[] = {0, BLOOM_ONE - 1u, BLOOM_ONE - 2u, BLOOM_ONE - 3u};
+    int n = 0;
+    for (size_t i = 0; i < sizeof th / sizeof th[0]; i++)
+        for (int passes = 1; passes <= 3; passes++)
+            for (int sat = 0; sat < 2; sat++) {
+                bloom_config_t c;
+                bloom_config_default(&c, 97, 61);
+                bloom_config_preset(&c, BLOOM_PRESET_XNA);
+                c.sample_bits = 16;
+                c.threshold = th[i];
+                c.p.passes = passes;
+                c.intensity = BLOOM_MAX_INTENSITY;
+                c.flags = BLOOM_FLAG_DEBUG_VIEW | (sat ? BLOOM_FLAG_SATURATE : 0);
+                c.out_fmt = BLOOM_FMT_RGBQ16;
+                frame_t src = frame_alloc(c.width, c.height, BLOOM_FMT_RGB888, 255);
+                preset_conform_t pc = preset_conform(&c, &src, NULL, 0);
+                CHECKF(pc.ok && pc.bittrue_diff == 0, "xna white, threshold %u, %d passes%s: %lld off", th[i],
+                       passes, sat ? ", saturate" : "", pc.bittrue_diff);
+                frame_free(&src);
+                n++;
+            }
+    printf("xna worst case: %d white frames, bit-exact with the model\n", n);
+#endif
+}
+
 /* The workspace of each width (the rings halve; the source rows, the
  * schedule and the engine's own struct do not). */
 static void workspace(void)
@@ -412,6 +444,7 @@ int main(void)
     bit_exact();
     worst_case();
     worst_case_arm();
+    worst_case_xna();
     workspace();
     workspace_macro();
     return harness_finish();

@@ -336,8 +336,8 @@ void gst_bloom_install_properties(GObjectClass *oc)
                              1, BLOOM_MAX_LEVELS, 5, GB_CTRL));
     install(oc, PROP_SAMPLE_BITS,
             g_param_spec_int("sample-bits", "Sample bits",
-                             "Bits per pyramid sample: 32, or 16 (unity and attenuation on 8-bit video: "
-                             "about 0.7x the memory; other values and presets are refused)",
+                             "Bits per pyramid sample: 32, or 16 (unity, attenuation, xna and arm on 8-bit "
+                             "video: 0.7-0.85x the memory; other values and presets are refused)",
                              16, 32, 32, GB_FLAGS));
     install(oc, PROP_VIEW,
             g_param_spec_enum("view", "View", "What comes out: the frame with its glow, or the glow alone",

@@ -17,7 +17,7 @@
 #
 # Sample widths: COST_WIDTHS lists the row sample widths costed, each built
 # with COST_CFLAGS_<width> added to the core's and the bench's flags: 16 sets
-# cfg.sample_bits = 16 in the benches (unity and attenuation; the minimal
+# cfg.sample_bits = 16 in the benches (unity, attenuation, xna, arm; the minimal
 # build has no 16-bit samples). `make target-cost COST_WIDTHS='32 16'`.
 
 COST_B := $(B)/cost

@@ -39,7 +39,7 @@ def fail(msg):
 # ---- Cortex-M ----------------------------------------------------------------
 def m_jobs(builds, width="32"):
     """(build, preset, levels, width, height, strip, label) of every run. With
-    16-bit samples: unity and attenuation only, and not the minimal build
+    16-bit samples: unity, attenuation, xna and arm, and not the minimal build
     (it has none: BLOOM_USE_S16 is 0 with BLOOM_SMALL)."""
     s16 = width == "16"
     jobs = [("full", 0, lv, 320, 240, 0, "levels") for lv in range(1, 8)]
@@ -234,7 +234,8 @@ and both cores' cycle bands worked by hand; `cost_selftest_a64.S` and
 **Sample widths.** `make target-cost COST_WIDTHS='32 16'` builds and
 costs each width with its own flags (`COST_CFLAGS_16` sets
 `cfg.sample_bits = 16` in the benches) and gives each its rows (the column
-"samples"); 16-bit samples run unity and attenuation only, and not in the
+"samples"); the targets run the default preset (16-bit samples also take
+attenuation, xna and arm), and 16-bit samples are not in the
 minimal build, which leaves them out (`BLOOM_USE_S16` 0 with `BLOOM_SMALL`).
 """
 
