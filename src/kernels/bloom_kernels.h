@@ -341,6 +341,8 @@ void bloom_row_il16_neon(const uint32_t *e, const uint32_t *o, const uint16_t *a
 uint32_t bloom_row_narrow16_sse2(const uint32_t *src, uint16_t *dst, int n, int sh);
 uint32_t bloom_row_vtent16w_sse2(const uint16_t *a, const uint16_t *b, const uint16_t *c, uint32_t *dst,
                                  int n, int sh);
+void bloom_row_box16_sse2(const uint16_t *const s[4], uint16_t *dst, int dw, int sw);
+void bloom_row_box16w_sse2(const uint16_t *const s[4], uint32_t *dst, int dw, int sw, int sh);
 #endif
 
 #endif

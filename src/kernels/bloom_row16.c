@@ -256,6 +256,15 @@ void bloom_row_box16_k(const bloom_kernels_t *k, const uint16_t *const s[4], voi
         return;
     }
 #endif
+#if defined(BLOOM_SIMD_SSE2)
+    if (bloom_kernels_simd(k)) {
+        if (wide)
+            bloom_row_box16w_sse2(s, (uint32_t *)dst, dw, sw, sh);
+        else
+            bloom_row_box16_sse2(s, (uint16_t *)dst, dw, sw);
+        return;
+    }
+#endif
     (void)k;
     bloom_row_box16_range_c(s, dst, wide, 0, dw, sw, sh);
 }
