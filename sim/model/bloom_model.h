@@ -35,7 +35,9 @@ typedef struct {
      * by F - G bits half to even after the knee (and d1_scale); the down and
      * up chains then run in those units (the pyramid hooks hold them); U_1
      * is widened back (times 2^(F-G)) before the final tent
-     * (sim/docs/fixed-point.md, "16-bit samples"). */
+     * (sim/docs/fixed-point.md, "16-bit samples"). The arm and xna models
+     * read cfg.sample_bits for their own formats (their pages, "16-bit
+     * samples"). */
     int sample_bits;
     int s16_levels; /* with 16: levels 1 .. s16_levels 16-bit, the deeper ones in
                        internal units (BLOOM_S16_LEVELS; 0: all) */
