@@ -104,7 +104,7 @@ static void test_opts(void)
         {"--levels", "0", NULL, NULL, "--levels: '0' is not 1..16"},
         {"--levels", "17", NULL, NULL, "--levels"},
         {"--sample-bits", "24", NULL, NULL, "--sample-bits: '24' is not 16 or 32"},
-        {"--sample-bits", "16", "--preset", "xna", "sample_bits must be 16 or 32"},
+        {"--sample-bits", "16", "--preset", "cod", "sample_bits must be 16 or 32"},
         {"--threshold", "300", NULL, NULL, "--threshold: '300' is not 0..256"},
         {"--knee", "1.5", NULL, NULL, "--knee"},
         {"--intensity", "-1", NULL, NULL, "--intensity"},

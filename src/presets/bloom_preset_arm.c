@@ -259,6 +259,8 @@ static void up_av(const bloom_arm_kern_t *K, const void *const u[3], int sh, int
         bloom_arm_up_v16((const uint16_t *)u0 + c0, (const uint16_t *)u[1] + c0, (const uint16_t *)u2 + c0,
                          a + 1 + c0, v + 1 + c0, c1 - c0 + 1, sh);
     else
+#else
+    (void)sh;
 #endif
         K->up_v((const uint32_t *)u0 + c0, (const uint32_t *)u[1] + c0, (const uint32_t *)u2 + c0, a + 1 + c0,
                 v + 1 + c0, c1 - c0 + 1);
