@@ -434,4 +434,36 @@ int cam_mt_process(cam_mt_t *t, enum cam_mode m, const cam_v4l2_t *cap, const ca
                    const cam_fb_t *fb, const cam_place_t *p, uint8_t *page);
 void cam_mt_close(cam_mt_t *t); /* joins every pool, frees everything; t zeroed */
 
+/* ---- the program (main.c, cam_engines.c) ------------------------------------ */
+/* bloom_cam's state: options, camera, screen, engines, buffers. */
+typedef struct cam {
+    cam_opts_t o;
+    cam_v4l2_t cap;
+    cam_fb_t fb;
+    cam_vt_t vt;
+    cam_gpio_t *gpio;
+    bloom_t *eng[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show (skipped) */
+    void *ws[CAM_MODE_COUNT];
+    int eng_aux[CAM_MODE_COUNT]; /* the engine reads the aux plane with each row */
+    uint8_t *aux;                /* --aux plane, capture size, read once */
+    size_t aux_stride;
+    uint8_t *line;    /* one converted source row (RGB888) */
+    uint8_t *scratch; /* one output row the screen does not fully show */
+    cam_place_t place;
+    int rec_fd;
+    uint8_t *last_page;
+    int threads; /* tiles per frame: 1 the row path (eng), more the pools (mt) */
+    cam_mt_t mt;
+    int clear_pages; /* pages still to clear before drawing (a new capture size) */
+} cam_t;
+
+/* The engines of every mode (row path, or the pools with --threads), the
+ * --aux plane, for the capture's size: 0, or -1 after a message. */
+int cam_make_engines(cam_t *c);
+/* The camera came back in another size (c->cap holds it): the engines,
+ * pools, line buffers and placement made again for it, the screen's pages
+ * cleared before they are drawn. 0, or -1 after a message (then the
+ * program ends: CAM_EXIT_CONFIG). */
+int cam_resize(cam_t *c);
+
 #endif

@@ -7,6 +7,9 @@
 #   make test-linux         against the kernel's own vivid/bochs-drm/vfb drivers
 #                           under qemu-system-x86_64 (port/linux/kernel/run.sh),
 #                           also a CHECKS target of make test
+#   make soak-cam           20 000 frames under qemu with faults injected at
+#                           random intervals; RSS, descriptors and mappings
+#                           compared (a short soak is part of test-linux)
 #   make bench-cam          row by row against --threads, this machine, no device
 #
 # Debian packages: libjpeg62-turbo-dev (MJPEG capture: required, as for
@@ -23,7 +26,7 @@ CAM_DIR := port/linux
 CAM_MT_SRC := port/threads/bloom_mt.c
 CAM_MT_HDR := port/threads/bloom_mt.h
 CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c \
-           $(CAM_DIR)/cam_aux.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_stats.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
+           $(CAM_DIR)/cam_aux.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_stats.c $(CAM_DIR)/cam_engines.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
 CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_DIR)/test_jpeg.h $(CAM_MT_HDR)
 CAM_CPPFLAGS := $(CPPFLAGS_CORE) -Iport/threads -D_POSIX_C_SOURCE=200809L
@@ -61,7 +64,7 @@ CHECKS += test-linux-host
 # N skipped") for each case it cannot run where they, the kernel packages or
 # gpio-sim cannot be had; under CI=true those are failures instead.
 CHECKS += test-linux
-.PHONY: bloom_cam bloom_cam_static test-linux-host test-linux linux-clang bench-cam
+.PHONY: bloom_cam bloom_cam_static test-linux-host test-linux soak-cam linux-clang bench-cam
 
 bloom_cam: $(B)/bloom_cam
 bloom_cam_static: $(B)/linux/bloom_cam.static
@@ -154,3 +157,9 @@ test-linux-host: $(B)/linux/test_cam_host $(B)/linux/test_cam_mt $(B)/linux/test
 
 test-linux: $(B)/linux/bloom_cam.static $(B)/bloom_sim
 	@B='$(B)' sh $(CAM_DIR)/kernel/run.sh
+
+# The soak alone, 20 000 frames (about 15 minutes under TCG); SOAK_FRAMES
+# and SOAK_SEED override.
+soak-cam: $(B)/linux/bloom_cam.static $(B)/bloom_sim
+	@B='$(B)' SOAK_FRAMES=$${SOAK_FRAMES:-20000} SOAK_ONLY=1 LINUX_TEST_TIMEOUT=$${LINUX_TEST_TIMEOUT:-5400} \
+	  sh $(CAM_DIR)/kernel/run.sh

@@ -28,26 +28,6 @@ static void on_signal(int sig)
     stop_signal = sig;
 }
 
-typedef struct {
-    cam_opts_t o;
-    cam_v4l2_t cap;
-    cam_fb_t fb;
-    cam_vt_t vt;
-    cam_gpio_t *gpio;
-    bloom_t *eng[CAM_MODE_COUNT]; /* NULL: a mode the preset cannot show (skipped) */
-    void *ws[CAM_MODE_COUNT];
-    int eng_aux[CAM_MODE_COUNT]; /* the engine reads the aux plane with each row */
-    uint8_t *aux;                /* --aux plane, capture size, read once */
-    size_t aux_stride;
-    uint8_t *line;    /* one converted source row (RGB888) */
-    uint8_t *scratch; /* one output row the screen does not fully show */
-    cam_place_t place;
-    int rec_fd;
-    uint8_t *last_page;
-    int threads; /* tiles per frame: 1 the row path (eng), more the pools (mt) */
-    cam_mt_t mt;
-} cam_t;
-
 static double now_s(void)
 {
     struct timespec t;
@@ -65,99 +45,6 @@ static int write_all(int fd, const uint8_t *p, size_t n)
             return -1;
         p += w;
         n -= (size_t)w;
-    }
-    return 0;
-}
-
-static int make_engines(cam_t *c)
-{
-    if (c->o.aux) { /* the preset's plane, the capture's size (known after S_FMT) */
-        char err[512];
-        bloom_aux_format_t f;
-        if (cam_aux_load(c->o.aux, c->cap.width, c->cap.height, &f, &c->aux, err, sizeof err)) {
-            fprintf(stderr, "%s: %s\n", CAM_PROG, err);
-            return -1;
-        }
-        c->o.aux_fmt = f;
-        c->aux_stride = (size_t)c->cap.width * (f == BLOOM_AUX_U16 ? 2u : 1u);
-    }
-    { /* --threads: 0 the online CPUs; a frame too small for them gets fewer */
-        bloom_config_t cfg;
-        cam_opts_config(&c->o, c->cap.width, c->cap.height, &cfg);
-        c->threads = bloom_mt_tiles_for(&cfg, c->o.threads ? c->o.threads : bloom_mt_cpus());
-        if (c->threads > 1 && cam_mt_frames(&c->mt, &c->cap, &c->fb, &c->place))
-            return -1;
-    }
-    for (int m = 0; m < CAM_MODE_COUNT; m++) {
-        bloom_config_t cfg;
-        cam_opts_config(&c->o, c->cap.width, c->cap.height, &cfg);
-        cfg.in_fmt = BLOOM_FMT_RGB888;
-        cfg.out_fmt = c->fb.format;
-        if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24)
-            cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
-        if (m == CAM_MODE_BLOOM_ONLY)
-            cfg.flags |= BLOOM_FLAG_DEBUG_VIEW;
-        if (m == CAM_MODE_OFF) { /* the default pipeline with B = 0 on every row: the
-                                    source, re-encoded, whatever the preset */
-            bloom_config_default(&cfg, c->cap.width, c->cap.height);
-            cfg.in_fmt = BLOOM_FMT_RGB888;
-            cfg.out_fmt = c->fb.format;
-            if (c->cap.pixelformat != V4L2_PIX_FMT_RGB24)
-                cfg.flags |= BLOOM_FLAG_COPY_SOURCE;
-            cfg.levels = c->o.levels;
-            cfg.threshold = BLOOM_MAX_THRESHOLD;
-            cfg.soft_knee = 0;
-            cfg.intensity = 0;
-        }
-        bloom_info_t info;
-        bloom_status_t st = bloom_query(&cfg, &info);
-        if (st != BLOOM_OK && m == CAM_MODE_BLOOM_ONLY && c->o.mode != CAM_MODE_BLOOM_ONLY) {
-            if (!c->o.quiet)
-                fprintf(stderr, "%s: preset %s: no bloom-only view (%s); the button skips it\n", CAM_PROG,
-                        bloom_preset_name(cfg.preset), bloom_status_str(st));
-            continue;
-        }
-        if (st != BLOOM_OK) {
-            fprintf(stderr, "%s: bloom_query (preset %s%s): %s\n", CAM_PROG, bloom_preset_name(cfg.preset),
-                    m == CAM_MODE_BLOOM_ONLY ? ", bloom-only" : "", bloom_status_str(st));
-            return -1;
-        }
-        c->eng_aux[m] = cfg.aux_fmt != BLOOM_AUX_NONE;
-        if (c->threads > 1) { /* whole frames: nothing to copy */
-            size_t bytes;
-            cfg.flags &= ~(uint32_t)BLOOM_FLAG_COPY_SOURCE;
-            if (cam_mt_mode(&c->mt, (enum cam_mode)m, &cfg, c->threads, c->eng_aux[m] ? c->aux : NULL,
-                            c->aux_stride, &bytes))
-                return -1;
-            if (m == CAM_MODE_BLOOM && !c->o.quiet)
-                fprintf(stderr,
-                        "%s: engine: preset %s%s%s, %d levels, %d threads (%d %s), workspace %zu bytes, "
-                        "frame buffers %zu bytes (in: %s, out: %s)\n",
-                        CAM_PROG, bloom_preset_name(cfg.preset), c->o.aux ? ", aux plane " : "",
-                        c->o.aux ? c->o.aux : "", info.levels, c->threads, c->mt.tiles,
-                        c->cap.width / c->mt.tiles >= BLOOM_MT_MIN_STRIP ? "strips" : "tiles", bytes,
-                        c->mt.frame_bytes, c->mt.rgb ? "an RGB888 frame" : "the capture read in place",
-                        c->mt.out ? "a frame, the shown part copied" : "straight to the page");
-            continue;
-        }
-        size_t n = (info.workspace_bytes + 63) / 64 * 64;
-        c->ws[m] = aligned_alloc(64, n);
-        if (!c->ws[m]) {
-            fprintf(stderr, "%s: workspace of %zu bytes: out of memory\n", CAM_PROG, n);
-            return -1;
-        }
-        st = bloom_init(&c->eng[m], c->ws[m], n, &cfg);
-        if (st != BLOOM_OK) {
-            fprintf(stderr, "%s: bloom_init: %s\n", CAM_PROG, bloom_status_str(st));
-            return -1;
-        }
-        if (m == CAM_MODE_BLOOM && !c->o.quiet)
-            fprintf(stderr,
-                    "%s: engine: preset %s%s%s, %d levels, 1 thread (row by row), workspace %zu bytes, "
-                    "latency %d rows%s\n",
-                    CAM_PROG, bloom_preset_name(cfg.preset), c->o.aux ? ", aux plane " : "",
-                    c->o.aux ? c->o.aux : "", info.levels, info.workspace_bytes, info.latency_rows,
-                    (cfg.flags & BLOOM_FLAG_COPY_SOURCE) ? ", source rows copied" : "");
     }
     return 0;
 }
@@ -253,9 +140,12 @@ static void nap(cam_t *c, int ms)
  * backing off from 100 ms to 2 s between attempts, until --reconnect
  * seconds after lost_at, when the last good frame was followed by the
  * first fault (a device that opens but never delivers counts as lost
- * all along). It must come back with the format the engines were made for.
- * 0 when it streams again, 1 on a stop signal, CAM_EXIT_DEVICE when it did
- * not come back. */
+ * all along). When it comes back in another format (a source change, a
+ * camera plugged in again with other defaults), the engines are made again
+ * for it (cam_resize), unless an --aux plane or a --record file holds the
+ * old size: then it must come back as it was. 0 when it streams again, 1
+ * on a stop signal, CAM_EXIT_DEVICE when it did not come back,
+ * CAM_EXIT_CONFIG when the new size cannot be taken. */
 static int reconnect(cam_t *c, double lost_at)
 {
     const int w = c->cap.width, h = c->cap.height;
@@ -281,11 +171,17 @@ static int reconnect(cam_t *c, double lost_at)
             break;
         int ok = !cam_v4l2_open(&c->cap, c->o.device, c->o.width, c->o.height, c->o.format, c->o.fps,
                                 c->o.buffers);
-        if (ok && (c->cap.width != w || c->cap.height != h || c->cap.pixelformat != pf ||
-                   c->cap.bytesperline != bpl)) {
-            snprintf(c->cap.msg, sizeof c->cap.msg, "came back as %dx%d, bytesperline %u, not %dx%d, %u",
-                     c->cap.width, c->cap.height, (unsigned)c->cap.bytesperline, w, h, (unsigned)bpl);
+        const int other = ok && (c->cap.width != w || c->cap.height != h || c->cap.pixelformat != pf ||
+                                 c->cap.bytesperline != bpl);
+        if (other && (c->o.aux || c->rec_fd >= 0)) {
+            snprintf(c->cap.msg, sizeof c->cap.msg,
+                     "came back as %dx%d, bytesperline %u, not %dx%d, %u (the size --%s was made for)",
+                     c->cap.width, c->cap.height, (unsigned)c->cap.bytesperline, w, h, (unsigned)bpl,
+                     c->o.aux ? "aux" : "record");
             ok = 0;
+        } else if (other && cam_resize(c)) {
+            status = CAM_EXIT_CONFIG;
+            break;
         }
         if (ok && !cam_v4l2_start(&c->cap)) {
             if (!c->o.quiet)
@@ -395,6 +291,12 @@ static int run(cam_t *c)
             cam_v4l2_requeue(&c->cap, &f);
             status = CAM_EXIT_DISPLAY;
             break;
+        }
+        if (c->clear_pages > 0) { /* a new capture size: the old frame's border goes */
+            for (int y = 0; y < c->fb.yres; y++)
+                memset(page + (size_t)y * (size_t)c->fb.line_length, 0,
+                       (size_t)c->fb.xres * (size_t)c->fb.bpp);
+            c->clear_pages--;
         }
         cam_gpio_frame(c->gpio, 1);
         double p0 = now_s();
@@ -537,7 +439,7 @@ int main(int argc, char **argv)
         status = CAM_EXIT_FAULT;
         goto out;
     }
-    if (make_engines(&c)) {
+    if (cam_make_engines(&c)) {
         status = CAM_EXIT_CONFIG;
         goto out;
     }

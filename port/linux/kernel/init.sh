@@ -37,6 +37,48 @@ for f in /sys/class/graphics/fb[0-9]*; do log "${f##*/}: $(cat $f/name) $(cat $f
 /vctl "$vid" "OSD Text Mode" 2 2>>/out/guest.log
 /vctl "$vidmp" "OSD Text Mode" 2 2>>/out/guest.log
 
+# soak: SOAK_FRAMES frames (make soak-cam: 20 000; make test: a short run)
+# with faults injected at pseudo-random intervals of 1..4 s (seed SOAK_SEED),
+# in turn a flagged buffer, a disconnect and a 2 s stall, two rounds at
+# least; the process's RSS, open descriptors and mappings after its first
+# second of frames, 6 s after the first round of faults (every fault path
+# run once: its code and buffers touched) and at the end, 6 s after the
+# last fault (then SIGTERM)
+snap() { # pid: "rss KB anon KB fds N maps N" (VmRSS and RssAnon of /proc/PID/status)
+    echo "rss $(awk '/^VmRSS:/ { print $2 }' /proc/$1/status) anon $(awk '/^RssAnon:/ { print $2 }' /proc/$1/status)" \
+        "fds $(ls /proc/$1/fd | wc -l) maps $(wc -l < /proc/$1/maps)"
+}
+soak_frames() { awk '/: last second: / { n += $4 } END { print n + 0 }' /out/soak.txt; }
+soak() {
+    /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1000 --stats > /out/soak.txt 2>&1 &
+    pid=$!
+    wait_for '[ "$(soak_frames)" -gt 0 ] || [ ! -e /proc/$pid/stat ]' || log "soak: no frames within 60 s"
+    snap $pid > /out/soak-start.txt
+    seed=$SOAK_SEED; k=0; nf=0; nd=0; ns=0; t0=$(date +%s)
+    while { [ "$(soak_frames)" -lt "$SOAK_FRAMES" ] || [ $k -lt 6 ]; } && [ -e /proc/$pid/stat ]; do
+        seed=$(((seed * 1103515245 + 12345) % 2147483648))
+        sleep $((1 + seed / 65536 % 4))
+        case $((k % 3)) in
+        0) /vctl "$vid" "Inject V4L2_BUF_FLAG_ERROR" 1 2>>/out/soak-faults.txt && nf=$((nf + 1));;
+        1) /vctl "$vid" "Disconnect" 1 2>>/out/soak-faults.txt && nd=$((nd + 1));;
+        2) /vctl "$vid" "Percentage of Dropped Buffers" 100 2>>/out/soak-faults.txt && ns=$((ns + 1))
+           sleep 2; /vctl "$vid" "Percentage of Dropped Buffers" 0 2>>/out/soak-faults.txt;;
+        esac
+        k=$((k + 1))
+        if [ $k = 3 ]; then sleep 6; [ -e /proc/$pid/stat ] && snap $pid > /out/soak-warm.txt; fi
+    done
+    sleep 6
+    [ -e /proc/$pid/stat ] && snap $pid > /out/soak-end.txt
+    kill -TERM $pid; wait $pid; echo "exit $?" >> /out/soak.txt
+    echo "injected: $nf flagged, $nd disconnects, $ns stalls in $(($(date +%s) - t0)) s" >> /out/soak.txt
+    log "soak: $(tail -n 2 /out/soak.txt | tr '\n' ' ')start $(cat /out/soak-start.txt), after a round $(cat /out/soak-warm.txt 2>/dev/null), end $(cat /out/soak-end.txt 2>/dev/null)"
+}
+wait_for() { # condition... : true once it holds, false after 60 s
+    n=0; until eval "$1"; do n=$((n + 1)); [ $n -ge 600 ] && return 1; sleep 0.1; done; }
+if [ "$SOAK_ONLY" = 1 ]; then
+    soak; log "done"; finish 0
+fi
+
 # name format fb extra-options...: capture -> bloom -> framebuffer, row by
 # row (--threads 1) unless the options say otherwise
 run() {
@@ -152,8 +194,6 @@ echo "exit $?" >> /out/speed-t1.txt
 # lines, "frame" (bloom_cam's output) and "button" (an input whose pull is
 # changed from sysfs). Every value the kernel sets on a line is traced
 # (tracefs gpio_value), so the toggles are counted exactly, not sampled.
-wait_for() { # condition... : true once it holds, false after 60 s
-    n=0; until eval "$1"; do n=$((n + 1)); [ $n -ge 600 ] && return 1; sleep 0.1; done; }
 if [ "$GPIO" = 1 ]; then
     mount -t configfs none /sys/kernel/config
     mount -t tracefs none /sys/kernel/tracing
@@ -290,5 +330,31 @@ echo "exit $?" >> /out/streamon.txt
 /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --frames 200 --latest off > /out/seqwrap.txt 2>&1
 echo "exit $?" >> /out/seqwrap.txt
 /vctl "$vid" "Wrap Sequence Number" 0 2>>/out/guest.log
+# MJPEG from v4l2loopback (mjpeg_cases.sh): loopfeed writes JPEG frames, one
+# in ten corrupt and one in ten truncated; bloom_cam skips and counts those
+# (mjpeg); and a camera that comes back in another size (mjpeg-resize):
+# after 60 frames loopfeed leaves and returns as 640x480, bloom_cam times
+# out, reconnects and makes its engines again for the new size
+mjpeg() { # name frames loopfeed-extra...
+    name=$1; nfr=$2; shift 2
+    rm -f /out/loopfeed.txt
+    /loopfeed "$loop" 320 240 /good.jpg /corrupt.jpg /trunc.jpg "$@" > /out/loopfeed.txt 2>&1 &
+    fpid=$!
+    wait_for '[ -s /out/loopfeed.txt ]' || log "loopfeed: nothing written within 60 s"
+    /bloom_cam --device "$loop" --fb "$fb16" --format mjpeg --size 320x240 --frames "$nfr" --threshold 0.6 \
+        --intensity 1.5 --timeout 1000 --dump-fb "/out/$name.fb" --stats --threads 1 > "/out/$name.txt" 2>&1
+    echo "exit $?" >> "/out/$name.txt"
+    kill $fpid; wait $fpid; sed 's/^/loopfeed: /' /out/loopfeed.txt >> "/out/$name.txt"
+    log "$name: $(grep '^exit' "/out/$name.txt")"
+}
+if [ "$MJPEG" = 1 ]; then
+    loop=""
+    for v in /sys/class/video4linux/video*; do [ "$(cat "$v/name")" = loopcam ] && loop="/dev/${v##*/}"; done
+    log "v4l2loopback: ${loop:-not found}"
+    mjpeg mjpeg 40
+    sleep 1
+    mjpeg mjpeg-resize 100 60 640 480 /good2.jpg
+fi
+soak
 log "done"
 finish 0

@@ -41,7 +41,8 @@
 # LINUX_TEST_SMP (the guest's CPUs, default 2: bloom_cam's default --threads
 # runs two strips in parallel, under MTTCG where qemu has it),
 # LINUX_TEST_GPIO=0 (GPIO cases skipped), LINUX_TEST_GST=0 (GStreamer cases
-# skipped), CI.
+# skipped), SOAK_FRAMES, SOAK_SEED, SOAK_ONLY=1 (the soak alone: make
+# soak-cam), CI.
 B=${B:-build}
 PIN=6.1.0-56-amd64
 KVER=${LINUX_TEST_KVER:-$PIN}
@@ -50,6 +51,11 @@ SMP=${LINUX_TEST_SMP:-2}
 SIZE=320x240
 FRAMES=3
 GFRAMES=12  # frames of the GPIO frame-line case
+# the soak (init.sh): its frames, the seed of its fault intervals, and
+# whether it runs alone (make soak-cam: SOAK_FRAMES=20000 SOAK_ONLY=1)
+SOAK_FRAMES=${SOAK_FRAMES:-450}
+SOAK_SEED=${SOAK_SEED:-1}
+SOAK_ONLY=${SOAK_ONLY:-0}
 top=$(pwd)
 cache=$top/$B/linux/kernel
 work=$top/$B/linux/guest
@@ -73,6 +79,8 @@ whole() { need "(the whole test)" "$1"; closing; }     # nothing can run
 die() { bad "test-linux: $1"; closing; }                # a step that cannot fail did
 . "$here/gst_cases.sh"
 . "$here/drm_cases.sh"
+. "$here/mjpeg_cases.sh"
+. "$here/soak_cases.sh"
 
 QEMU=${LINUX_TEST_QEMU:-qemu-system-x86_64}
 static_busybox() { # the path of a statically linked busybox, or nothing
@@ -188,63 +196,8 @@ for m in vivid vfb bochs cirrus; do
     [ -n "$(find "$moddir" -name "$m.ko*" | head -n 1)" ] || whole "$KVER has no $m module"
 done
 
-# ---- gpio-sim ---------------------------------------------------------------
-# Debian's kernels build neither gpio-sim nor irq_sim: both are built here
-# out of tree from linux-source (the image's version when offered, else the
-# newest of the series) against linux-headers of the image's ABI with their
-# -common and linux-kbuild, downloaded (apt-get download) and unpacked into
-# the cache, never installed; the .ko files are kept per resolved versions.
-# Two changes: irq_sim gets a MODULE_LICENSE, and irq_to_desc (not exported)
-# gives way to generic_handle_irq. LINUX_TEST_GPIO=0 leaves the GPIO cases out.
-resolve_gpio() { # sets HPKG HVER CPKG CVER KBPKG KBVER SPKG SVER, or why
-    HPKG=linux-headers-$KVER; CPKG=""; CVER=""; KBPKG=""; KBVER=""
-    SPKG=linux-source-$(echo "$KVER" | cut -d. -f1-2)
-    HVER=$(pick "$HPKG" "$IVER") || { why="$HPKG is not in apt's lists"; return 1; }
-    deps=$(apt-cache show "$HPKG=$HVER" 2>/dev/null | sed -n 's/^Depends: //p' | head -n 1 |
-        tr , '\n' | sed 's/^ *//; s/ *$//')
-    for d in $(echo "$deps" | sed 's/ //g'); do  # name(=version) or name(>=version)
-        n=${d%%(*}
-        case "$n" in
-        linux-headers-*)
-            CPKG=$n; CVER=$(echo "$d" | sed -n 's/.*(=\(.*\))$/\1/p')
-            [ -n "$CVER" ] || CVER=$(pick "$n" "$HVER") || { why="$n is not in apt's lists"; return 1; }
-            versions "$n" | grep -qxF "$CVER" || { why="$n $CVER is not in apt's lists"; return 1; };;
-        linux-kbuild-*)
-            KBPKG=$n; KBVER=$(pick "$n" "$HVER") || { why="$n is not in apt's lists"; return 1; };;
-        esac
-    done
-    [ -n "$KBPKG" ] || { why="$HPKG $HVER: no linux-kbuild in its Depends (apt-cache show)"; return 1; }
-    SVER=$(pick "$SPKG" "$IVER") || { why="$SPKG is not in apt's lists"; return 1; }
-    gdir=$cache/gpio-sim_${KVER}_${IVER}_headers-${HVER}_kbuild-${KBVER}_source-$SVER
-}
-build_gpio_sim() { # sets why on failure; status 2 when a download failed
-    g=$cache/gpio-build && rm -rf "$g" && mkdir -p "$g/hdr" "$g/m" || { why="cannot make $g"; return 1; }
-    for pv in "$HPKG $HVER" "$CPKG $CVER" "$KBPKG $KBVER" "$SPKG $SVER"; do
-        set -- $pv
-        [ $# = 2 ] || continue
-        get_deb "$1" "$2" || { why="apt-get download $1=$2 failed (see $B/linux/kernel/download.log)"; return 2; }
-        [ "$1" = "$SPKG" ] || dpkg-deb -x "$deb" "$g/hdr" || { why="cannot unpack $deb"; return 1; }
-    done
-    hd=$g/hdr/usr/src/linux-headers-$KVER
-    [ -f "$hd/Makefile" ] || { why="no $hd/Makefile in $HPKG"; return 1; }
-    sed -i "s#^include /usr/src/#include $g/hdr/usr/src/#" "$hd/Makefile"
-    cc=$(sed -n 's/^CC = .*)\(gcc-[0-9]*\)$/\1/p' "$hd/.kernelvariables")
-    command -v "${cc:-gcc}" >/dev/null 2>&1 || { why="no ${cc:-gcc} (the kernel's compiler)"; return 1; }
-    sd=$SPKG
-    dpkg-deb --fsys-tarfile "$deb" | tar xO "./usr/src/$sd.tar.xz" | tar xJ -C "$g" "$sd/drivers/gpio/gpio-sim.c" \
-            "$sd/drivers/gpio/gpiolib.h" "$sd/kernel/irq/irq_sim.c" ||
-        { why="cannot unpack gpio-sim.c and irq_sim.c from $SPKG $SVER"; return 1; }
-    cp "$g/$sd"/drivers/gpio/gpio-sim.c "$g/$sd"/drivers/gpio/gpiolib.h "$g/$sd/kernel/irq/irq_sim.c" "$g/m/"
-    sed -i 's/handle_simple_irq(irq_to_desc(irqnum));/generic_handle_irq(irqnum);/' "$g/m/irq_sim.c"
-    grep -q 'generic_handle_irq(irqnum)' "$g/m/irq_sim.c" || { why="irq_sim.c: irq_to_desc call not found"; return 1; }
-    printf '#include <linux/module.h>\nMODULE_LICENSE("GPL");\n' >> "$g/m/irq_sim.c"
-    echo 'obj-m := irq_sim.o gpio-sim.o' > "$g/m/Kbuild"
-    make -C "$hd" M="$g/m" modules > "$g/build.log" 2>&1 ||
-        { cp "$g/build.log" "$cache/gpio-build.log"; why="module build failed (see $B/linux/kernel/gpio-build.log)"; return 1; }
-    rm -rf "$gdir.tmp" && mkdir -p "$gdir.tmp" && cp "$g/m/irq_sim.ko" "$g/m/gpio-sim.ko" "$gdir.tmp/" &&
-        echo "headers $HPKG $HVER (and $CPKG $CVER), kbuild $KBPKG $KBVER, source $SPKG $SVER" > "$gdir.tmp/versions.txt" &&
-        mv "$gdir.tmp" "$gdir" && rm -rf "$g" || { why="cannot write $gdir"; return 1; }
-}
+# ---- gpio-sim (gpio_sim.sh) -----------------------------------------------------
+. "$here/gpio_sim.sh"
 gpio_off=""   # why the GPIO cases are left out
 gpio_need=1   # and whether that is a failure under CI
 gdir=""
@@ -280,6 +233,7 @@ else
 fi
 [ -n "$gpio_off" ] || gver=$(cat "$gdir/versions.txt")
 echo "test-linux: kernel $IPKG $IVER, $gver"
+mjpeg_build
 
 # ---- initramfs -------------------------------------------------------------
 rm -rf "$work" && mkdir -p "$work/root/bin" "$work/root/modules" "$work/root/proc" \
@@ -332,7 +286,9 @@ gst_guest "$work/root"
 gst_on=1; [ -z "$gst_off$gst_bad" ] || gst_on=0
 drm_guest "$work/root"
 drm_on=1; [ -z "$drm_off" ] || drm_on=0
-{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB' GST=$gst_on GSIZE=$GST_SIZE DRM=$drm_on";
+mjpeg_guest "$work/root"
+mj_on=1; [ -z "$mj_off" ] || mj_on=0
+{ echo '#!/bin/busybox sh'; echo "SIZE=$SIZE FRAMES=$FRAMES GPIO=$gpio_on ATT=$att PRESETS='$presets' GFRAMES=$GFRAMES FB16_ID='vioverlay fb' FB32_ID='bochs-drmdrmfb' FBX_ID='Virtual FB' GST=$gst_on GSIZE=$GST_SIZE DRM=$drm_on SOAK_FRAMES=$SOAK_FRAMES SOAK_SEED=$SOAK_SEED SOAK_ONLY=$SOAK_ONLY MJPEG=$mj_on";
   sed 1d "$here/init.sh"; } > "$work/root/init"
 chmod +x "$work/root/init" "$work/root/bin/busybox"
 (cd "$work/root" && find . | "$bb" cpio -o -H newc 2>/dev/null) > "$work/initrd.cpio" || die "cannot write the initramfs"
@@ -355,6 +311,9 @@ fi
 
 # ---- checks ----------------------------------------------------------------
 r=$work/res
+if [ "$SOAK_ONLY" = 1 ]; then
+    soak_checks; closing
+fi
 compiled_out() { # preset: the reason its cases are skipped
     echo "the $1 preset is compiled out of this build (BLOOM_USE_$(echo "$1" | tr a-z A-Z)=0)"; }
 frame_check() { # case fbformat sim-options...
@@ -584,6 +543,8 @@ else
     bad "speed: bloom_cam failed"; sed 's/^/       /' "$r/speed.txt" "$r/speed-t1.txt" 2>/dev/null
 fi
 drm_checks  # drm_cases.sh
+mjpeg_checks  # mjpeg_cases.sh
+soak_checks  # soak_cases.sh
 # the count port/linux/README.md states ("74 cases with all six presets") is the count run
 n=$((pass + fail + nskip))
 want=$(sed -n 's/.*[^0-9]\([0-9][0-9]*\) cases with all six presets.*/\1/p' "$top/port/linux/README.md" | head -n 1)
