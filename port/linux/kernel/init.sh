@@ -49,13 +49,16 @@ snap() { # pid: "rss KB anon KB fds N maps N" (VmRSS and RssAnon of /proc/PID/st
         "fds $(ls /proc/$1/fd | wc -l) maps $(wc -l < /proc/$1/maps)"
 }
 soak_frames() { awk '/: last second: / { n += $4 } END { print n + 0 }' /out/soak.txt; }
+alive() { [ -e /proc/$1/stat ] && read -r _ _ st _ < /proc/$1/stat && [ "$st" != Z ]; }  # (a zombie is not)
 soak() {
-    /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --timeout 1000 --stats > /out/soak.txt 2>&1 &
+    /bloom_cam --device "$vid" --fb "$fb16" --size "$SIZE" --fps 30 --timeout 1000 --stats > /out/soak.txt 2>&1 &
     pid=$!
-    wait_for '[ "$(soak_frames)" -gt 0 ] || [ ! -e /proc/$pid/stat ]' || log "soak: no frames within 60 s"
+    wait_for '[ "$(soak_frames)" -gt 0 ] || ! alive $pid' || log "soak: no frames within 60 s"
     snap $pid > /out/soak-start.txt
-    seed=$SOAK_SEED; k=0; nf=0; nd=0; ns=0; t0=$(date +%s)
-    while { [ "$(soak_frames)" -lt "$SOAK_FRAMES" ] || [ $k -lt 6 ]; } && [ -e /proc/$pid/stat ]; do
+    # at 5 frames a second at least (else it ends, and the check says so)
+    seed=$SOAK_SEED; k=0; nf=0; nd=0; ns=0; t0=$(date +%s); tmax=$((SOAK_FRAMES / 5 + 120))
+    while { [ "$(soak_frames)" -lt "$SOAK_FRAMES" ] || [ $k -lt 6 ]; } && alive $pid &&
+        [ $(($(date +%s) - t0)) -lt $tmax ]; do
         seed=$(((seed * 1103515245 + 12345) % 2147483648))
         sleep $((1 + seed / 65536 % 4))
         case $((k % 3)) in
@@ -65,12 +68,12 @@ soak() {
            sleep 2; /vctl "$vid" "Percentage of Dropped Buffers" 0 2>>/out/soak-faults.txt;;
         esac
         k=$((k + 1))
-        if [ $k = 3 ]; then sleep 6; [ -e /proc/$pid/stat ] && snap $pid > /out/soak-warm.txt; fi
+        if [ $k = 3 ]; then sleep 6; alive $pid && snap $pid > /out/soak-warm.txt; fi
     done
     sleep 6
-    [ -e /proc/$pid/stat ] && snap $pid > /out/soak-end.txt
+    alive $pid && snap $pid > /out/soak-end.txt
     kill -TERM $pid; wait $pid; echo "exit $?" >> /out/soak.txt
-    echo "injected: $nf flagged, $nd disconnects, $ns stalls in $(($(date +%s) - t0)) s" >> /out/soak.txt
+    echo "injected: $nf flagged, $nd disconnects, $ns stalls in $(($(date +%s) - t0)) s ($(soak_frames) frames counted by the second)" >> /out/soak.txt
     log "soak: $(tail -n 2 /out/soak.txt | tr '\n' ' ')start $(cat /out/soak-start.txt), after a round $(cat /out/soak-warm.txt 2>/dev/null), end $(cat /out/soak-end.txt 2>/dev/null)"
 }
 wait_for() { # condition... : true once it holds, false after 60 s

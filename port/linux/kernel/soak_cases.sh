@@ -18,7 +18,7 @@ soak_checks() { # the soak (init.sh): frames, faults counted, resources
         ok "soak: $tot frames (wanted $SOAK_FRAMES), injected $inj; counted $nbad bad frames, $nrec reconnects; stopped by SIGTERM, exit 0"
     else
         bad "soak: wanted $SOAK_FRAMES frames, two rounds of faults counted, exit 0 (got ${tot:-no} frames, $nbad bad, $nrec reconnects; $inj)"
-        sed 's/^/       /' "$t" 2>/dev/null | tail -n 20
+        grep -v ': last second: ' "$t" 2>/dev/null | sed 's/^/       /' | tail -n 40
     fi
     s0=$(cat "$r/soak-start.txt" 2>/dev/null); s1=$(cat "$r/soak-warm.txt" 2>/dev/null)
     s2=$(cat "$r/soak-end.txt" 2>/dev/null)
