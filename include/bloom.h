@@ -158,8 +158,9 @@ typedef struct {
     /* The source rectangle the engine reads for its output rectangle (the
      * whole frame without a tile); level_w/h are the sizes over it. */
     int src_x, src_y, src_w, src_h;
-    int sample_bits; /* 32 or 16 (the configuration's) */
-    int sample_frac; /* fraction bits of the pyramid samples: 20 (Q12.20), or 16 - bitlen(L) */
+    int sample_bits;       /* 32 or 16 (the configuration's) */
+    int sample_frac;       /* fraction bits of the pyramid samples: 20 (Q12.20), or 16 - bitlen(L) */
+    size_t schedule_bytes; /* of workspace_bytes, the static schedule's table (0 in the size build) */
 } bloom_info_t;
 
 typedef struct bloom bloom_t;
@@ -283,7 +284,8 @@ const char *bloom_status_str(bloom_status_t st);
  * but the size build) each ring slot's row pointer and tag are kept twice
  * over (under 64*2^L more bytes), each node input has its gather (under
  * 96 more bytes a level) and its table takes a byte per row made and two
- * per source row (under 6*h). Computed in unsigned long long: a configuration
+ * per source row (under 6*h), folded to the start-up, one period of 2^L
+ * source rows and the end where L <= 8 (under 6*64*2^L). Computed in unsigned long long: a configuration
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
@@ -296,7 +298,9 @@ const char *bloom_status_str(bloom_status_t st);
     (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + ((sample_bits) == 16 ? 70u : 100u)) +         \
      ((BLOOM_SCHED_TABLE ? 128ull : 64ull) << (levels)) +                                                    \
      (BLOOM_SCHED_TABLE ? 160ull : 64ull) * (unsigned long long)(levels) +                                   \
-     (BLOOM_SCHED_TABLE ? 6ull * (unsigned long long)(h) : 0ull) +                                           \
+     (BLOOM_SCHED_TABLE ? 6ull * ((unsigned long long)(h) < (64ull << (levels)) ? (unsigned long long)(h)    \
+                                                                                : (64ull << (levels)))       \
+                        : 0ull) +                                                                            \
      ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]
 

@@ -75,7 +75,8 @@ int main(int argc, char **argv)
     };
     static const char *names[] = {"", "RGB888", "XRGB8888", "RGB565", "RGBQ16", "RGBF32"};
     printf("| frame | input | levels | source rows | workspace bytes | of one RGB888 frame | "
-           "latency (rows) | with 16-bit samples (G) |\n|---|---|---|---|---|---|---|---|\n");
+           "of it, the static schedule | latency (rows) | with 16-bit samples (G) |\n"
+           "|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
         bloom_config_t c;
         bloom_info_t info;
@@ -92,10 +93,11 @@ int main(int argc, char **argv)
         if (have16)
             snprintf(w16, sizeof w16, "%zu (%.2fx, G %d)", s16.workspace_bytes,
                      (double)s16.workspace_bytes / (double)info.workspace_bytes, s16.sample_frac);
-        printf("| %dx%d | %s | %d | %s | %zu | %.2f %% (1/%.0f) | %d | %s |\n", c.width, c.height,
+        printf("| %dx%d | %s | %d | %s | %zu | %.2f %% (1/%.0f) | %zu | %d | %s |\n", c.width, c.height,
                names[c.in_fmt], info.levels, (c.flags & BLOOM_FLAG_COPY_SOURCE) ? "copied" : "pointers",
                info.workspace_bytes, 100.0 * (double)info.workspace_bytes / (3.0 * c.width * c.height),
-               3.0 * c.width * c.height / (double)info.workspace_bytes, info.latency_rows, w16);
+               3.0 * c.width * c.height / (double)info.workspace_bytes, info.schedule_bytes,
+               info.latency_rows, w16);
     }
     /* Every preset at its own defaults (levels, aux plane), RGB888 in and
      * out, source rows kept by pointer; the row memory by level. */

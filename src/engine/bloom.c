@@ -472,6 +472,11 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
 #endif
     info->src_w = tmp.gr.w[0];
     info->src_h = tmp.gr.h[0];
+#if BLOOM_SCHED_TABLE
+    info->schedule_bytes = (size_t)tmp.sched_len;
+#else
+    info->schedule_bytes = 0;
+#endif
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);
     if (bytes > SIZE_MAX)
         return BLOOM_E_TOO_BIG;
@@ -519,7 +524,7 @@ bloom_status_t bloom_init(bloom_t **out, void *ws, size_t ws_bytes, const bloom_
      * the same firings it counted (and finds the same ring sizes) */
     const int len = g->sched_len;
     bloom_dry_frame(g);
-    if (g->sched_len != len)
+    if (g->sched_len != len || g->failed) /* (failed: a repeat of the period that differs) */
         return BLOOM_E_INTERNAL;
 #endif
     *out = g;
@@ -538,6 +543,7 @@ bloom_status_t bloom_begin(bloom_t *b)
     b->sched_at = 0;
     b->src_free = 0;
     b->src_seen = 0;
+    b->fold_rep = 0;
 #endif
     /* an empty source slot: a negative row (no row matches it), without
      * the zero bit (were it read, it would not pass for a dark row) */

@@ -83,6 +83,13 @@ struct bloom {
      * (in the workspace; NULL while the dry run only counts them). */
     uint8_t *sched;
     int sched_len, sched_at;
+    /* The table is folded: the firing order repeats every 2^L pushes once
+     * the pyramid has filled, so the start-up is written down, one period
+     * once, then the end. Bytes [fold_b, fold_e) are walked fold_m times
+     * (fold_rep done so far this frame); fold_m = 1: no fold. */
+    int fold_b, fold_e, fold_m, fold_rep;
+    int dry_n;                    /* dry run: bytes of the unfolded table so far */
+    struct bloom_fold_scan *scan; /* dry run: the period search (bloom_sched.c) */
     int src_free; /* source rows no firing to come reads: push r needs r - src_cap < src_free */
     int src_seen; /* BG_S_PUSH bytes the walk has passed */
 };

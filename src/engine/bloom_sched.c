@@ -7,7 +7,9 @@
  * far, one push at a time; a request that cannot be met yet is resumed
  * after the next push. It sizes every ring by what that order keeps, and
  * (BLOOM_SCHED_TABLE) writes the order down as the static schedule, one
- * byte per firing: a frame then walks the table, so a push's BUSY and a
+ * byte per firing, folded to the start-up, one period and the end (the
+ * order repeats every 2^L pushes once the pyramid has filled): a frame
+ * then walks the table, so a push's BUSY and a
  * pull's AGAIN are a counter compared with another, and nothing is
  * searched per row. Without the table (the size build) each pull runs the
  * same pull-driven walk on the real rows. Either way a row is made from
@@ -239,11 +241,87 @@ static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
     put_tag(n->tag, NODE_ZB(n), s, n->cap, BLOOM_USE_SKIP && made != ROW_MADE ? r | ZBIT : r);
 }
 
-/* One byte of the static schedule: written when the table has its place
- * (bloom_init's second dry run), counted always (its size). */
+#if BLOOM_SCHED_TABLE
+/* The period search of the first dry run. The bytes from one BG_S_PUSH to
+ * the next are a chunk; once the pyramid has filled, chunk y equals chunk
+ * y - P (P = 2^L pushes, a row of the deepest level). Each chunk's length
+ * and FNV-1a hash are kept for P chunks; the longest run of chunks equal to
+ * the chunk P before them is the fold: the block of P chunks before the run
+ * is written once and walked as many times as it fits in the run. The
+ * hash only proposes it: the second dry run compares every byte of the
+ * repeats with the block (a mismatch fails bloom_init, never a frame). */
+#define FOLD_MAX_P 256 /* L <= 8 (deeper pyramids are not folded) */
+struct bloom_fold_scan {
+    int P, y;       /* the period in chunks; the chunk being hashed */
+    int off;        /* its first byte */
+    uint64_t h;     /* its hash so far */
+    int run, run_b; /* the run of repeated chunks: its first chunk (-1: none), the block's first byte */
+    int run_len;    /* the block's bytes */
+    int best;       /* bytes the best fold saves */
+    int fb, fe, fm; /* that fold (bloom_t's fold_b, fold_e, fold_m at the end) */
+    uint64_t hash[FOLD_MAX_P];
+    int len[FOLD_MAX_P], start[FOLD_MAX_P];
+};
+
+/* The run that ends before chunk y (exclusive): the fold it gives, kept if
+ * it saves the most. */
+static void fold_run_end(struct bloom_fold_scan *f, int y)
+{
+    if (f->run < 0)
+        return;
+    const int m = (y - (f->run - f->P)) / f->P; /* whole blocks from the block's start */
+    if (m > 1 && (m - 1) * f->run_len > f->best) {
+        f->best = (m - 1) * f->run_len;
+        f->fb = f->run_b;
+        f->fe = f->run_b + f->run_len;
+        f->fm = m;
+    }
+    f->run = -1;
+}
+
+/* Chunk f->y is complete (the next push, or the end): compare it with the
+ * chunk P before it, whose slot it then takes. */
+static void fold_chunk_end(bloom_t *g, struct bloom_fold_scan *f)
+{
+    const int y = f->y, k = y % f->P, len = g->dry_n - f->off;
+    if (y >= 0) {
+        const bool same = y >= f->P && f->hash[k] == f->h && f->len[k] == len;
+        if (same && f->run < 0) {
+            f->run = y;
+            f->run_b = f->start[k];
+            f->run_len = f->off - f->start[k];
+        } else if (!same) {
+            fold_run_end(f, y);
+        }
+        f->hash[k] = f->h;
+        f->len[k] = len;
+        f->start[k] = f->off;
+    }
+    f->y = y + 1;
+    f->off = g->dry_n;
+    f->h = 0xcbf29ce484222325ull;
+}
+#endif
+
+/* One byte of the static schedule: counted always (its size), written when
+ * the table has its place (bloom_init's second dry run), folded (above). */
 static void emit(bloom_t *g, int byte)
 {
 #if BLOOM_SCHED_TABLE
+    struct bloom_fold_scan *f = g->scan;
+    if (f) { /* the first dry run */
+        if (byte == BG_S_PUSH)
+            fold_chunk_end(g, f);
+        f->h = (f->h ^ (uint8_t)byte) * 0x100000001b3ull;
+    }
+    const int i = g->dry_n++, rep = g->fold_e - g->fold_b;
+    if (g->fold_m > 1 && i >= g->fold_e) {
+        if (i < g->fold_b + g->fold_m * rep) { /* a repeat of the block: the same byte, or no fold */
+            if (g->sched && g->sched[g->fold_b + (i - g->fold_b) % rep] != (uint8_t)byte)
+                g->failed = true;
+            return;
+        }
+    }
     if (g->sched)
         g->sched[g->sched_len] = (uint8_t)byte;
     g->sched_len++;
@@ -314,6 +392,21 @@ void bloom_dry_frame(bloom_t *g)
     g->src_n = 0;
     g->src_free = 0;
     g->sched_len = 0;
+    g->dry_n = 0;
+    struct bloom_fold_scan scan;
+    if (!g->sched) { /* the first run looks for the period; the second folds by it */
+        scan.P = g->gr.L >= 0 && g->gr.L <= 8 ? 1 << g->gr.L : 0;
+        scan.y = -1;
+        scan.off = 0;
+        scan.h = 0;
+        scan.run = -1;
+        scan.best = 0;
+        scan.fb = scan.fe = 0;
+        scan.fm = 1;
+        g->fold_b = g->fold_e = 0;
+        g->fold_m = 1;
+        g->scan = scan.P ? &scan : NULL;
+    }
 #endif
     g->dry = true;
     emit_free(g);
@@ -330,6 +423,18 @@ void bloom_dry_frame(bloom_t *g)
             emit_free(g);
         }
     }
+#if BLOOM_SCHED_TABLE
+    if (g->scan) {
+        fold_chunk_end(g, &scan);
+        fold_run_end(&scan, scan.y);
+        g->fold_b = scan.fb;
+        g->fold_e = scan.fe;
+        g->fold_m = scan.fm;
+        /* the bytes counted were the unfolded table's */
+        g->sched_len -= (g->fold_m - 1) * (g->fold_e - g->fold_b);
+        g->scan = NULL;
+    }
+#endif
     g->dry = false;
 }
 
@@ -407,7 +512,14 @@ static bool walk_to_output(bloom_t *g)
     const int out = g->gr.out_node;
     const uint8_t *t = g->sched;
     int at = g->sched_at;
-    for (; at < g->sched_len; at++) {
+    const int fold_e = g->fold_e;
+    for (;; at++) {
+        if (at == fold_e && g->fold_rep < g->fold_m - 1) { /* the period again */
+            at = g->fold_b;
+            g->fold_rep++;
+        }
+        if (at >= g->sched_len)
+            break;
         const int e = t[at];
         if (e < out) {
             make_row(g, &node[e], node[e].next);
