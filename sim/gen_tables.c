@@ -78,6 +78,33 @@ static int emit_bucket(const char *name, int n, int shift)
     return bad;
 }
 
+/* The 8-bit encode buckets over [0, 2^(F+1)) with the code capped at
+ * n - 1: the SIMD encoders clamp the bloom to the top threshold t[n] in
+ * vector lanes, so v = decoded source + bloom < 2^F + t[n] < 2^(F+1), and
+ * bucket code c <= n - 1 with c + (v >= t[c + 1]) needs no clamp of v per
+ * sample (bloom_pixel.h, BLOOM_FENC8W). */
+static int emit_bucket_wide(const char *name, int n, int shift)
+{
+    const int size = 2 << F >> shift;
+    unsigned long t[256];
+    for (int c = 1; c <= n; c++)
+        t[c] = (unsigned long)ceil(srgb_to_linear((c - 0.5) / n) * ONE);
+    if ((t[n] >> shift) << shift == t[n]) {
+        fprintf(stderr, "gen_tables: %s: the top threshold starts a bucket\n", name);
+        return 1;
+    }
+    printf("const uint8_t %s[%d] = {", name, size);
+    int code = 0;
+    for (int i = 0; i < size; i++) {
+        const unsigned long lo = (unsigned long)i << shift;
+        while (code < n - 1 && t[code + 1] <= lo)
+            code++;
+        printf("%s%d,", i % 32 ? " " : "\n    ", code);
+    }
+    printf("\n};\n\n");
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int bad = 0;
@@ -109,5 +136,8 @@ int main(int argc, char **argv)
     bad |= emit_bucket("bloom_srgb_bkt8", 255, F - 12);
     bad |= emit_bucket("bloom_srgb_bkt6", 63, F - 10);
     bad |= emit_bucket("bloom_srgb_bkt5", 31, F - 9);
+    printf("/* The 8-bit buckets over twice the range, the code capped at 254 (the\n"
+           " * SIMD encoders: no clamp per sample). */\n");
+    bad |= emit_bucket_wide("bloom_srgb_bkt8w", 255, F - 12);
     return bad ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -452,6 +452,14 @@ static void test_enc_fast(void)
         bad += bloom_enc_srgb_fast(0xFFFFFFFFu, bits) != bloom_enc_srgb_ref(0xFFFFFFFFu, bits);
     }
     CHECKF(bad == 0, "%d values encode differently", bad);
+    /* The SIMD encoders' wide buckets: every v a decoded code plus a bloom
+     * clamped to the top threshold can make (and the table's last entry). */
+    int wide = 0;
+    const uint32_t vmax = BLOOM_LIN_ONE + bloom_srgb_enc8[255];
+    CHECK((vmax >> (BLOOM_LIN_BITS - 12)) < sizeof bloom_srgb_bkt8w);
+    for (uint32_t v = 0; v <= vmax; v++)
+        wide += bloom_fenc8w(v) != bloom_enc_srgb_ref(v, 8);
+    CHECKF(wide == 0, "%d values encode differently through the wide buckets", wide);
 }
 
 /* The fused composite + encode of the fast output path (k->eo: the AVX2
@@ -497,7 +505,10 @@ static void test_eo(const bloom_kernels_t *ks)
                             const int mode = var < 2 && (r & 0x800u) ? 4 : (int)((r >> 28) % 4u);
                             const uint32_t v = mode == 0   ? r % (2u << BLOOM_LIN_BITS)
                                                : mode == 1 ? r >> 1
-                                               : mode == 2 ? bloom_srgb_enc8[(r >> 8) & 255u] + (r & 3u) - 1u
+                                               /* (thresholds 1 .. 255: entry 0 is unused, and
+                                                  0 - 1 would break P + S < 2^32) */
+                                               : mode == 2
+                                                   ? bloom_srgb_enc8[1u + (r >> 8) % 255u] + (r & 3u) - 1u
                                                : mode == 3 ? ((r & 1u) ? 0xFFFFFFFFu - BLOOM_LIN_ONE : 0u)
                                                            : (r >> 12) % 4000u;
                             (h ? o : e)[i] = v;

@@ -247,6 +247,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
     const bool rgb = gbpp == 3; /* else XRGB8888 */
     const int g = n / 8;        /* groups of 8 pixels: 12 bloom samples of e and of o each */
     uint32_t bb[32];
+    const __m256i top = _mm256_set1_epi32((int)bloom_srgb_enc8[255]); /* (bloom_fenc8w) */
     if (rgb) {
         for (int j = 0; j < g; j++, src += 24, dst += 24, e += 12, o += 12) {
             __m256i b[3];
@@ -260,7 +261,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
                 continue;
             }
             for (int k = 0; k < 3; k++)
-                ST8(bb + 8 * k, b[k]);
+                ST8(bb + 8 * k, _mm256_min_epu32(b[k], top));
             bloom_enc8_run24(src, bb, dst);
         }
     } else {
@@ -273,7 +274,7 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
                 keep = _mm256_and_si256(keep, _mm256_or_si256(keep8(codes8(src + 8 * k), b[k]), xlanes));
             if (_mm256_movemask_epi8(keep) != -1) {
                 for (int k = 0; k < 4; k++)
-                    ST8(bb + 8 * k, b[k]);
+                    ST8(bb + 8 * k, _mm256_min_epu32(b[k], top));
                 bloom_enc8_xrgb8(src, bb, dst);
             } else { /* the bloom changes no code here: the source, X = 0xFF */
                 ST8(dst, _mm256_or_si256(LD8(src), _mm256_set1_epi32((int)0xFF000000u)));

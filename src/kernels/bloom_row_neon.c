@@ -215,6 +215,7 @@ void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
     const int g = n / 8;
     const size_t bpp = (size_t)gbpp;
     uint32_t bb[32];
+    const uint32x4_t top = vdupq_n_u32(bloom_srgb_enc8[255]);
     for (int j = 0; j < g; j++, src += 8 * bpp, dst += 8 * bpp, e += 12, o += 12) {
         const uint32x4x3_t ev = vld3q_u32(e), ov = vld3q_u32(o);
         uint32x4_t blo[3], bhi[3]; /* R, G, B of pixels 0..3 and 4..7 */
@@ -247,6 +248,10 @@ void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
                 memcpy(dst, src, 24);
             }
             continue;
+        }
+        for (int c = 0; c < 3; c++) { /* (bloom_fenc8w) */
+            blo[c] = vminq_u32(blo[c], top);
+            bhi[c] = vminq_u32(bhi[c], top);
         }
         if (rgb) {
             const uint32x4x3_t lo = {{blo[0], blo[1], blo[2]}}, hi = {{bhi[0], bhi[1], bhi[2]}};

@@ -30,6 +30,7 @@ static inline uint32_t bloom_lin_to_q16(uint32_t v)
 extern const uint32_t bloom_srgb_dec8[256], bloom_srgb_dec6[64], bloom_srgb_dec5[32];
 extern const uint32_t bloom_srgb_enc8[256], bloom_srgb_enc6[64], bloom_srgb_enc5[32];
 extern const uint8_t bloom_srgb_bkt8[4097], bloom_srgb_bkt6[1025], bloom_srgb_bkt5[513];
+extern const uint8_t bloom_srgb_bkt8w[8192]; /* (gen_tables: the SIMD encoders' wide buckets) */
 
 /* Largest codes (or Q16 word) that decode to a value the knee zeroes: a
  * source row with no channel above them is dark. An engine has one input
@@ -179,6 +180,16 @@ static BLOOM_ALWAYS_INLINE uint32_t bloom_enc_fast(uint32_t v, const uint8_t *bk
     return (uint32_t)c + (v >= next[c]);
 }
 #define BLOOM_FENC8(v) bloom_enc_fast(v, bloom_srgb_bkt8, BLOOM_LIN_BITS - 12, bloom_srgb_enc8, 255)
+/* The same code for v < 2^BLOOM_LIN_BITS + t[255] with no clamp: the wide
+ * buckets (codes capped at 254) cover twice the range. The SIMD encoders
+ * clamp the bloom to t[255] = bloom_srgb_enc8[255] in vector lanes first, a
+ * min per 8 samples instead of a compare and a move per sample (a bloom at
+ * or above t[255] gives code 255 either way). */
+static BLOOM_ALWAYS_INLINE uint32_t bloom_fenc8w(uint32_t v)
+{
+    const size_t c = bloom_srgb_bkt8w[v >> (BLOOM_LIN_BITS - 12)];
+    return (uint32_t)c + (v >= bloom_srgb_enc8[c + 1]);
+}
 
 /* What the SIMD encoders (bloom_row_avx2.c, bloom_row_neon.c) take in
  * 8-pixel groups: the bytes per pixel, 3 for RGB888 -> RGB888 and 4 for
@@ -196,7 +207,8 @@ static inline int bloom_eo_group_bpp(bloom_format_t in_fmt, bloom_format_t out_f
 }
 
 /* The scalar part of the SIMD encoders (bloom_row_avx2.c, bloom_row_neon.c):
- * 8 pixels whose bloom b is in the order of their bytes. RGB888:
+ * 8 pixels whose bloom b is in the order of their bytes, each b at most
+ * bloom_srgb_enc8[255] (clamped in lanes: bloom_fenc8w). RGB888:
  * dst[q] = enc(dec(src[q]) + b[q]) for the 24 bytes; XRGB8888 (B G R X):
  * the same for the colour bytes, X = 0xFF. Unrolled: 24 independent
  * table walks. */
@@ -211,15 +223,15 @@ static BLOOM_ALWAYS_INLINE void bloom_enc8_run24(const uint8_t *src, const uint3
 {
     BLOOM_UNROLL
     for (int q = 0; q < 24; q++)
-        dst[q] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[q]] + b[q]);
+        dst[q] = (uint8_t)bloom_fenc8w(bloom_srgb_dec8[src[q]] + b[q]);
 }
 static BLOOM_ALWAYS_INLINE void bloom_enc8_xrgb8(const uint8_t *src, const uint32_t *b, uint8_t *dst)
 {
     BLOOM_UNROLL
     for (int p = 0; p < 32; p += 4) {
-        dst[p] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p]] + b[p]);
-        dst[p + 1] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 1]] + b[p + 1]);
-        dst[p + 2] = (uint8_t)BLOOM_FENC8(bloom_srgb_dec8[src[p + 2]] + b[p + 2]);
+        dst[p] = (uint8_t)bloom_fenc8w(bloom_srgb_dec8[src[p]] + b[p]);
+        dst[p + 1] = (uint8_t)bloom_fenc8w(bloom_srgb_dec8[src[p + 1]] + b[p + 1]);
+        dst[p + 2] = (uint8_t)bloom_fenc8w(bloom_srgb_dec8[src[p + 2]] + b[p + 2]);
         dst[p + 3] = 0xFF;
     }
 }
