@@ -92,7 +92,12 @@ static bool ensure_inputs(bloom_t *g, const bg_node_t *n, int r)
  * the recursion of ensure() keeps small frames (the Cortex-M stack figure). */
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
-static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
+#if BLOOM_SCHED_TABLE /* no recursion at frame time: inlined into the walk (a call less per row) */
+#define RUN_ROW_INLINE BLOOM_ALWAYS_INLINE
+#else
+#define RUN_ROW_INLINE BLOOM_NOINLINE
+#endif
+static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN]; /* (the row function reads in[0 .. nin - 1]) */
@@ -512,14 +517,16 @@ static bool walk_to_output(bloom_t *g)
     const int out = g->gr.out_node;
     const uint8_t *t = g->sched;
     int at = g->sched_at;
-    const int fold_e = g->fold_e;
+    /* the walk stops at `end`: the period's end while it is walked again,
+     * then the table's */
+    int end = g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
     for (;; at++) {
-        if (at == fold_e && g->fold_rep < g->fold_m - 1) { /* the period again */
-            at = g->fold_b;
-            g->fold_rep++;
+        if (at >= end) {
+            if (end == g->sched_len)
+                break;
+            at = g->fold_b; /* the period again */
+            end = ++g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
         }
-        if (at >= g->sched_len)
-            break;
         const int e = t[at];
         if (e < out) {
             make_row(g, &node[e], node[e].next);
