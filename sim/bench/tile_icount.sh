@@ -183,7 +183,7 @@ Four strips of 480 columns (the tiling of 4 cores) at 5 levels cost
 at most 8 %: $(met "$four" 8)); eight strips of 256 columns **${eight} %**
 (target at most 25 %: $(met "$eight" 25)). Of the extra of four strips, the
 scheduler (\`src/engine/bloom_sched.c\`: every strip walks its static schedule,
-one byte per row made, and gathers each row's inputs) takes $sched_x
+folded to the start-up, one period and the end, and gathers each row's inputs) takes $sched_x
 instructions ($sched_u untiled, $sched_t over the four strips: every
 function of the file with what is inlined into it, no callgrind threshold;
 before the static schedule, counted the same way, 2723952 untiled and

@@ -472,10 +472,8 @@ bloom_status_t bloom_query(const bloom_config_t *cfg, bloom_info_t *info)
 #endif
     info->src_w = tmp.gr.w[0];
     info->src_h = tmp.gr.h[0];
-#if BLOOM_SCHED_TABLE
+#if BLOOM_SCHED_TABLE /* (else 0, from the memset) */
     info->schedule_bytes = (size_t)tmp.sched_len;
-#else
-    info->schedule_bytes = 0;
 #endif
     const uint64_t bytes = bloom_carve(&tmp, NULL, info->ring_bytes);
     if (bytes > SIZE_MAX)
@@ -544,6 +542,7 @@ bloom_status_t bloom_begin(bloom_t *b)
     b->src_free = 0;
     b->src_seen = 0;
     b->fold_rep = 0;
+    b->walk_end = b->fold_m > 1 ? b->fold_e : b->sched_len;
 #endif
     /* an empty source slot: a negative row (no row matches it), without
      * the zero bit (were it read, it would not pass for a dark row) */

@@ -87,9 +87,12 @@ struct bloom {
      * the pyramid has filled, so the start-up is written down, one period
      * once, then the end. Bytes [fold_b, fold_e) are walked fold_m times
      * (fold_rep done so far this frame); fold_m = 1: no fold. */
+#if BLOOM_SCHED_TABLE /* (the size build has no table: no workspace for these) */
     int fold_b, fold_e, fold_m, fold_rep;
+    int walk_end;                 /* where the walk stops: fold_e while the period repeats, then sched_len */
     int dry_n;                    /* dry run: bytes of the unfolded table so far */
     struct bloom_fold_scan *scan; /* dry run: the period search (bloom_sched.c) */
+#endif
     int src_free; /* source rows no firing to come reads: push r needs r - src_cap < src_free */
     int src_seen; /* BG_S_PUSH bytes the walk has passed */
 };

@@ -92,12 +92,7 @@ static bool ensure_inputs(bloom_t *g, const bg_node_t *n, int r)
  * the recursion of ensure() keeps small frames (the Cortex-M stack figure). */
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
-#if BLOOM_SCHED_TABLE /* no recursion at frame time: inlined into the walk (a call less per row) */
-#define RUN_ROW_INLINE BLOOM_ALWAYS_INLINE
-#else
-#define RUN_ROW_INLINE BLOOM_NOINLINE
-#endif
-static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
+static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN]; /* (the row function reads in[0 .. nin - 1]) */
@@ -250,22 +245,25 @@ static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
 /* The period search of the first dry run. The bytes from one BG_S_PUSH to
  * the next are a chunk; once the pyramid has filled, chunk y equals chunk
  * y - P (P = 2^L pushes, a row of the deepest level). Each chunk's length
- * and FNV-1a hash are kept for P chunks; the longest run of chunks equal to
- * the chunk P before them is the fold: the block of P chunks before the run
- * is written once and walked as many times as it fits in the run. The
- * hash only proposes it: the second dry run compares every byte of the
- * repeats with the block (a mismatch fails bloom_init, never a frame). */
-#define FOLD_MAX_P 256 /* L <= 8 (deeper pyramids are not folded) */
+ * and 64-bit FNV-1a hash are kept for P chunks; the longest run of chunks
+ * equal to the chunk P before them is the fold: the block of P chunks
+ * before the run is written once and walked as many times as it fits in
+ * the run. The hash only proposes it: the second dry run compares every
+ * byte of the repeats with the block (a mismatch fails bloom_init, never a
+ * frame). It lives on bloom_init's stack: 640 bytes at most, below what a
+ * frame call takes (port/mcu/FIGURES.md), hence P <= 64. */
+#define FOLD_MAX_P 64 /* L <= 6 (deeper pyramids are not folded) */
 struct bloom_fold_scan {
-    int P, y;       /* the period in chunks; the chunk being hashed */
+    int P, y;       /* the period in chunks (0: no search); the chunk being hashed */
     int off;        /* its first byte */
     uint64_t h;     /* its hash so far */
+    int wsum;       /* the bytes of the last P chunks */
     int run, run_b; /* the run of repeated chunks: its first chunk (-1: none), the block's first byte */
     int run_len;    /* the block's bytes */
     int best;       /* bytes the best fold saves */
     int fb, fe, fm; /* that fold (bloom_t's fold_b, fold_e, fold_m at the end) */
     uint64_t hash[FOLD_MAX_P];
-    int len[FOLD_MAX_P], start[FOLD_MAX_P];
+    uint16_t len[FOLD_MAX_P];
 };
 
 /* The run that ends before chunk y (exclusive): the fold it gives, kept if
@@ -290,17 +288,21 @@ static void fold_chunk_end(bloom_t *g, struct bloom_fold_scan *f)
 {
     const int y = f->y, k = y % f->P, len = g->dry_n - f->off;
     if (y >= 0) {
+        if (len > 0xFFFF) { /* (never, at L <= 6: the search stops, no fold) */
+            f->P = 0;
+            return;
+        }
         const bool same = y >= f->P && f->hash[k] == f->h && f->len[k] == len;
-        if (same && f->run < 0) {
+        if (same && f->run < 0) { /* the last P chunks are the block */
             f->run = y;
-            f->run_b = f->start[k];
-            f->run_len = f->off - f->start[k];
+            f->run_b = f->off - f->wsum;
+            f->run_len = f->wsum;
         } else if (!same) {
             fold_run_end(f, y);
         }
+        f->wsum += len - (y >= f->P ? f->len[k] : 0);
         f->hash[k] = f->h;
-        f->len[k] = len;
-        f->start[k] = f->off;
+        f->len[k] = (uint16_t)len;
     }
     f->y = y + 1;
     f->off = g->dry_n;
@@ -314,7 +316,7 @@ static void emit(bloom_t *g, int byte)
 {
 #if BLOOM_SCHED_TABLE
     struct bloom_fold_scan *f = g->scan;
-    if (f) { /* the first dry run */
+    if (f && f->P) { /* the first dry run */
         if (byte == BG_S_PUSH)
             fold_chunk_end(g, f);
         f->h = (f->h ^ (uint8_t)byte) * 0x100000001b3ull;
@@ -400,7 +402,8 @@ void bloom_dry_frame(bloom_t *g)
     g->dry_n = 0;
     struct bloom_fold_scan scan;
     if (!g->sched) { /* the first run looks for the period; the second folds by it */
-        scan.P = g->gr.L >= 0 && g->gr.L <= 8 ? 1 << g->gr.L : 0;
+        scan.P = g->gr.L >= 0 && (1 << g->gr.L) <= FOLD_MAX_P ? 1 << g->gr.L : 0;
+        scan.wsum = 0;
         scan.y = -1;
         scan.off = 0;
         scan.h = 0;
@@ -430,8 +433,10 @@ void bloom_dry_frame(bloom_t *g)
     }
 #if BLOOM_SCHED_TABLE
     if (g->scan) {
-        fold_chunk_end(g, &scan);
-        fold_run_end(&scan, scan.y);
+        if (scan.P)
+            fold_chunk_end(g, &scan);
+        if (scan.P)
+            fold_run_end(&scan, scan.y);
         g->fold_b = scan.fb;
         g->fold_e = scan.fe;
         g->fold_m = scan.fm;
@@ -519,13 +524,13 @@ static bool walk_to_output(bloom_t *g)
     int at = g->sched_at;
     /* the walk stops at `end`: the period's end while it is walked again,
      * then the table's */
-    int end = g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
+    int end = g->walk_end;
     for (;; at++) {
         if (at >= end) {
             if (end == g->sched_len)
                 break;
             at = g->fold_b; /* the period again */
-            end = ++g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
+            end = g->walk_end = ++g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
         }
         const int e = t[at];
         if (e < out) {
