@@ -526,8 +526,8 @@ static bool walk_to_output(bloom_t *g)
      * then the table's */
     int end = g->walk_end;
     for (;; at++) {
-        if (at >= end) {
-            if (end == g->sched_len)
+        if (at >= end) { /* (the period may end the table: no end part) */
+            if (g->fold_rep >= g->fold_m - 1)
                 break;
             at = g->fold_b; /* the period again */
             end = g->walk_end = ++g->fold_rep < g->fold_m - 1 ? g->fold_e : g->sched_len;
