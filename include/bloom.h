@@ -285,7 +285,8 @@ const char *bloom_status_str(bloom_status_t st);
  * over (under 64*2^L more bytes), each node input has its gather (under
  * 96 more bytes a level) and its table takes a byte per row made and two
  * per source row (under 6*h), folded to the start-up, one period of 2^L
- * source rows and the end where L <= 6 (under 6*64*2^L). Computed in unsigned long long: a configuration
+ * source rows and the end where L <= 6 (under 6*8*2^L: at most 28.5*2^L
+ * bytes over widths 1 .. 4000, heights 1 .. 16384 and L = 1 .. 6). Computed in unsigned long long: a configuration
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
@@ -298,10 +299,10 @@ const char *bloom_status_str(bloom_status_t st);
     (3072ull + (unsigned long long)(w) * ((1ull << (levels)) + ((sample_bits) == 16 ? 70u : 100u)) +         \
      ((BLOOM_SCHED_TABLE ? 128ull : 64ull) << (levels)) +                                                    \
      (BLOOM_SCHED_TABLE ? 160ull : 64ull) * (unsigned long long)(levels) +                                   \
-     (BLOOM_SCHED_TABLE ? 6ull * ((levels) <= 6 && (64ull << (levels)) < (unsigned long long)(h)             \
-                                      ? (64ull << (levels))                                                  \
-                                      : (unsigned long long)(h))                                             \
-                        : 0ull) +                                                                            \
+     (BLOOM_SCHED_TABLE                                                                                      \
+          ? 6ull * ((levels) <= 6 && (8ull << (levels)) < (unsigned long long)(h) ? (8ull << (levels))       \
+                                                                                  : (unsigned long long)(h)) \
+          : 0ull) +                                                                                          \
      ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]
 

@@ -204,8 +204,13 @@ inc=$(( (s7 - s5) / 2 ))
 cat <<EOF
 
 The frame call grows by $inc bytes per pyramid level (minimal build,
-Cortex-M4: ($s7 − $s5) / 2), about $((s5 - 5 * inc)) + $inc·L bytes at L levels;
-by \`-fstack-usage\` a node is a frame of \`ensure\` ($(su ensure) bytes), two a level.
+Cortex-M4: ($s7 − $s5) / 2), about $((s5 - 5 * inc)) + $inc·L bytes at L levels.
+That is not the recursion's growth: by \`-fstack-usage\` a node is a frame
+of \`ensure\` ($(su ensure) bytes), two a level, so the chain down the pyramid
+grows by $((2 * $(su ensure))) bytes a level; had its end been the deepest point,
+the figure would have grown that much. The deepest point is on a path
+whose depth does not follow the level count: the output row's, whose
+functions have the largest frames of the core (table below).
 EOF
 cat <<EOF
 
