@@ -29,6 +29,13 @@ static int emit_decode(const char *name, int n)
     return 0;
 }
 
+/* Threshold c of an n-code encoder: the smallest value that encodes to c
+ * (emit_encode's table, which the buckets below index). */
+static unsigned long threshold(int c, int n)
+{
+    return (unsigned long)ceil(srgb_to_linear((c - 0.5) / n) * ONE);
+}
+
 static int emit_encode(const char *name, int n)
 {
     int bad = 0;
@@ -41,7 +48,7 @@ static int emit_encode(const char *name, int n)
                 fprintf(stderr, "gen_tables: %s[%d] = %.9f is too close to an integer\n", name, c, v);
                 bad = 1;
             }
-            t = (unsigned long)ceil(v);
+            t = threshold(c, n);
         }
         printf("%s%lu,", c % 8 ? " " : "\n    ", t);
     }
@@ -50,20 +57,20 @@ static int emit_encode(const char *name, int n)
 }
 
 /* Encode buckets: lut[i] = the code of value i << shift (how many
- * thresholds are <= it). With at most one threshold inside any bucket, the
- * code of v is lut[v >> shift] plus one compare against the next threshold.
- * One entry more covers v == 2^F exactly; larger v are clamped first. */
-static int emit_bucket(const char *name, int n, int shift)
+ * thresholds are <= it, at most `cap`), `size` entries, `per_line` a line.
+ * With at most one threshold inside any bucket, the code of v is
+ * lut[v >> shift] plus one compare against the next threshold. */
+static int emit_buckets(const char *name, int n, int shift, int size, int cap, int per_line)
 {
-    int bad = 0, size = (1 << F >> shift) + 1;
+    int bad = 0;
     unsigned long t[256];
     for (int c = 1; c <= n; c++)
-        t[c] = (unsigned long)ceil(srgb_to_linear((c - 0.5) / n) * ONE);
+        t[c] = threshold(c, n);
     printf("const uint8_t %s[%d] = {", name, size);
     int code = 0;
     for (int i = 0; i < size; i++) {
         unsigned long lo = (unsigned long)i << shift, hi = lo + (1ul << shift);
-        while (code < n && t[code + 1] <= lo)
+        while (code < cap && t[code + 1] <= lo)
             code++;
         int inside = 0;
         for (int c = code + 1; c <= n && t[c] < hi; c++)
@@ -72,37 +79,31 @@ static int emit_bucket(const char *name, int n, int shift)
             fprintf(stderr, "gen_tables: %s bucket %d holds %d thresholds\n", name, i, inside);
             bad = 1;
         }
-        printf("%s%d,", i % 16 ? " " : "\n    ", code);
+        printf("%s%d,", i % per_line ? " " : "\n    ", code);
     }
     printf("\n};\n\n");
     return bad;
+}
+
+/* The scalar encoders' buckets: one entry more covers v == 2^F exactly;
+ * larger v are clamped first. */
+static int emit_bucket(const char *name, int n, int shift)
+{
+    return emit_buckets(name, n, shift, (1 << F >> shift) + 1, n, 16);
 }
 
 /* The 8-bit encode buckets over [0, 2^(F+1)) with the code capped at
  * n - 1: the SIMD encoders clamp the bloom to the top threshold t[n] in
  * vector lanes, so v = decoded source + bloom < 2^F + t[n] < 2^(F+1), and
  * bucket code c <= n - 1 with c + (v >= t[c + 1]) needs no clamp of v per
- * sample (bloom_pixel.h, BLOOM_FENC8W). */
+ * sample (bloom_pixel.h, bloom_fenc8w). */
 static int emit_bucket_wide(const char *name, int n, int shift)
 {
-    const int size = 2 << F >> shift;
-    unsigned long t[256];
-    for (int c = 1; c <= n; c++)
-        t[c] = (unsigned long)ceil(srgb_to_linear((c - 0.5) / n) * ONE);
-    if ((t[n] >> shift) << shift == t[n]) {
+    if ((threshold(n, n) >> shift) << shift == threshold(n, n)) {
         fprintf(stderr, "gen_tables: %s: the top threshold starts a bucket\n", name);
         return 1;
     }
-    printf("const uint8_t %s[%d] = {", name, size);
-    int code = 0;
-    for (int i = 0; i < size; i++) {
-        const unsigned long lo = (unsigned long)i << shift;
-        while (code < n - 1 && t[code + 1] <= lo)
-            code++;
-        printf("%s%d,", i % 32 ? " " : "\n    ", code);
-    }
-    printf("\n};\n\n");
-    return 0;
+    return emit_buckets(name, n, shift, 2 << F >> shift, n - 1, 32);
 }
 
 int main(int argc, char **argv)

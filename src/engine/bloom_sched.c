@@ -322,12 +322,11 @@ static void emit(bloom_t *g, int byte)
         f->h = (f->h ^ (uint8_t)byte) * 0x100000001b3ull;
     }
     const int i = g->dry_n++, rep = g->fold_e - g->fold_b;
-    if (g->fold_m > 1 && i >= g->fold_e) {
-        if (i < g->fold_b + g->fold_m * rep) { /* a repeat of the block: the same byte, or no fold */
-            if (g->sched && g->sched[g->fold_b + (i - g->fold_b) % rep] != (uint8_t)byte)
-                g->failed = true;
-            return;
-        }
+    if (g->fold_m > 1 && i >= g->fold_e && i < g->fold_b + g->fold_m * rep) {
+        /* a repeat of the block: the same byte, or no fold */
+        if (g->sched && g->sched[g->fold_b + (i - g->fold_b) % rep] != (uint8_t)byte)
+            g->failed = true;
+        return;
     }
     if (g->sched)
         g->sched[g->sched_len] = (uint8_t)byte;
@@ -435,7 +434,7 @@ void bloom_dry_frame(bloom_t *g)
     if (g->scan) {
         if (scan.P)
             fold_chunk_end(g, &scan);
-        if (scan.P)
+        if (scan.P) /* (the last chunk may have stopped the search) */
             fold_run_end(&scan, scan.y);
         g->fold_b = scan.fb;
         g->fold_e = scan.fe;
