@@ -15,9 +15,19 @@
 #define LD8(p) _mm256_loadu_si256((const __m256i *)(const void *)(p))
 #define ST8(p, v) _mm256_storeu_si256((__m256i *)(void *)(p), (v))
 #define SET8(a, b, c, d, e, f, g, h) _mm256_setr_epi32(a, b, c, d, e, f, g, h)
-/* 8 words of a table at 32-bit indices (a gather: on the CPU measured
- * here slower than 8 loads, although callgrind counts it as one) */
-#define GATHER(base, idx) _mm256_i32gather_epi32((const int *)(const void *)(base), (idx), 4)
+/* 8 words of a table at 32-bit indices, by 8 scalar loads: the AVX2
+ * gather was slower than its eight loads on the CPU measured here (cod
+ * preset, 1920x1080: 61 -> 45 ms a frame with this alone, sim/docs/presets/
+ * cod.md "SIMD twins"), although callgrind counts a gather as one
+ * instruction and these as about 25. */
+#define GATHER(base, idx) bloom_gather8((const uint32_t *)(const void *)(base), (idx))
+static inline __m256i bloom_gather8(const uint32_t *b, __m256i idx)
+{
+    uint32_t i[8];
+    _mm256_storeu_si256((__m256i *)(void *)i, idx);
+    return _mm256_setr_epi32((int)b[i[0]], (int)b[i[1]], (int)b[i[2]], (int)b[i[3]], (int)b[i[4]],
+                             (int)b[i[5]], (int)b[i[6]], (int)b[i[7]]);
+}
 #define PERM(x, a, b, c, d, e, f, g, h) _mm256_permutevar8x32_epi32((x), SET8(a, b, c, d, e, f, g, h))
 
 /* BLOOM_BOX_RND on 8 wrapping lanes: (s + 7 + ((s >> 4) & 1)) >> 4. */
@@ -81,10 +91,11 @@ static inline void il24(const uint32_t *e, const uint32_t *o, __m256i v[3])
 }
 
 #if BLOOM_USE_RGB888
-/* 8 sRGB 8-bit codes at p decoded to Q12.20 (table gathers). */
+/* 8 sRGB 8-bit codes at p decoded to Q12.20 (8 table loads, as GATHER). */
 static inline __m256i dec8x8(const uint8_t *p)
 {
-    const __m256i c = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p));
-    return GATHER(bloom_srgb_dec8, c);
+    const uint32_t *d = bloom_srgb_dec8;
+    return _mm256_setr_epi32((int)d[p[0]], (int)d[p[1]], (int)d[p[2]], (int)d[p[3]], (int)d[p[4]],
+                             (int)d[p[5]], (int)d[p[6]], (int)d[p[7]]);
 }
 #endif

@@ -37,15 +37,35 @@ void cod_vsum6_avx2(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_
 }
 #endif
 
-/* In place, p[j] = p[j] + p[j + 3] for j < m (reads p[0 .. m + 2]): the
- * 2-column sums of a padded row. */
-static void pair3(uint32_t *p, int m)
+/* In place, p[j] = p[j] + p[j + 3] + p[j + 6] + p[j + 9] for j < m (reads
+ * p[0 .. m + 8]): the 4-column sums of a padded row. */
+static void quad3(uint32_t *p, int m)
 {
     int j = 0;
     for (; j + 8 <= m; j += 8)
-        ST8(p + j, _mm256_add_epi32(LD8(p + j), LD8(p + j + 3)));
+        ST8(p + j, _mm256_add_epi32(_mm256_add_epi32(LD8(p + j), LD8(p + j + 3)),
+                                    _mm256_add_epi32(LD8(p + j + 6), LD8(p + j + 9))));
     for (; j < m; j++)
-        p[j] = p[j] + p[j + 3];
+        p[j] = p[j] + p[j + 3] + p[j + 6] + p[j + 9];
+}
+
+/* The first three words of each of 8 pixels 6 words apart (p[6l + ch],
+ * l = 0 .. 7, ch = 0 .. 2) as three vectors: 128-bit loads (reading
+ * p[0 .. 45]) and a 4x4 transpose in each half. Contiguous loads and
+ * shuffles: cheaper than gathers on the CPU measured here. */
+static inline void rgb6(const uint32_t *p, __m256i v[3])
+{
+#define LD4X2(a, b)                                                                                          \
+    _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(a))),     \
+                            _mm_loadu_si128((const __m128i *)(const void *)(b)), 1)
+    const __m256i a0 = LD4X2(p, p + 24), a1 = LD4X2(p + 6, p + 30), a2 = LD4X2(p + 12, p + 36),
+                  a3 = LD4X2(p + 18, p + 42);
+#undef LD4X2
+    const __m256i t0 = _mm256_unpacklo_epi32(a0, a1), t1 = _mm256_unpacklo_epi32(a2, a3);
+    const __m256i t2 = _mm256_unpackhi_epi32(a0, a1), t3 = _mm256_unpackhi_epi32(a2, a3);
+    v[0] = _mm256_unpacklo_epi64(t0, t1);
+    v[1] = _mm256_unpackhi_epi64(t0, t1);
+    v[2] = _mm256_unpacklo_epi64(t2, t3);
 }
 
 /* R, G, B vectors of 8 pixels into 24 samples in pixel order. */
@@ -63,14 +83,37 @@ static inline void il3(__m256i r, __m256i g, __m256i b, uint32_t *o)
 }
 
 /* floor(2^48 / (j 2^11)) for j = 256 .. 1536 (the grid points of the
- * divisors 2^19 .. 3 2^20), compile-time constants. */
+ * divisors 2^19 .. 3 2^20), compile-time constants; stored as the pair
+ * (T_j, T_j - T_(j+1)) in one word for j < 1536, so that one 64-bit load
+ * per lane fetches both ends of the chord (loads, not gathers: on the CPU
+ * measured here a gather was slower than its eight loads). */
 #define RCP(j) (uint32_t)((1ull << 48) / (((uint64_t)(j) + 256u) << 11))
-#define RCP4(j) RCP(j), RCP((j) + 1), RCP((j) + 2), RCP((j) + 3)
+#define RCP2(j) ((uint64_t)RCP(j) | (uint64_t)(RCP(j) - RCP((j) + 1)) << 32)
+#define RCP4(j) RCP2(j), RCP2((j) + 1), RCP2((j) + 2), RCP2((j) + 3)
 #define RCP16(j) RCP4(j), RCP4((j) + 4), RCP4((j) + 8), RCP4((j) + 12)
 #define RCP64(j) RCP16(j), RCP16((j) + 16), RCP16((j) + 32), RCP16((j) + 48)
 #define RCP256(j) RCP64(j), RCP64((j) + 64), RCP64((j) + 128), RCP64((j) + 192)
-static const uint32_t rcp_tab[1281] = {RCP256(0),   RCP256(256),  RCP256(512),
-                                       RCP256(768), RCP256(1024), RCP(1280)};
+static const uint64_t rcp_tab[1280] = {RCP256(0), RCP256(256), RCP256(512), RCP256(768), RCP256(1024)};
+
+/* T_j and T_j - T_(j+1) for the 8 lanes of j (each < 1280). */
+static inline void rcp_pairs(__m256i j, __m256i *t0, __m256i *dt)
+{
+    uint32_t ix[8];
+    ST8(ix, j);
+    __m128i q[4];
+    for (int k = 0; k < 4; k++)
+        q[k] = _mm_insert_epi64(_mm_loadl_epi64((const __m128i *)(const void *)(rcp_tab + ix[2 * k])),
+                                (long long)rcp_tab[ix[2 * k + 1]], 1);
+    /* lanes 0-3 and 4-7, each T then T - T' per 64 bits: the T into the low
+     * 128 bits, the differences into the high */
+    const __m256i sep = SET8(0, 2, 4, 6, 1, 3, 5, 7);
+    const __m256i a = _mm256_permutevar8x32_epi32(
+                      _mm256_inserti128_si256(_mm256_castsi128_si256(q[0]), q[1], 1), sep),
+                  b = _mm256_permutevar8x32_epi32(
+                      _mm256_inserti128_si256(_mm256_castsi128_si256(q[2]), q[3], 1), sep);
+    *t0 = _mm256_permute2x128_si256(a, b, 0x20);
+    *dt = _mm256_permute2x128_si256(a, b, 0x31);
+}
 
 /* Two 64-bit-lane halves (even, odd 32-bit lanes) back into 8 lanes: the
  * low 32 bits of each. */
@@ -90,11 +133,11 @@ static inline __m256i join(__m256i e, __m256i o)
 static inline __m256i recip48(__m256i d)
 {
     const __m256i j = _mm256_sub_epi32(_mm256_srli_epi32(d, 11), _mm256_set1_epi32(256));
-    const __m256i t0 = GATHER(rcp_tab, j), t1 = GATHER(rcp_tab + 1, j);
+    __m256i t0, dt;
+    rcp_pairs(j, &t0, &dt);
     const __m256i fr = _mm256_and_si256(d, _mm256_set1_epi32(2047));
     const __m256i r0 = _mm256_sub_epi32(
-        _mm256_sub_epi32(t0, _mm256_srli_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(t0, t1), fr), 11)),
-        _mm256_set1_epi32(900));
+        _mm256_sub_epi32(t0, _mm256_srli_epi32(_mm256_mullo_epi32(dt, fr), 11)), _mm256_set1_epi32(900));
     const __m256i e1 = _mm256_sub_epi32(_mm256_setzero_si256(), _mm256_mullo_epi32(d, r0));
     const __m256i r1 = _mm256_add_epi32(
         r0,
@@ -160,9 +203,9 @@ void cod_qdiv_avx2(const uint32_t *w, const uint64_t *num, uint32_t *q, int n)
     }
 }
 
-/* The Karis average of 8 pixels in lanes: box sums by gathers from the
- * 4-column sums (TL, TR at top columns 2x, 2x + 2; BL, BR at the bottom; C
- * at the centre's 2x + 1), all below 2^25 (else false: the C kernel). The
+/* The Karis average of 8 pixels in lanes: the box sums are the 4-column
+ * sums (TL, TR at top columns 2x, 2x + 2; BL, BR at the bottom; C at the
+ * centre's 2x + 1), de-interleaved by rgb6, all below 2^25 (else false: the C kernel). The
  * luma in 32-bit lanes: with R = 2^12 R_h + R_l, Y = 2^12 A + B_l (A = sum
  * of K R_h < 2^29, B_l = sum of K R_l < 2^28) and floor(Y / 2^20) =
  * (A + (B_l >> 12)) >> 8; so d < 3 2^20. Every lane through the divisions
@@ -173,19 +216,14 @@ void cod_qdiv_avx2(const uint32_t *w, const uint64_t *num, uint32_t *q, int n)
  * recip48((W >> 10) + 1). */
 static bool karis8(const uint32_t *pt, const uint32_t *pc, const uint32_t *pb, uint32_t *o, uint32_t *any)
 {
-    const __m256i i6 = SET8(0, 6, 12, 18, 24, 30, 36, 42);
     const __m256i kr = _mm256_set1_epi32(13933), kg = _mm256_set1_epi32(46871), kb = _mm256_set1_epi32(4732);
     const __m256i lo12 = _mm256_set1_epi32(4095), one = _mm256_set1_epi32((int)BLOOM_LIN_ONE);
     __m256i box[5][3], d[5], same = _mm256_set1_epi32(-1), bor = _mm256_setzero_si256();
-    BLOOM_UNROLL
-    for (int ch = 0; ch < 3; ch++) {
-        const __m256i t1 = GATHER(pt + 6 + ch, i6), b1 = GATHER(pb + 6 + ch, i6);
-        box[0][ch] = _mm256_add_epi32(GATHER(pt + ch, i6), t1);
-        box[1][ch] = _mm256_add_epi32(t1, GATHER(pt + 12 + ch, i6));
-        box[2][ch] = _mm256_add_epi32(GATHER(pb + ch, i6), b1);
-        box[3][ch] = _mm256_add_epi32(b1, GATHER(pb + 12 + ch, i6));
-        box[4][ch] = _mm256_add_epi32(GATHER(pc + 3 + ch, i6), GATHER(pc + 9 + ch, i6));
-    }
+    rgb6(pt, box[0]);
+    rgb6(pt + 6, box[1]);
+    rgb6(pb, box[2]);
+    rgb6(pb + 6, box[3]);
+    rgb6(pc + 3, box[4]);
     BLOOM_UNROLL
     for (int i = 0; i < 5; i++) {
         const __m256i x0 = box[i][0], x1 = box[i][1], x2 = box[i][2];
@@ -249,33 +287,33 @@ static bool karis8(const uint32_t *pt, const uint32_t *pc, const uint32_t *pb, u
 
 uint32_t cod_karis_avx2(uint32_t *vt, uint32_t *vc, uint32_t *vb, uint32_t *o, int w)
 {
-    /* 2-column sums at words 0 .. 6 w + 8 (reads to 6 w + 11 < 3 (2 w + 4)) */
-    const int m = 6 * w + 9;
+    /* 4-column sums at words 0 .. 6 w + 2 (reads to 6 w + 11 < 3 (2 w + 4)) */
+    const int m = 6 * w + 3;
     uint32_t any = 0;
     if (w < 8 || BLOOM_LIN_BITS != 20) /* the divisions' domains are for F = 20 */
         return cod_karis_c(vt, vc, vb, o, w);
-    pair3(vt, m);
-    pair3(vc, m);
-    pair3(vb, m);
+    quad3(vt, m);
+    quad3(vc, m);
+    quad3(vb, m);
     int x = 0;
     for (; x + 8 <= w; x += 8)
         if (!karis8(vt + 6 * x, vc + 6 * x, vb + 6 * x, o + 3 * x, &any))
             break;
     /* the rest (a box of 2^25 or more: HDR input; the last w % 8 pixels) by
-     * the C kernel on the 2-column sums, in columns 0, 2, 4 of its layout
-     * (zeros in 1, 3, 5): TL = p[0] + p[6], TR = p[6] + p[12], C = p[3] + p[9] */
+     * the C kernel on the 4-column sums, placed so that its sums of four
+     * words pick one: TL = q[0] at word 0, TR = q[6] at 12, C = q[3] at 3
+     * (zeros elsewhere) */
     for (; x < w; x++) {
         uint32_t t1[18], c1[18], b1[18];
         memset(t1, 0, sizeof t1);
         memset(c1, 0, sizeof c1);
         memset(b1, 0, sizeof b1);
         for (int ch = 0; ch < 3; ch++) {
-            for (int k = 0; k < 3; k++) {
-                t1[6 * k + ch] = vt[6 * x + 6 * k + ch];
-                b1[6 * k + ch] = vb[6 * x + 6 * k + ch];
-            }
+            t1[ch] = vt[6 * x + ch];
+            t1[12 + ch] = vt[6 * x + 6 + ch];
+            b1[ch] = vb[6 * x + ch];
+            b1[12 + ch] = vb[6 * x + 6 + ch];
             c1[3 + ch] = vc[6 * x + 3 + ch];
-            c1[9 + ch] = vc[6 * x + 9 + ch];
         }
         any |= cod_karis_c(t1, c1, b1, o + 3 * x, 1);
     }

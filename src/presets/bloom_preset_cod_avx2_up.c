@@ -153,9 +153,9 @@ void cod_mix_avx2(const uint32_t *const u[4], int odd, const uint32_t *d, uint32
     }
 }
 
-/* RGB888 sRGB decode by table gathers, encode by the fast encoder of
- * bloom_pixel.h (bloom_enc_fast: the bucket table gathered as bytes, the
- * next threshold as words); other formats and curves go to the C rows. */
+/* RGB888 sRGB decode by table loads (dec8x8), encode by the wide bucket
+ * table of bloom_pixel.h (bloom_fenc8w, scalar loads after a clamp to
+ * t[255] in lanes); other formats and curves go to the C rows. */
 void cod_dec_avx2(bloom_format_t fmt, bool linear, const uint8_t *src, uint32_t *dst, int n)
 {
 #if BLOOM_USE_RGB888
@@ -176,21 +176,14 @@ void cod_enc_avx2(bloom_format_t fmt, bool linear, const uint32_t *v, uint8_t *d
 {
 #if BLOOM_USE_RGB888 && BLOOM_LIN_BITS == 20
     if (fmt == BLOOM_FMT_RGB888 && !linear) {
-        const __m256i top = _mm256_set1_epi32((int)bloom_srgb_enc8[255]), lo8 = _mm256_set1_epi32(0xFF);
-        const __m256i pick = _mm256_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0,
-                                              4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+        const __m256i top = _mm256_set1_epi32((int)bloom_srgb_enc8[255]);
         const int m = 3 * n;
         int i = 0;
+        uint32_t x[8];
         for (; i + 8 <= m; i += 8) {
-            const __m256i x = _mm256_min_epu32(LD8(v + i), top);
-            const __m256i c =
-                _mm256_and_si256(_mm256_i32gather_epi32((const int *)(const void *)bloom_srgb_bkt8,
-                                                        _mm256_srli_epi32(x, 8), 1),
-                                 lo8);
-            const __m256i nx = GATHER(bloom_srgb_enc8 + 1, c);
-            const __m256i code = _mm256_sub_epi32(c, _mm256_cmpeq_epi32(_mm256_max_epu32(x, nx), x));
-            const __m256i b = PERM(_mm256_shuffle_epi8(code, pick), 0, 4, 0, 0, 0, 0, 0, 0);
-            _mm_storel_epi64((__m128i *)(void *)(dst + i), _mm256_castsi256_si128(b));
+            ST8(x, _mm256_min_epu32(LD8(v + i), top));
+            for (int k = 0; k < 8; k++)
+                dst[i + k] = (uint8_t)bloom_fenc8w(x[k]);
         }
         for (; i < m; i++)
             dst[i] = (uint8_t)BLOOM_FENC8(v[i]);
