@@ -70,8 +70,12 @@ enum {
     BLOOM_FLAG_BAKED = 1u << 6,       /* arm: no pyramid; out = S + S*map*strength
                                          with the aux plane as the map */
     BLOOM_FLAG_ADDITIVE = 1u << 7,    /* cod: additive levels instead of energy-conserving */
-    BLOOM_FLAG_NO_AVX2 = 1u << 8      /* x86-64: SSE2 row kernels even where the CPU has
+    BLOOM_FLAG_NO_AVX2 = 1u << 8,     /* x86-64: SSE2 row kernels even where the CPU has
                                          AVX2 (same bits; for tests and benchmarks) */
+    BLOOM_FLAG_KEEP_LEVELS = 1u << 9  /* cod: keep the levels the up pass reads in
+                                         delay lines instead of computing them again
+                                         (same bits; faster, more workspace:
+                                         sim/docs/presets/cod.md) */
 };
 
 typedef enum {
@@ -198,7 +202,8 @@ typedef enum {
     BLOOM_PARAM_SATURATE = 1u << 7,      /* BLOOM_FLAG_SATURATE */
     BLOOM_PARAM_ADDITIVE = 1u << 8,      /* BLOOM_FLAG_ADDITIVE */
     BLOOM_PARAM_BAKED = 1u << 9,         /* BLOOM_FLAG_BAKED */
-    BLOOM_PARAM_RADIUS = 1u << 10        /* the level count from bloom_levels_for_radius */
+    BLOOM_PARAM_RADIUS = 1u << 10,       /* the level count from bloom_levels_for_radius */
+    BLOOM_PARAM_KEEP_LEVELS = 1u << 11   /* BLOOM_FLAG_KEEP_LEVELS */
 } bloom_param_t;
 
 /* The BLOOM_PARAM_* bits preset p reads; 0 for the default and for an

@@ -83,8 +83,9 @@ static void preset_desc(const bloom_config_t *c, const sim_opts_t *o, char *buf,
         ADD(", weights");
         for (int k = 0; k < c->levels && k < BLOOM_MAX_LEVELS; k++)
             ADD("%s%.5g", k ? "," : " ", p->level_weight[k] / 65536.0);
-        ADD(", tint %.5g,%.5g,%.5g%s", p->tint[0] / 65536.0, p->tint[1] / 65536.0, p->tint[2] / 65536.0,
-            (c->flags & BLOOM_FLAG_ADDITIVE) ? ", additive" : "");
+        ADD(", tint %.5g,%.5g,%.5g%s%s", p->tint[0] / 65536.0, p->tint[1] / 65536.0, p->tint[2] / 65536.0,
+            (c->flags & BLOOM_FLAG_ADDITIVE) ? ", additive" : "",
+            (c->flags & BLOOM_FLAG_KEEP_LEVELS) ? ", levels kept" : "");
         break;
     default:
         break;

@@ -139,6 +139,22 @@ static int one(const char *name, int w, int h, int dark)
     return 0;
 }
 
+/* The rows measured: every preset at its defaults, then cod with its levels
+ * kept in delay lines (BLOOM_FLAG_KEEP_LEVELS: the same bytes, more
+ * workspace). */
+static const struct {
+    bloom_preset_t p;
+    uint32_t flags;
+    const char *name;
+} rows[] = {{BLOOM_PRESET_UNITY, 0, NULL},
+            {BLOOM_PRESET_GAMEDEV, 0, NULL},
+            {BLOOM_PRESET_XNA, 0, NULL},
+            {BLOOM_PRESET_ATTENUATION, 0, NULL},
+            {BLOOM_PRESET_ARM, 0, NULL},
+            {BLOOM_PRESET_COD, 0, NULL},
+            {BLOOM_PRESET_COD, BLOOM_FLAG_KEEP_LEVELS, "cod keep-levels"}};
+enum { NROWS = sizeof rows / sizeof rows[0] };
+
 /* One size and frame: every preset with and without SIMD and a cold memcpy,
  * interleaved in each of `runs` rounds; medians, ratios within the run. */
 static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
@@ -157,16 +173,17 @@ static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
             src[i] = (uint8_t)(src[i] * 60u / 255u);
     for (size_t i = 0; i < nring; i++)
         memcpy(ring + i * fb, src, fb);
-    enum { NE = 2 * BLOOM_PRESET_COUNT }; /* preset p: engine 2p with SIMD, 2p + 1 C only */
+    enum { NE = 2 * NROWS }; /* row p: engine 2p with SIMD, 2p + 1 C only */
     engine_t e[NE];
     int have[NE];
     double *t[NE + 1];
     for (int i = 0; i <= NE; i++)
         t[i] = calloc((size_t)runs, sizeof(double));
     for (int i = 0; i < NE; i++)
-        have[i] = bloom_preset_available((bloom_preset_t)(i / 2)) &&
-                  !engine_make(&e[i], (bloom_preset_t)(i / 2), w, h, i % 2 ? BLOOM_FLAG_NO_SIMD : 0u) &&
-                  !run(&e[i], src, dst, w); /* warm-up */
+        have[i] =
+            bloom_preset_available(rows[i / 2].p) &&
+            !engine_make(&e[i], rows[i / 2].p, w, h, rows[i / 2].flags | (i % 2 ? BLOOM_FLAG_NO_SIMD : 0u)) &&
+            !run(&e[i], src, dst, w); /* warm-up */
     size_t slot = 0;
     unsigned long long rng = 0x9E3779B97F4A7C15ull;
     for (int r = 0; r < runs; r++) {
@@ -205,12 +222,12 @@ static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
     char size[32];
     const char *frame = dark ? "dark" : "scene";
     snprintf(size, sizeof size, "%dx%d", w, h);
-    for (int p = 0; p < BLOOM_PRESET_COUNT; p++) {
+    for (int p = 0; p < NROWS; p++) {
         if (!have[2 * p] || !have[2 * p + 1])
             continue;
         const double m = med[2 * p], mcn = med[2 * p + 1];
-        const char *name = bloom_preset_name((bloom_preset_t)p);
-        printf("%-10s %-6s %-12s %10.3f %10.2f %10.1f %10.3f %8.2f %12zu\n", size, frame, name, m, m / def,
+        const char *name = rows[p].name ? rows[p].name : bloom_preset_name(rows[p].p);
+        printf("%-10s %-6s %-16s %10.3f %10.2f %10.1f %10.3f %8.2f %12zu\n", size, frame, name, m, m / def,
                m / mc, mcn, m / mcn, e[2 * p].ws_bytes);
         if (fc)
             fprintf(fc, "%s,%s,%s,%.4f,%.3f,%.2f,%.4f,%.3f,%zu\n", size, frame, name, m, m / def, m / mc, mcn,
@@ -222,7 +239,7 @@ static int measure(int w, int h, int dark, int runs, FILE *fm, FILE *fc)
     for (int i = 0; i < NE; i++)
         if (have[i])
             engine_drop(&e[i]);
-    printf("%-10s %-6s %-12s %10.3f %10.2f %10.1f\n", size, frame, "memcpy", mc, mc / def, 1.0);
+    printf("%-10s %-6s %-16s %10.3f %10.2f %10.1f\n", size, frame, "memcpy", mc, mc / def, 1.0);
     for (int i = 0; i <= NE; i++)
         free(t[i]);
     free(src);
@@ -283,7 +300,7 @@ int main(int argc, char **argv)
                 "| size | frame | preset | median ms | x default | x cold memcpy | C-only ms | SIMD / C-only "
                 "| workspace bytes |\n"
                 "|---|---|---|---:|---:|---:|---:|---:|---:|\n");
-    printf("%-10s %-6s %-12s %10s %10s %10s %10s %8s %12s\n", "size", "frame", "preset", "median ms",
+    printf("%-10s %-6s %-16s %10s %10s %10s %10s %8s %12s\n", "size", "frame", "preset", "median ms",
            "x default", "x memcpy", "C-only ms", "SIMD/C", "workspace");
     for (int s = 0; s < nsizes; s++)
         for (int dark = 0; dark < 2; dark++)

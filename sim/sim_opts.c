@@ -120,6 +120,7 @@ enum {
     SET_SATURATE = BLOOM_PARAM_SATURATE,
     SET_ADDITIVE = BLOOM_PARAM_ADDITIVE,
     SET_BAKED = BLOOM_PARAM_BAKED,
+    SET_KEEP_LEVELS = BLOOM_PARAM_KEEP_LEVELS,
     SET_AUX = BLOOM_PARAM_AUX,
     SET_LEVELS = 1u << 16,
     SET_THRESHOLD = 1u << 17,
@@ -148,6 +149,7 @@ static const struct {
     {SET_ADDITIVE, "--additive"},
     {SET_BAKED, "--baked"},
     {SET_RADIUS, "--radius"},
+    {SET_KEEP_LEVELS, "--keep-levels"},
 };
 
 const char *sim_presets_available(void)
@@ -385,6 +387,8 @@ static int config_for(const given_t *g, int w, int h, bloom_config_t *c, char *e
         c->flags |= BLOOM_FLAG_ADDITIVE;
     if (g->set & SET_BAKED)
         c->flags |= BLOOM_FLAG_BAKED;
+    if (g->set & SET_KEEP_LEVELS)
+        c->flags |= BLOOM_FLAG_KEEP_LEVELS;
     return 0;
 }
 
@@ -467,6 +471,8 @@ int sim_opts_parse(int argc, char **argv, sim_opts_t *o)
             g->set |= SET_ADDITIVE;
         } else if (!strcmp(a, "--baked")) {
             g->set |= SET_BAKED;
+        } else if (!strcmp(a, "--keep-levels")) {
+            g->set |= SET_KEEP_LEVELS;
         } else if (!strcmp(a, "--compare")) {
             o->compare = 1;
         } else if (!strcmp(a, "--bittrue")) {

@@ -81,6 +81,8 @@ static const char usage_presets[] =
     "  --weights c0,c1,...      cod: level weights c_k, each 0..1 (k = 0: the final\n"
     "                           composite); levels not given keep the preset's weights\n"
     "  --additive               cod: additive levels instead of energy-conserving\n"
+    "  --keep-levels            cod: keep its levels in delay lines instead of computing\n"
+    "                           them again (same output; faster, more workspace)\n"
     "  --baked                  arm: no pyramid, out = S + S*map*strength with --aux as map\n"
     "  --radius PX              cod: the level count whose glow reaches about PX output\n"
     "                           pixels at any frame size (instead of --levels)\n";

@@ -490,6 +490,56 @@ static void rows(void)
     frame_free(&src);
 }
 
+/* BLOOM_FLAG_KEEP_LEVELS: the up pass reads every level through its delay
+ * line instead of computing D_1 .. D_R again; the same bytes as without it
+ * at every level count, both composites, 8-bit and HDR formats, every kernel
+ * set, with more workspace from 2 levels on (the same at 1: nothing is
+ * recomputed there); the row interface on one of them. */
+static void keep_levels(void)
+{
+    static const int sizes[][2] = {{41, 29}, {97, 61}, {200, 130}, {333, 77}, {300, 300}};
+    static const uint32_t sets[3] = {0, BLOOM_FLAG_NO_AVX2, BLOOM_FLAG_NO_SIMD};
+    int same = 0, runs = 0, grew = 0, deeper = 0;
+    for (int L = 1; L <= 8; L++)
+        for (int si = 0; si < 5; si++) {
+            bloom_config_t c;
+            bloom_config_default(&c, sizes[si][0], sizes[si][1]);
+            set_params(&c, (L + si) % 2 ? P_NATURAL : P_OLD_SCHOOL, L);
+            if ((L + si) % 3 == 0)
+                c.in_fmt = c.out_fmt = BLOOM_FMT_RGBQ16;
+            c.flags |= sets[(L + 2 * si) % 3];
+            bloom_info_t a, b;
+            if (bloom_query(&c, &a) != BLOOM_OK) /* too many levels for the size */
+                continue;
+            frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(L * 13 + si));
+            frame_t ref = run_engine(&c, &src);
+            c.flags |= BLOOM_FLAG_KEEP_LEVELS;
+            CHECK(bloom_query(&c, &b) == BLOOM_OK);
+            frame_t out = run_engine(&c, &src);
+            same += frame_equal(&out, &ref);
+            runs++;
+            deeper += L >= 2;
+            grew += L >= 2 ? b.workspace_bytes > a.workspace_bytes : b.workspace_bytes == a.workspace_bytes;
+            frame_free(&out);
+            frame_free(&ref);
+            frame_free(&src);
+        }
+    CHECKF(runs >= 30 && same == runs, "keep levels: the same bytes as recomputing them (%d of %d)", same,
+           runs);
+    CHECKF(grew == runs, "keep levels: more workspace from 2 levels on, the same at 1 (%d of %d; %d deeper)",
+           grew, runs, deeper);
+    bloom_config_t c;
+    bloom_config_default(&c, 97, 61);
+    set_params(&c, P_NATURAL, 5);
+    c.flags |= BLOOM_FLAG_KEEP_LEVELS;
+    frame_t src = frame_random(&c, c.in_fmt, 77);
+    preset_check_rows(&c, &src, NULL, 0);
+    frame_free(&src);
+    bloom_config_default(&c, 64, 48); /* the default preset refuses it */
+    c.flags |= BLOOM_FLAG_KEEP_LEVELS;
+    CHECK(bloom_query(&c, NULL) == BLOOM_E_FLAGS);
+}
+
 /* Reach of L levels (cod.md): the RMS radius sqrt(sum r^2 b / sum b) of the
  * bloom term b (debug view, RGBQ16 out) of a point light (256.0) at the
  * centre of an n x n black frame, n = max(64, 8 * 2^L), Bevy's NATURAL
@@ -585,6 +635,7 @@ int main(void)
     timed("energy", energy);
     timed("weights_zero", weights_zero);
     timed("rows", rows);
+    timed("keep_levels", keep_levels);
     timed("reach", reach);
     timed("worst_case", worst_case);
 #else

@@ -113,9 +113,10 @@ static bloom_status_t query_with(bloom_preset_t p, uint32_t bit, bloom_status_t 
         *if_not = BLOOM_E_AUX;
         break;
     default: /* a preset flag: accepted (with an aux plane if the preset reads one) or refused */
-        c.flags |= bit == BLOOM_PARAM_SATURATE   ? (uint32_t)BLOOM_FLAG_SATURATE
-                   : bit == BLOOM_PARAM_ADDITIVE ? (uint32_t)BLOOM_FLAG_ADDITIVE
-                                                 : (uint32_t)BLOOM_FLAG_BAKED;
+        c.flags |= bit == BLOOM_PARAM_SATURATE      ? (uint32_t)BLOOM_FLAG_SATURATE
+                   : bit == BLOOM_PARAM_ADDITIVE    ? (uint32_t)BLOOM_FLAG_ADDITIVE
+                   : bit == BLOOM_PARAM_KEEP_LEVELS ? (uint32_t)BLOOM_FLAG_KEEP_LEVELS
+                                                    : (uint32_t)BLOOM_FLAG_BAKED;
         if (bloom_preset_params(p) & BLOOM_PARAM_AUX)
             c.aux_fmt = BLOOM_AUX_U8;
         *if_read = BLOOM_OK;
@@ -134,7 +135,7 @@ static void test_preset_params(void)
     static const uint32_t bits[] = {BLOOM_PARAM_STRENGTH,      BLOOM_PARAM_PASSES,   BLOOM_PARAM_ATTENUATION,
                                     BLOOM_PARAM_MAX_REDUCTION, BLOOM_PARAM_AUX,      BLOOM_PARAM_TINT,
                                     BLOOM_PARAM_WEIGHTS,       BLOOM_PARAM_SATURATE, BLOOM_PARAM_ADDITIVE,
-                                    BLOOM_PARAM_BAKED,         BLOOM_PARAM_RADIUS};
+                                    BLOOM_PARAM_BAKED,         BLOOM_PARAM_RADIUS,   BLOOM_PARAM_KEEP_LEVELS};
     const size_t nbits = sizeof bits / sizeof bits[0];
     uint32_t all = 0;
     for (size_t i = 0; i < nbits; i++) {

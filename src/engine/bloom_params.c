@@ -115,9 +115,10 @@ bloom_status_t bloom_validate(const bloom_config_t *c)
     if (c->out_fmt == BLOOM_FMT_RGBF32) /* an input format only */
         return BLOOM_E_FORMAT;
 #endif
-    if (c->flags & ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE |
-                               BLOOM_FLAG_NO_SKIP | BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 |
-                               BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
+    if (c->flags &
+        ~(uint32_t)(BLOOM_FLAG_LINEAR | BLOOM_FLAG_DEBUG_VIEW | BLOOM_FLAG_COPY_SOURCE | BLOOM_FLAG_NO_SKIP |
+                    BLOOM_FLAG_NO_SIMD | BLOOM_FLAG_NO_AVX2 | BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED |
+                    BLOOM_FLAG_ADDITIVE | BLOOM_FLAG_KEEP_LEVELS))
         return BLOOM_E_FLAGS;
     if ((c->tile_w | c->tile_h | c->tile_x | c->tile_y) != 0) {
         /* (compared by subtraction: no int overflow) */

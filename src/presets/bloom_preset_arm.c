@@ -506,7 +506,7 @@ static void defaults(bloom_config_t *cfg)
 
 static bloom_status_t validate(const bloom_config_t *cfg)
 {
-    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_ADDITIVE))
+    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_ADDITIVE | BLOOM_FLAG_KEEP_LEVELS))
         return BLOOM_E_FLAGS;
     if ((cfg->flags & BLOOM_FLAG_BAKED) && cfg->aux_fmt == BLOOM_AUX_NONE)
         return BLOOM_E_AUX; /* the baked map is the aux plane */

@@ -93,7 +93,7 @@ static bloom_status_t validate(const bloom_config_t *cfg)
         return BLOOM_E_AUX;
     if (cfg->p.attenuation > BLOOM_ONE || cfg->p.max_reduction > BLOOM_ONE)
         return BLOOM_E_ATTENUATION;
-    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
+    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE | BLOOM_FLAG_KEEP_LEVELS))
         return BLOOM_E_FLAGS;
     return BLOOM_OK;
 }

@@ -324,8 +324,11 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
      * D_1 from the source rows, which stay in memory for the composite
      * anyway, D_k from that second D_(k-1) -- instead of through delay lines
      * at the widest levels. R = 1 for L <= 3, 2 for L = 4 .. 6, 3 beyond:
-     * the smallest workspace at 320x240, 640x480 and 1920x1080 (cod.md). */
-    const int R = L <= 3 ? 1 : L <= 6 ? 2 : 3;
+     * the smallest workspace at 320x240, 640x480 and 1920x1080 (cod.md).
+     * BLOOM_FLAG_KEEP_LEVELS: R = 0, every level through its delay line
+     * (the same rows: a row function's output depends on its inputs only;
+     * no Karis level twice, more workspace). */
+    const int R = (g->cfg->flags & BLOOM_FLAG_KEEP_LEVELS) ? 0 : L <= 3 ? 1 : L <= 6 ? 2 : 3;
     int E[BLOOM_MAX_LEVELS + 1];
     for (int k = 1; k < L; k++) {
         E[k] = -1;

@@ -477,7 +477,7 @@ static bloom_status_t validate(const bloom_config_t *cfg)
 {
     if (cfg->aux_fmt != BLOOM_AUX_NONE)
         return BLOOM_E_AUX;
-    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
+    if (cfg->flags & (BLOOM_FLAG_SATURATE | BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE | BLOOM_FLAG_KEEP_LEVELS))
         return BLOOM_E_FLAGS;
     if (cfg->p.strength > GD_MAX_STRENGTH)
         return BLOOM_E_STRENGTH;

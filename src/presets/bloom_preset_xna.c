@@ -435,7 +435,7 @@ static bloom_status_t validate(const bloom_config_t *cfg)
         return BLOOM_E_THRESHOLD; /* 1 / (1 - T) */
     if (cfg->p.passes < 1 || cfg->p.passes > XNA_MAX_PASSES)
         return BLOOM_E_PASSES;
-    if (cfg->flags & (BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE))
+    if (cfg->flags & (BLOOM_FLAG_BAKED | BLOOM_FLAG_ADDITIVE | BLOOM_FLAG_KEEP_LEVELS))
         return BLOOM_E_FLAGS;
     return BLOOM_OK;
 }
