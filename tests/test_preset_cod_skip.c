@@ -43,7 +43,8 @@ static void set_params(bloom_config_t *c, int set, int levels)
  * half, all black, one hot pixel on black, in every parameter set (the knee
  * sets make rows at or below t - k dark), so the skipped nodes, the
  * zero-tent blends and the copied output rows all run: bit-exact with the
- * bit-true model, which takes no shortcut, and equal to BLOOM_FLAG_NO_SKIP. */
+ * bit-true model, which takes no shortcut, and equal to BLOOM_FLAG_NO_SKIP;
+ * half of them with BLOOM_FLAG_KEEP_LEVELS (the decoded source's zero rows). */
 static void skipping(void)
 {
     static const int sizes[][2] = {{33, 17}, {64, 48}, {100, 70}};
@@ -62,6 +63,8 @@ static void skipping(void)
                     set_params(&c, set, lv);
                     if (set == P_NATURAL && pat == 0) /* energy-conserving with a knee: scaled rows */
                         c.threshold = BLOOM_Q16(0.5), c.soft_knee = BLOOM_Q16(0.3);
+                    if ((s + pat + set + lv) % 2) /* half with the levels kept (and Dec at cut 0) */
+                        c.flags |= BLOOM_FLAG_KEEP_LEVELS;
                     frame_t src = frame_random(&c, c.in_fmt, (uint32_t)(s * 100 + pat * 10 + set + lv));
                     for (int y = 0; y < c.height; y++) {
                         uint8_t *row = src.p + (size_t)y * src.stride;

@@ -66,6 +66,29 @@ static void test_vsum6(const twin_t *t)
     CHECKF(bad == 0, "%s: %d vsum6 widths differ", t->name, bad);
 }
 
+/* The sums of six rows of decoded samples, at their largest (2^28) and
+ * random, every width, rows at unaligned offsets. */
+static void test_vsum6w(const twin_t *t)
+{
+    static uint32_t in[6][3 * MAXW + 16];
+    int bad = 0;
+    for (int w = 1; w <= MAXW; w++) {
+        const int n = 3 * w, off = w % 8;
+        const uint32_t *s[6];
+        for (int r = 0; r < 6; r++) {
+            fill(in[r] + off, n, w % 5 == 0 ? 1 : 0, BLOOM_LIN_MAX + 1u);
+            s[r] = in[r] + off;
+        }
+        memset(ta, 0xA5, sizeof ta);
+        memset(tb, 0xA5, sizeof tb);
+        cod_vsum6w_c(s, ta[0] + 1, ta[1] + 1, ta[2] + 1, n);
+        t->k.vsum6w(s, tb[0] + 1, tb[1] + 1, tb[2] + 1, n);
+        if (memcmp(ta, tb, sizeof ta) && bad++ < 5)
+            fprintf(stderr, "%s vsum6w w %d differs\n", t->name, w);
+    }
+    CHECKF(bad == 0, "%s: %d vsum6w widths differ", t->name, bad);
+}
+
 /* Padded column sums of four rows: each word <= 4 LIN_MAX (kind 1 at
  * 4 2^20: every box 2^24, the 8-bit worst case; lim 2^30: boxes past the
  * twin's 2^25, the C path). */
@@ -274,6 +297,7 @@ int main(void)
     }
     for (int k = 0; k < nt; k++) {
         test_vsum6(&twins[k]);
+        test_vsum6w(&twins[k]);
         test_karis(&twins[k]);
         test_down13(&twins[k]);
         test_blend(&twins[k], false);
@@ -294,8 +318,8 @@ int main(void)
 #if defined(BLOOM_SIMD_AVX2)
     cod_kernels(BLOOM_ISA_AVX2, &kc);
     CHECK(kc.karis == cod_karis_avx2 && kc.down13 == cod_down13_avx2 && kc.blend == cod_blend_avx2 &&
-          kc.mix == cod_mix_avx2 && kc.vsum6 == cod_vsum6_avx2 && kc.dec == cod_dec_avx2 &&
-          kc.enc == cod_enc_avx2);
+          kc.mix == cod_mix_avx2 && kc.vsum6 == cod_vsum6_avx2 && kc.vsum6w == cod_vsum6w_avx2 &&
+          kc.dec == cod_dec_avx2 && kc.enc == cod_enc_avx2);
 #endif
     return harness_finish();
 }

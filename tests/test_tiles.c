@@ -178,7 +178,7 @@ static void presets_formats(void)
                  * a column on, wider than they make: each twin meets that) */
                 static const uint32_t sets[3] = {0, BLOOM_FLAG_NO_AVX2, BLOOM_FLAG_NO_SIMD};
                 c.flags |= sets[(si + 2 * fi + (size_t)p) % 3];
-                if (p == BLOOM_PRESET_COD && fi >= 2) /* its levels in delay lines */
+                if (p == BLOOM_PRESET_COD && fi != 1) /* its levels in delay lines */
                     c.flags |= BLOOM_FLAG_KEEP_LEVELS;
                 tilings(&c, (uint32_t)(p * 101 + (int)si * 7 + (int)fi), &cases);
             }

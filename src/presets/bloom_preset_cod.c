@@ -142,6 +142,20 @@ static void vacc(uint32_t *restrict t, uint32_t *restrict c, uint32_t *restrict 
  * channel (each <= 16 M < 2^32), the Karis weights and average
  * (cod_karis_c), then the knee. RGB888 sRGB rows are decoded and summed in
  * one pass (cod_vsum6_c: no six decodes and six accumulations). */
+/* The Karis average and the knee of the column sums vt, vc, vb (padded). */
+static bool d1_end(const bg_ctx_t *ctx, const bg_node_t *n, const cod_kernels_t *k, int w0, uint32_t *vt,
+                   uint32_t *vc, uint32_t *vb, void *dst)
+{
+    cod_pad_edges(vt, w0);
+    cod_pad_edges(vc, w0);
+    cod_pad_edges(vb, w0);
+    uint32_t *o = (uint32_t *)dst;
+    const uint32_t any = k->karis(vt, vc, vb, o, n->w);
+    if (ctx->par.knee.t != 0) /* threshold 0: the knee is the identity */
+        return bloom_row_knee_c(o, n->w, &ctx->par.knee);
+    return any != 0;
+}
+
 static bool d1_karis(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                      void *dst)
 {
@@ -164,14 +178,44 @@ static bool d1_karis(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void 
                 k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, (const uint8_t *)in[0][j], dec, w0);
             vacc(vt + PAD, vc + PAD, vb + PAD, dec, j, nw);
         }
-    cod_pad_edges(vt, w0);
-    cod_pad_edges(vc, w0);
-    cod_pad_edges(vb, w0);
-    uint32_t *o = (uint32_t *)dst;
-    const uint32_t any = k.karis(vt, vc, vb, o, n->w);
-    if (ctx->par.knee.t != 0) /* threshold 0: the knee is the identity */
-        return bloom_row_knee_c(o, n->w, &ctx->par.knee);
-    return any != 0;
+    return d1_end(ctx, n, &k, w0, vt, vc, vb, dst);
+}
+
+/* BLOOM_FLAG_KEEP_LEVELS with dark cut 0: the source decoded once a row
+ * (node Dec, level 0, a short ring), instead of three times in every D_1
+ * row that reads it. A dark source row is black at cut 0, so its decoded
+ * row is zero: written so and tagged (D_1 skips on six of them, as it does
+ * on six dark source rows). At a cut above 0 a dark row is not zero: D_1
+ * then reads the source itself, so that it still skips the dark rows. */
+static bool dec_row(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                    void *dst)
+{
+    (void)r;
+    if (bg_in_zero(ctx, 0, 0, 0)) {
+        memset(dst, 0, (size_t)n->w * 3u * sizeof(uint32_t));
+        return false;
+    }
+    cod_kernels_t k;
+    cod_kernels(ctx->kern.isa, &k);
+    k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, (const uint8_t *)in[0][0], (uint32_t *)dst, n->w);
+    return true;
+}
+
+/* Level 1 from Dec's rows 2r-2 .. 2r+3: their column sums (each <= 4 2^28),
+ * then as d1_karis. */
+static bool d1_dec(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
+                   void *dst)
+{
+    (void)r;
+    const int w0 = bg_in_w(ctx, n, 0), nw = 3 * w0;
+    cod_kernels_t k;
+    cod_kernels(ctx->kern.isa, &k);
+    uint32_t *vt = bg_scratch(ctx, 1), *vc = bg_scratch(ctx, 2), *vb = bg_scratch(ctx, 3);
+    const uint32_t *const s[6] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
+                                  (const uint32_t *)in[0][2], (const uint32_t *)in[0][3],
+                                  (const uint32_t *)in[0][4], (const uint32_t *)in[0][5]};
+    k.vsum6w(s, vt + PAD, vc + PAD, vb + PAD, nw);
+    return d1_end(ctx, n, &k, w0, vt, vc, vb, dst);
 }
 
 /* Level k >= 2. Input 0: rows 2r-2 .. 2r+3 of level k-1 (cod_down13_c). */
@@ -312,8 +356,14 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
      * zeros through the Karis 13-tap and the knee; the 13-tap and the
      * blends of zero rows are zero. */
     par->dark_cut = bg_knee_cut(par);
-    D[1] = bg_node(g, d1_karis, g->w[1], g->h[1], 3, 1);
-    bg_input(g, D[1], BG_SRC, BG_DOWN, -2, 3);
+    const bool keep = (g->cfg->flags & BLOOM_FLAG_KEEP_LEVELS) != 0;
+    int S = BG_SRC;
+    if (keep && par->dark_cut == 0) { /* the source decoded once (dec_row) */
+        S = bg_node(g, dec_row, g->w[0], g->h[0], 3, 0);
+        bg_input(g, S, BG_SRC, BG_SAME, 0, 0);
+    }
+    D[1] = bg_node(g, S == BG_SRC ? d1_karis : d1_dec, g->w[1], g->h[1], 3, 1);
+    bg_input(g, D[1], S, BG_DOWN, -2, 3);
     bg_zero(g, D[1]);
     for (int k = 2; k <= L; k++) {
         D[k] = bg_node(g, d_13, g->w[k], g->h[k], 3, k);
@@ -328,7 +378,7 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
      * BLOOM_FLAG_KEEP_LEVELS: R = 0, every level through its delay line
      * (the same rows: a row function's output depends on its inputs only;
      * no Karis level twice, more workspace). */
-    const int R = (g->cfg->flags & BLOOM_FLAG_KEEP_LEVELS) ? 0 : L <= 3 ? 1 : L <= 6 ? 2 : 3;
+    const int R = keep ? 0 : L <= 3 ? 1 : L <= 6 ? 2 : 3;
     int E[BLOOM_MAX_LEVELS + 1];
     for (int k = 1; k < L; k++) {
         E[k] = -1;

@@ -14,6 +14,9 @@
 /* Six rows of 8-bit sRGB codes (n samples each, RGB888) decoded by
  * bloom_srgb_dec8 and summed: t = rows 0..3, c = rows 1..4, b = rows 2..5. */
 typedef void (*cod_vsum6_fn)(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
+/* The same sums of six rows of decoded samples (each <= 2^28, so every sum
+ * <= 2^30): BLOOM_FLAG_KEEP_LEVELS's level 1 from the decoded source. */
+typedef void (*cod_vsum6w_fn)(const uint32_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
 /* The Karis 13-tap of w level-1 pixels from the padded column sums vt, vc,
  * vb (top, centre, bottom; each word <= 2^32 - 1 and every 4-column sum too)
  * into o (3 w samples); returns the OR of o. May overwrite vt, vc, vb. */
@@ -37,6 +40,7 @@ typedef void (*cod_enc_fn)(bloom_format_t fmt, bool linear, const uint32_t *v, u
 
 typedef struct {
     cod_vsum6_fn vsum6;
+    cod_vsum6w_fn vsum6w;
     cod_karis_fn karis;
     cod_down13_fn down13;
     cod_blend_fn blend;
@@ -46,6 +50,7 @@ typedef struct {
 } cod_kernels_t;
 
 void cod_vsum6_c(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
+void cod_vsum6w_c(const uint32_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
 uint32_t cod_karis_c(uint32_t *vt, uint32_t *vc, uint32_t *vb, uint32_t *o, int w);
 uint32_t cod_down13_c(const uint32_t *const r[6], uint32_t *vo, uint32_t *vi, uint32_t *o, int w, int sw);
 void cod_blend_c(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,
@@ -54,6 +59,7 @@ void cod_mix_c(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t 
                const uint32_t f[3], uint32_t *scr);
 #if defined(BLOOM_SIMD_AVX2)
 void cod_vsum6_avx2(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
+void cod_vsum6w_avx2(const uint32_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n);
 uint32_t cod_karis_avx2(uint32_t *vt, uint32_t *vc, uint32_t *vb, uint32_t *o, int w);
 uint32_t cod_down13_avx2(const uint32_t *const r[6], uint32_t *vo, uint32_t *vi, uint32_t *o, int w, int sw);
 void cod_blend_avx2(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t *o, int w, int sw,

@@ -37,6 +37,22 @@ void cod_vsum6_avx2(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_
 }
 #endif
 
+void cod_vsum6w_avx2(const uint32_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n)
+{
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m256i v1 = LD8(s[1] + i), v4 = LD8(s[4] + i),
+                      mid = _mm256_add_epi32(LD8(s[2] + i), LD8(s[3] + i));
+        ST8(c + i, _mm256_add_epi32(mid, _mm256_add_epi32(v1, v4)));
+        ST8(t + i, _mm256_add_epi32(_mm256_add_epi32(LD8(s[0] + i), v1), mid));
+        ST8(b + i, _mm256_add_epi32(_mm256_add_epi32(LD8(s[5] + i), v4), mid));
+    }
+    if (i < n) {
+        const uint32_t *const r[6] = {s[0] + i, s[1] + i, s[2] + i, s[3] + i, s[4] + i, s[5] + i};
+        cod_vsum6w_c(r, t + i, c + i, b + i, n - i);
+    }
+}
+
 /* In place, p[j] = p[j] + p[j + 3] + p[j + 6] + p[j + 9] for j < m (reads
  * p[0 .. m + 8]): the 4-column sums of a padded row. */
 static void quad3(uint32_t *p, int m)

@@ -23,6 +23,16 @@ void cod_vsum6_c(const uint8_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *
     }
 }
 
+void cod_vsum6w_c(const uint32_t *const s[6], uint32_t *t, uint32_t *c, uint32_t *b, int n)
+{
+    for (int i = 0; i < n; i++) {
+        const uint32_t v1 = s[1][i], mid = s[2][i] + s[3][i], v4 = s[4][i];
+        t[i] = s[0][i] + v1 + mid;
+        c[i] = v1 + mid + v4;
+        b[i] = mid + v4 + s[5][i];
+    }
+}
+
 /* The five 4x4 box sums per channel, the Karis weights
  *   d_i = 2^F + floor(Y_i / 2^20), Y_i = 13933 R_i + 46871 G_i + 4732 B_i
  *   w_i = floor(2^(F+28) / d_i) (<= 2^28), g_i w_i with g = 1, 1, 1, 1, 4
@@ -160,12 +170,12 @@ void cod_mix_c(const uint32_t *const u[4], int odd, const uint32_t *d, uint32_t 
 
 void cod_kernels(bloom_isa_t isa, cod_kernels_t *k)
 {
-    *k = (cod_kernels_t){cod_vsum6_c, cod_karis_c,      cod_down13_c,    cod_blend_c,
-                         cod_mix_c,   bloom_decode_row, bloom_encode_row};
+    *k = (cod_kernels_t){cod_vsum6_c, cod_vsum6w_c, cod_karis_c,      cod_down13_c,
+                         cod_blend_c, cod_mix_c,    bloom_decode_row, bloom_encode_row};
 #if defined(BLOOM_SIMD_AVX2)
     if (isa == BLOOM_ISA_AVX2)
-        *k = (cod_kernels_t){cod_vsum6_avx2, cod_karis_avx2, cod_down13_avx2, cod_blend_avx2,
-                             cod_mix_avx2,   cod_dec_avx2,   cod_enc_avx2};
+        *k = (cod_kernels_t){cod_vsum6_avx2, cod_vsum6w_avx2, cod_karis_avx2, cod_down13_avx2,
+                             cod_blend_avx2, cod_mix_avx2,    cod_dec_avx2,   cod_enc_avx2};
 #endif
 #if defined(BLOOM_SIMD_NEON)
     if (isa == BLOOM_ISA_NEON) {
