@@ -168,19 +168,21 @@ static void test_tone(const gd_kern_t *k, const gd_kern_t *kc)
 #endif
 
 /* The byte table of the rows without bloom: random tables, every byte
- * offset, to a row of its own and in place. */
+ * offset, to a row of its own and in place; runs of codes below 64, below
+ * 128 and of any code (the twins' shortcuts for dark chunks). */
 static void test_lut(const gd_kern_t *k, const gd_kern_t *kc)
 {
-    uint32_t tab[256];
+    uint8_t tab[256];
     int bad = 0;
     for (int wi = 0; wi < NW; wi++) {
         const int n = 3 * width_at(wi), off = wi % 32;
         for (int i = 0; i < 256; i++)
-            tab[i] = wi & 1 ? (uint32_t)i : rng_next(&seed) & 255u;
+            tab[i] = (uint8_t)(wi & 1 ? (uint32_t)i : rng_next(&seed) & 255u);
         uint8_t *s = (uint8_t *)xmalloc((size_t)n + 32u), *d1 = (uint8_t *)xmalloc((size_t)n + 32u + GUARD);
         uint8_t *d2 = (uint8_t *)xmalloc((size_t)n + 32u + GUARD);
+        static const uint32_t masks[3] = {0x3F, 0x7F, 0xFF};
         for (int i = 0; i < n + 32; i++)
-            s[i] = (uint8_t)rng_next(&seed);
+            s[i] = (uint8_t)(rng_next(&seed) & masks[(i / 29 + wi) % 3]);
         memset(d1, 0x5A, (size_t)n + 32u + GUARD);
         memset(d2, 0x5A, (size_t)n + 32u + GUARD);
         kc->lut8(s + off, tab, d1 + (31 - off), n);

@@ -273,8 +273,10 @@ static uint32_t out_value(const bg_ctx_t *ctx, uint32_t S, int cls)
 
 /* The tables of channels R, G, B into tab[0..2], built in scratch row 1
  * when it has room; NULL tab[0] when not (RGBQ16 input, or a row too short:
- * the caller takes the general path). */
-static void zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
+ * the caller takes the general path). RGB888 to RGB888 also has the table
+ * as 256 bytes after its 256 words (the lut8 kernels' form, packed once a
+ * frame, not once a row), returned when the row has room, else NULL. */
+static const uint8_t *zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
 {
     const bloom_format_t in = ctx->par.out.in_fmt, of = ctx->par.out.out_fmt;
     const int ocls = of == BLOOM_FMT_RGBQ16 ? 16 : of == BLOOM_FMT_RGB565 ? 5 : 8;
@@ -284,12 +286,16 @@ static void zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
     uint32_t *t = bg_scratch(ctx, 1);
     tab[0] = NULL;
     if ((!in8 && in != BLOOM_FMT_RGB565) || size + 1u > ctx->par.scratch_len)
-        return;
+        return NULL;
+    uint8_t *bytes =
+        in == BLOOM_FMT_RGB888 && of == BLOOM_FMT_RGB888 && 256u + 64u + 1u <= ctx->par.scratch_len
+            ? (uint8_t *)(void *)(t + 256)
+            : NULL;
     const uint32_t *tg = in8 && gcls == ocls ? t : t + (in8 ? 256 : 32);
     tab[0] = tab[2] = t;
     tab[1] = tg;
     if (GD_ZT_AT(ctx) == GD_ZT_MARK)
-        return;
+        return bytes;
     uint32_t o[3];
     if (in8) {
         for (uint32_t c = 0; c < 256; c++) {
@@ -308,7 +314,11 @@ static void zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
             t[32 + c] = out_value(ctx, o[1], gcls);
         }
     }
+    if (bytes)
+        for (int c = 0; c < 256; c++)
+            bytes[c] = (uint8_t)t[c];
     GD_ZT_AT(ctx) = GD_ZT_MARK;
+    return bytes;
 }
 
 /* The output row from the tables: each pixel read whole before it is
@@ -317,13 +327,13 @@ static void zero_tables(const bg_ctx_t *ctx, const uint32_t *tab[3])
 static bool zero_row(const bg_ctx_t *ctx, const uint8_t *s, uint8_t *d, int w)
 {
     const uint32_t *tab[3];
-    zero_tables(ctx, tab);
+    const uint8_t *bytes = zero_tables(ctx, tab);
     if (!tab[0])
         return false;
     const bloom_format_t in = ctx->par.out.in_fmt, of = ctx->par.out.out_fmt;
     const uint32_t *t0 = tab[0], *t1 = tab[1], *t2 = tab[2];
-    if (in == BLOOM_FMT_RGB888 && of == BLOOM_FMT_RGB888) {
-        gd_kern_for(ctx->kern.isa)->lut8(s, t0, d, 3 * w);
+    if (bytes) { /* RGB888 to RGB888 */
+        gd_kern_for(ctx->kern.isa)->lut8(s, bytes, d, 3 * w);
         return true;
     }
     const int ib = bloom_format_bpp(in), ob = bloom_format_bpp(of);

@@ -67,14 +67,11 @@ static inline __m256i gauss8(__m256i c, __m256i p1, __m256i p2, __m256i p3, __m2
 #define GD_FN(f) f##_avx2
 #include "bloom_preset_gamedev_simd.h"
 
-void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
+void gd_lut8_avx2(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n)
 {
-    uint8_t b[256];
-    if (!gd_lut_bytes(s, tab, d, n, b))
-        return;
     __m256i row[16]; /* row h: codes 16 h .. 16 h + 15, in both lanes */
     for (int h = 0; h < 16; h++)
-        row[h] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(b + 16 * h)));
+        row[h] = _mm256_broadcastsi128_si256(_mm_loadu_si128((const __m128i *)(const void *)(tab + 16 * h)));
     const __m256i low = _mm256_set1_epi8(0x0F);
     int i = 0;
     for (; i + 32 <= n; i += 32) {
@@ -84,12 +81,20 @@ void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
          * only) */
         const __m256i k0 = _mm256_slli_epi16(x, 3), k1 = _mm256_slli_epi16(x, 2),
                       k2 = _mm256_slli_epi16(x, 1);
-        /* depth first, so that few values are live at once */
+        /* depth first, so that few values are live at once; a chunk whose
+         * codes are all below 64 (or 128) needs only the first 4 (8) rows
+         * of the table: dark frames and dark parts of a frame take 4
+         * shuffles and 3 blends for 32 codes instead of 16 and 15 */
 #define LUT_PAIR(h)                                                                                          \
     _mm256_blendv_epi8(_mm256_shuffle_epi8(row[h], lo), _mm256_shuffle_epi8(row[(h) + 1], lo), k0)
 #define LUT_QUAD(h) _mm256_blendv_epi8(LUT_PAIR(h), LUT_PAIR((h) + 2), k1)
 #define LUT_OCT(h) _mm256_blendv_epi8(LUT_QUAD(h), LUT_QUAD((h) + 4), k2)
-        ST8(d + i, _mm256_blendv_epi8(LUT_OCT(0), LUT_OCT(8), x));
+        if (_mm256_testz_si256(x, _mm256_set1_epi8((char)0xC0)))
+            ST8(d + i, LUT_QUAD(0));
+        else if (_mm256_testz_si256(x, _mm256_set1_epi8((char)0x80)))
+            ST8(d + i, LUT_OCT(0));
+        else
+            ST8(d + i, _mm256_blendv_epi8(LUT_OCT(0), LUT_OCT(8), x));
 #undef LUT_PAIR
 #undef LUT_QUAD
 #undef LUT_OCT

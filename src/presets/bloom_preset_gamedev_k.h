@@ -40,9 +40,9 @@ typedef void (*gd_gauss_h_fn)(const uint32_t *v, uint32_t *dst, int i0, int i1);
 typedef void (*gd_tone8_fn)(const uint32_t *bl, const uint32_t *sv, const uint8_t *sc, const uint32_t *dec,
                             uint8_t *out, int n, uint32_t s, const uint32_t *t, const uint8_t *bk);
 
-/* A byte row through a table: d[i] = tab[s[i]] for i < n (every entry
- * below 256; the rows without bloom, RGB888 to RGB888). d may equal s. */
-typedef void (*gd_lut8_fn)(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
+/* A byte row through a table of 256 bytes: d[i] = tab[s[i]] for i < n (the
+ * rows without bloom, RGB888 to RGB888). d may equal s. */
+typedef void (*gd_lut8_fn)(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n);
 
 /* The dark-block test of level 1: b[i] = max(s[0][i], .., s[3][i]) - c,
  * saturated at 0, for the n bytes of four source rows (8-bit formats): a
@@ -63,10 +63,7 @@ const gd_kern_t *gd_kern_for(bloom_isa_t isa);
 
 void gd_gauss_v_c(const uint32_t *const a[9], uint32_t *dst, int m);
 void gd_gauss_h_c(const uint32_t *v, uint32_t *dst, int i0, int i1);
-void gd_lut8_c(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
-/* The twins' start: a row under 256 bytes through gd_lut8_c (false), else
- * the table packed as bytes into b (true). */
-bool gd_lut_bytes(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n, uint8_t b[256]);
+void gd_lut8_c(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n);
 void gd_bright_c(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 /* A whole row of w pixels: the edge pixels (columns clamped) in C, the
  * interior by k->gauss_h. */
@@ -119,7 +116,7 @@ void gd_gauss_h_sse2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 #if defined(BLOOM_SIMD_AVX2)
 void gd_bright_avx2(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 void gd_gauss_v_avx2(const uint32_t *const a[9], uint32_t *dst, int m);
-void gd_lut8_avx2(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
+void gd_lut8_avx2(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n);
 void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 #endif
 #endif
@@ -127,7 +124,7 @@ void gd_gauss_h_avx2(const uint32_t *v, uint32_t *dst, int i0, int i1);
 void gd_bright_neon(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c);
 void gd_gauss_v_neon(const uint32_t *const a[9], uint32_t *dst, int m);
 void gd_gauss_h_neon(const uint32_t *v, uint32_t *dst, int i0, int i1);
-void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n);
+void gd_lut8_neon(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n);
 #endif
 
 #endif

@@ -60,21 +60,10 @@ void gd_bright_c(const uint8_t *const s[4], uint8_t *b, int n, uint32_t c)
     }
 }
 
-void gd_lut8_c(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
+void gd_lut8_c(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n)
 {
     for (int i = 0; i < n; i++)
-        d[i] = (uint8_t)tab[s[i]];
-}
-
-bool gd_lut_bytes(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n, uint8_t b[256])
-{
-    if (n < 256) { /* packing the table costs more than the row */
-        gd_lut8_c(s, tab, d, n);
-        return false;
-    }
-    for (int c = 0; c < 256; c++)
-        b[c] = (uint8_t)tab[c];
-    return true;
+        d[i] = tab[s[i]];
 }
 
 /* Horizontal pass of a row of w pixels: v (3 samples per pixel) -> dst. */

@@ -46,13 +46,10 @@ static inline uint32x4_t gauss4(uint32x4_t c, uint32x4_t p1, uint32x4_t p2, uint
 #define GD_FN(f) f##_neon
 #include "bloom_preset_gamedev_simd.h"
 
-void gd_lut8_neon(const uint8_t *s, const uint32_t *tab, uint8_t *d, int n)
+void gd_lut8_neon(const uint8_t *s, const uint8_t *tab, uint8_t *d, int n)
 {
-    uint8_t b[256];
-    if (!gd_lut_bytes(s, tab, d, n, b))
-        return;
-    const uint8x16x4_t q0 = vld1q_u8_x4(b), q1 = vld1q_u8_x4(b + 64), q2 = vld1q_u8_x4(b + 128),
-                       q3 = vld1q_u8_x4(b + 192);
+    const uint8x16x4_t q0 = vld1q_u8_x4(tab), q1 = vld1q_u8_x4(tab + 64), q2 = vld1q_u8_x4(tab + 128),
+                       q3 = vld1q_u8_x4(tab + 192);
     int i = 0;
     for (; i + 16 <= n; i += 16) {
         /* TBL gives 0 and TBX keeps the lane for an index past 63: code
