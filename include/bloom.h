@@ -266,7 +266,10 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
                               ptrdiff_t dst_stride);
 
 /* Whole frame (with a tile: the tile of the frame): bloom_begin +
- * bloom_run_rows(all source rows) + drain. */
+ * bloom_run_rows(all source rows) + drain. The destination is defined when
+ * it returns: out of place, a dark source row may be copied to its
+ * destination row when it is read and written again at its turn if it gets
+ * bloom (bloom_run_rows writes no row before its turn). */
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
                              ptrdiff_t dst_stride);
 

@@ -153,8 +153,35 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 #endif
 }
 
-bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
-                              ptrdiff_t dst_stride)
+#if !BLOOM_SMALL && BLOOM_USE_SKIP
+/* The frame call's dark rows (bloom_process): a source row tagged dark is
+ * copied to its destination row as soon as it is pushed, while it is in the
+ * cache from the dark test, when the preset's output of such a row with no
+ * bloom is that copy (par.dark_copy) and the copy is the bytes themselves
+ * (bloom_row_copy_c's memcpy case: one format, RGB888 or RGB565, no debug
+ * view), out of place and untiled. At the row's turn the output node's copy
+ * then has nothing to do (par.out.dst_copied); a row that does get bloom is
+ * written over as before. A dark frame thus costs one read of each row and
+ * one copy, not two reads: the destination rows of a frame call are only
+ * defined when it returns (sim/docs/streaming.md). The band and row calls
+ * never write a row before its turn. */
+static bool dark_copies(const bloom_t *b, const uint8_t *s, const uint8_t *d)
+{
+    const bloom_out_t *o = &b->row.par.out;
+    return b->row.dark_src && b->row.par.dark_copy && s != d && !bg_tiled(&b->row) && !o->debug &&
+           o->in_fmt == o->out_fmt && (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565);
+}
+
+/* Whether source row r (still in the ring) is tagged dark. */
+static bool src_dark(const bloom_t *b, int r)
+{
+    const int32_t t = b->src_tag[r % b->src_cap];
+    return (t & ~BLOOM_TAG_ZERO) == r && (t & BLOOM_TAG_ZERO);
+}
+#endif
+
+static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
+                               ptrdiff_t dst_stride, bool frame)
 {
     if (!b || !src || !dst)
         return BLOOM_E_NULL;
@@ -173,12 +200,24 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         if (!aux)
             return BLOOM_E_AUX;
     }
+#if !BLOOM_SMALL && BLOOM_USE_SKIP
+    const bool copies = frame && dark_copies(b, s, d);
+    const size_t row_bytes = b->src_row_bytes;
+#else
+    (void)frame;
+#endif
     for (;;) {
         bloom_status_t st;
-        do
+        do {
+#if !BLOOM_SMALL && BLOOM_USE_SKIP
+            b->row.par.out.dst_copied = copies && src_dark(b, bloom_rows_out(b));
+#endif
             st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
                                              dst_stride); /* span checked above */
-        while (st == BLOOM_OK);
+        } while (st == BLOOM_OK);
+#if !BLOOM_SMALL && BLOOM_USE_SKIP
+        b->row.par.out.dst_copied = false;
+#endif
         if (st < 0)
             return st;
         const int r = bloom_rows_in(b);
@@ -188,7 +227,17 @@ bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride,
         st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
+#if !BLOOM_SMALL && BLOOM_USE_SKIP
+        if (copies && src_dark(b, r)) /* untiled: output row r is frame row r */
+            memcpy(d + fr * dst_stride, s + fr * src_stride, row_bytes);
+#endif
     }
+}
+
+bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
+                              ptrdiff_t dst_stride)
+{
+    return run_rows(b, src, src_stride, nrows, dst, dst_stride, false);
 }
 
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
@@ -196,7 +245,7 @@ bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, 
 {
     bloom_status_t st = bloom_begin(b);
     if (st == BLOOM_OK)
-        st = bloom_run_rows(b, src, src_stride, rows_total(b), dst, dst_stride);
+        st = run_rows(b, src, src_stride, rows_total(b), dst, dst_stride, true);
     if (st == BLOOM_OK && bloom_rows_out(b) != out_total(b))
         st = BLOOM_E_INTERNAL;
     return st;

@@ -163,6 +163,10 @@ typedef struct {
                            output node does) */
     uint8_t s16;        /* 16-bit samples (cfg.sample_bits): F - G, the shift from
                            the internal format to the rings' Q(16-G).G; 0: 32-bit */
+    bool dark_copy;     /* an output row over a dark source row with zero bloom is
+                           the source row (bloom_row_copy_c): bloom_process may copy
+                           a dark row to its destination when it reads it (in the
+                           padding) */
 } bg_params_t;
 #define BG_NO_CUT 0xFFFFFFFFu
 
