@@ -160,7 +160,7 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
  * bloom is that copy (par.dark_copy) and the copy is the bytes themselves
  * (bloom_row_copy_c's memcpy case: one format, RGB888 or RGB565, no debug
  * view), out of place and untiled. At the row's turn the output node's copy
- * then has nothing to do (par.out.dst_copied); a row that does get bloom is
+ * then has nothing to do (par.dst_copied, bg_copy_row); a row that does get bloom is
  * written over as before. A dark frame thus costs one read of each row and
  * one copy, not two reads: the destination rows of a frame call are only
  * defined when it returns (sim/docs/streaming.md). The band and row calls
@@ -210,13 +210,13 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         bloom_status_t st;
         do {
 #if !BLOOM_SMALL && BLOOM_USE_SKIP
-            b->row.par.out.dst_copied = copies && src_dark(b, bloom_rows_out(b));
+            b->row.par.dst_copied = copies && src_dark(b, bloom_rows_out(b));
 #endif
             st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
                                              dst_stride); /* span checked above */
         } while (st == BLOOM_OK);
 #if !BLOOM_SMALL && BLOOM_USE_SKIP
-        b->row.par.out.dst_copied = false;
+        b->row.par.dst_copied = false;
 #endif
         if (st < 0)
             return st;

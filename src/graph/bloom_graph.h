@@ -165,8 +165,11 @@ typedef struct {
                            the internal format to the rings' Q(16-G).G; 0: 32-bit */
     bool dark_copy;     /* an output row over a dark source row with zero bloom is
                            the source row (bloom_row_copy_c): bloom_process may copy
-                           a dark row to its destination when it reads it (in the
-                           padding) */
+                           a dark row to its destination when it reads it */
+    bool dst_copied;    /* this output row already holds its source row's bytes
+                           (bloom_process copied the dark row when it read it):
+                           bg_copy_row has nothing to do. Both bools sit in the
+                           struct's tail padding (no workspace byte on any target) */
 } bg_params_t;
 #define BG_NO_CUT 0xFFFFFFFFu
 
@@ -251,6 +254,14 @@ static inline uint32_t bg_knee_cut(const bg_params_t *p)
 static inline uint32_t *bg_scratch(const bg_ctx_t *ctx, int i)
 {
     return ctx->scratch + (size_t)i * ctx->par.scratch_len;
+}
+/* An output row with zero bloom: the source row copied to dst (decoded and
+ * encoded again where that is not the identity), unless bloom_process has
+ * already copied it there (par.dst_copied: a dark row, bloom_frame.c). */
+static inline void bg_copy_row(const bg_ctx_t *ctx, const uint8_t *src, uint8_t *dst, int w)
+{
+    if (!ctx->par.dst_copied)
+        bloom_row_copy_c(src, dst, w, &ctx->par.out);
 }
 /* Whether rows lo .. hi (indices into in[i]) of input i are all zero
  * (never in a build without BLOOM_USE_SKIP: the shortcuts compile out). */

@@ -42,9 +42,6 @@ typedef struct {
 typedef struct {
     bloom_format_t in_fmt, out_fmt;
     bool linear, debug;
-    bool dst_copied;    /* this output row already holds its source row's bytes
-                           (bloom_process copied the dark row when it read it):
-                           bloom_row_copy_c has nothing to do (in the padding) */
     uint32_t intensity; /* I_q, Q16.16 */
 } bloom_out_t;
 

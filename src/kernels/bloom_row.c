@@ -439,7 +439,7 @@ void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t
     /* decode then encode gives the code back for these (tests/test_fixed.c) */
     if (!o->debug && o->in_fmt == o->out_fmt &&
         (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565)) {
-        if (src != dst && !o->dst_copied)
+        if (src != dst)
             memcpy(dst, src, (size_t)w * ibpp); /* in place is src == dst: rows never half-overlap */
         return;
     }

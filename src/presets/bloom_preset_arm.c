@@ -391,7 +391,7 @@ static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
     uint8_t *out = (uint8_t *)dst;
     const bool skip = ctx->skip;
     if (skip && bg_in_zero(ctx, 1, 0, 2)) { /* B = 0: the source row (debug view: zeros) */
-        bloom_row_copy_c(src, out, w, &ctx->par.out);
+        bg_copy_row(ctx, src, out, w);
         return true;
     }
     const bloom_arm_kern_t *K = bloom_arm_kern(ctx->kern.isa);

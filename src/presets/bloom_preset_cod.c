@@ -289,7 +289,7 @@ static bool out_cod(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
          * in the debug view); also where the source row is dark with cut 0
          * (S = 0, so v = 0 = S) */
         if (a == 0u || a == 1u << 24 || (ctx->par.dark_cut == 0u && bg_in_zero(ctx, 0, 0, 0))) {
-            bloom_row_copy_c(src, (uint8_t *)dst, w, &ctx->par.out);
+            bg_copy_row(ctx, src, (uint8_t *)dst, w);
             return true;
         }
         k.dec(ctx->par.out.in_fmt, ctx->par.out.linear, src, s, w);

@@ -391,7 +391,7 @@ static bool fn_out(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
     const size_t ibpp = (size_t)bloom_format_bpp(o->in_fmt), obpp = (size_t)bloom_format_bpp(o->out_fmt);
     const int w = n->w, sw = bg_in_w(ctx, n, 1);
     if (bg_in_zero(ctx, 1, 0, 2)) {
-        bloom_row_copy_c(src, out, w, o);
+        bg_copy_row(ctx, src, out, w);
         return true;
     }
 #if !BLOOM_SMALL

@@ -67,7 +67,7 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
-        bloom_row_copy_c(src, (uint8_t *)dst, n->w, &ctx->par.out);
+        bg_copy_row(ctx, src, (uint8_t *)dst, n->w);
     else if (!BLOOM_SMALL && ctx->kern.htent_eo) /* the flat kernels: every set but BLOOM_SMALL's */
         bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     else
@@ -141,7 +141,7 @@ static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
     const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
-        bloom_row_copy_c(src, (uint8_t *)dst, n->w, &ctx->par.out);
+        bg_copy_row(ctx, src, (uint8_t *)dst, n->w);
     else
         bloom_row_out16_k(&ctx->kern, u, ctx->par.s16, r & 1, src, (uint8_t *)dst, n->w,
                           bg_node_in_w(ctx, n, 0), &ctx->par.out);
