@@ -46,47 +46,40 @@ typedef struct {
 static uint8_t b6[6][3 * MAXW + 64];
 static uint32_t ta[3][WORDS], tb[3][WORDS], oa[WORDS], ob[WORDS];
 
-static void test_vsum6(const twin_t *t)
-{
-    int bad = 0;
-    for (int w = 1; w <= MAXW; w++) {
-        const int n = 3 * w, off = w % 8;
-        for (int r = 0; r < 6; r++)
-            for (int j = 0; j < n; j++)
-                b6[r][off + j] = (uint8_t)(w % 5 == 0 ? 255u : rnd32());
-        const uint8_t *const s[6] = {b6[0] + off, b6[1] + off, b6[2] + off,
-                                     b6[3] + off, b6[4] + off, b6[5] + off};
-        memset(ta, 0xA5, sizeof ta);
-        memset(tb, 0xA5, sizeof tb);
-        cod_vsum6_c(s, ta[0] + 1, ta[1] + 1, ta[2] + 1, n);
-        t->k.vsum6(s, tb[0] + 1, tb[1] + 1, tb[2] + 1, n);
-        if (memcmp(ta, tb, sizeof ta) && bad++ < 5)
-            fprintf(stderr, "%s vsum6 w %d differs\n", t->name, w);
-    }
-    CHECKF(bad == 0, "%s: %d vsum6 widths differ", t->name, bad);
-}
-
-/* The sums of six rows of decoded samples, at their largest (2^28) and
- * random, every width, rows at unaligned offsets. */
-static void test_vsum6w(const twin_t *t)
+/* The sums of six rows, every width, rows at unaligned offsets: source
+ * bytes (vsum6: all 255 or random) or decoded samples (vsum6w: at their
+ * largest, 2^28, or random). */
+static void test_vsum(const twin_t *t, bool wide)
 {
     static uint32_t in[6][3 * MAXW + 16];
+    const char *what = wide ? "vsum6w" : "vsum6";
     int bad = 0;
     for (int w = 1; w <= MAXW; w++) {
-        const int n = 3 * w, off = w % 8;
-        const uint32_t *s[6];
+        const int n = 3 * w, off = w % 8, top = w % 5 == 0;
+        const uint8_t *s8[6];
+        const uint32_t *s32[6];
         for (int r = 0; r < 6; r++) {
-            fill(in[r] + off, n, w % 5 == 0 ? 1 : 0, BLOOM_LIN_MAX + 1u);
-            s[r] = in[r] + off;
+            if (wide)
+                fill(in[r] + off, n, top, BLOOM_LIN_MAX + 1u);
+            else
+                for (int j = 0; j < n; j++)
+                    b6[r][off + j] = (uint8_t)(top ? 255u : rnd32());
+            s8[r] = b6[r] + off;
+            s32[r] = in[r] + off;
         }
         memset(ta, 0xA5, sizeof ta);
         memset(tb, 0xA5, sizeof tb);
-        cod_vsum6w_c(s, ta[0] + 1, ta[1] + 1, ta[2] + 1, n);
-        t->k.vsum6w(s, tb[0] + 1, tb[1] + 1, tb[2] + 1, n);
+        if (wide) {
+            cod_vsum6w_c(s32, ta[0] + 1, ta[1] + 1, ta[2] + 1, n);
+            t->k.vsum6w(s32, tb[0] + 1, tb[1] + 1, tb[2] + 1, n);
+        } else {
+            cod_vsum6_c(s8, ta[0] + 1, ta[1] + 1, ta[2] + 1, n);
+            t->k.vsum6(s8, tb[0] + 1, tb[1] + 1, tb[2] + 1, n);
+        }
         if (memcmp(ta, tb, sizeof ta) && bad++ < 5)
-            fprintf(stderr, "%s vsum6w w %d differs\n", t->name, w);
+            fprintf(stderr, "%s %s w %d differs\n", t->name, what, w);
     }
-    CHECKF(bad == 0, "%s: %d vsum6w widths differ", t->name, bad);
+    CHECKF(bad == 0, "%s: %d %s widths differ", t->name, bad, what);
 }
 
 /* Padded column sums of four rows: each word <= 4 LIN_MAX (kind 1 at
@@ -296,8 +289,8 @@ int main(void)
         cod_kernels(BLOOM_ISA_C, &twins[nt++].k);
     }
     for (int k = 0; k < nt; k++) {
-        test_vsum6(&twins[k]);
-        test_vsum6w(&twins[k]);
+        test_vsum(&twins[k], false);
+        test_vsum(&twins[k], true);
         test_karis(&twins[k]);
         test_down13(&twins[k]);
         test_blend(&twins[k], false);

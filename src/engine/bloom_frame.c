@@ -153,35 +153,40 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 #endif
 }
 
-#if !BLOOM_SMALL && BLOOM_USE_SKIP
+#if BG_DARK_COPY
 /* The frame call's dark rows (bloom_process): a source row tagged dark is
  * copied to its destination row as soon as it is pushed, while it is in the
  * cache from the dark test, when the preset's output of such a row with no
  * bloom is that copy (par.dark_copy) and the copy is the bytes themselves
- * (bloom_row_copy_c's memcpy case: one format, RGB888 or RGB565, no debug
- * view), out of place and untiled. At the row's turn the output node's copy
- * then has nothing to do (par.dst_copied, bg_copy_row); a row that does get bloom is
- * written over as before. A dark frame thus costs one read of each row and
- * one copy, not two reads: the destination rows of a frame call are only
- * defined when it returns (sim/docs/streaming.md). The band and row calls
- * never write a row before its turn. */
+ * (bloom_copy_is_bytes), out of place and untiled. At the row's turn the
+ * output node's copy then has nothing to do (par.dst_copied, bg_copy_row); a
+ * row that does get bloom is written over as before. A dark frame thus
+ * costs one read of each row and one copy, not two reads: the destination
+ * rows of a frame call are only defined when it returns
+ * (sim/docs/streaming.md). The band and row calls never write a row before
+ * its turn. */
 static bool dark_copies(const bloom_t *b, const uint8_t *s, const uint8_t *d)
 {
-    const bloom_out_t *o = &b->row.par.out;
-    return b->row.dark_src && b->row.par.dark_copy && s != d && !bg_tiled(&b->row) && !o->debug &&
-           o->in_fmt == o->out_fmt && (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565);
+    return b->row.dark_src && b->row.par.dark_copy && s != d && !bg_tiled(&b->row) &&
+           bloom_copy_is_bytes(&b->row.par.out);
 }
 
-/* Whether source row r (still in the ring) is tagged dark. */
-static bool src_dark(const bloom_t *b, int r)
+/* Whether source row r, at ring slot `slot`, is still there and tagged dark. */
+static bool slot_dark(const bloom_t *b, int slot, int r)
 {
-    const int32_t t = b->src_tag[r % b->src_cap];
-    return (t & ~BLOOM_TAG_ZERO) == r && (t & BLOOM_TAG_ZERO);
+    return b->src_tag[slot] == (r | BLOOM_TAG_ZERO);
 }
+/* Only the frame call copies dark rows early: the argument is compiled out
+ * with that code. */
+#define FRAME_PARAM , bool frame
+#define FRAME_ARG(f) , f
+#else
+#define FRAME_PARAM
+#define FRAME_ARG(f)
 #endif
 
 static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
-                               ptrdiff_t dst_stride, bool frame)
+                               ptrdiff_t dst_stride FRAME_PARAM)
 {
     if (!b || !src || !dst)
         return BLOOM_E_NULL;
@@ -200,22 +205,27 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (!aux)
             return BLOOM_E_AUX;
     }
-#if !BLOOM_SMALL && BLOOM_USE_SKIP
+#if BG_DARK_COPY
     const bool copies = frame && dark_copies(b, s, d);
     const size_t row_bytes = b->src_row_bytes;
-#else
-    (void)frame;
+    /* the ring slot of source row bloom_rows_out(b): untiled, the output
+     * row of that number is made from it */
+    int oslot = copies ? bloom_rows_out(b) % b->src_cap : 0;
 #endif
     for (;;) {
         bloom_status_t st;
         do {
-#if !BLOOM_SMALL && BLOOM_USE_SKIP
-            b->row.par.dst_copied = copies && src_dark(b, bloom_rows_out(b));
+#if BG_DARK_COPY
+            b->row.par.dst_copied = copies && slot_dark(b, oslot, bloom_rows_out(b));
 #endif
             st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
                                              dst_stride); /* span checked above */
+#if BG_DARK_COPY
+            if (copies && st == BLOOM_OK && ++oslot == b->src_cap)
+                oslot = 0;
+#endif
         } while (st == BLOOM_OK);
-#if !BLOOM_SMALL && BLOOM_USE_SKIP
+#if BG_DARK_COPY
         b->row.par.dst_copied = false;
 #endif
         if (st < 0)
@@ -224,11 +234,14 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (r == end)
             return BLOOM_OK;
         const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
+#if BG_DARK_COPY
+        const int pslot = b->src_put; /* the slot row r goes to */
+#endif
         st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
-#if !BLOOM_SMALL && BLOOM_USE_SKIP
-        if (copies && src_dark(b, r)) /* untiled: output row r is frame row r */
+#if BG_DARK_COPY
+        if (copies && slot_dark(b, pslot, r)) /* untiled: output row r is frame row r */
             memcpy(d + fr * dst_stride, s + fr * src_stride, row_bytes);
 #endif
     }
@@ -237,7 +250,7 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
                               ptrdiff_t dst_stride)
 {
-    return run_rows(b, src, src_stride, nrows, dst, dst_stride, false);
+    return run_rows(b, src, src_stride, nrows, dst, dst_stride FRAME_ARG(false));
 }
 
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
@@ -245,7 +258,7 @@ bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, 
 {
     bloom_status_t st = bloom_begin(b);
     if (st == BLOOM_OK)
-        st = run_rows(b, src, src_stride, rows_total(b), dst, dst_stride, true);
+        st = run_rows(b, src, src_stride, rows_total(b), dst, dst_stride FRAME_ARG(true));
     if (st == BLOOM_OK && bloom_rows_out(b) != out_total(b))
         st = BLOOM_E_INTERNAL;
     return st;

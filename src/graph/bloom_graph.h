@@ -172,6 +172,10 @@ typedef struct {
                            struct's tail padding (no workspace byte on any target) */
 } bg_params_t;
 #define BG_NO_CUT 0xFFFFFFFFu
+/* Whether bloom_process's early copy of dark rows is compiled in (it needs
+ * the dark test; the size build leaves it out): dark_copy and dst_copied
+ * are then never set, and the tests on them compile out. */
+#define BG_DARK_COPY (BLOOM_USE_SKIP && !BLOOM_SMALL)
 
 /* What a row function sees (its row context): the parameters and kernels,
  * the nodes (for their widths, bg_in_w), which of its input rows are zero,
@@ -260,7 +264,7 @@ static inline uint32_t *bg_scratch(const bg_ctx_t *ctx, int i)
  * already copied it there (par.dst_copied: a dark row, bloom_frame.c). */
 static inline void bg_copy_row(const bg_ctx_t *ctx, const uint8_t *src, uint8_t *dst, int w)
 {
-    if (!ctx->par.dst_copied)
+    if (!BG_DARK_COPY || !ctx->par.dst_copied)
         bloom_row_copy_c(src, dst, w, &ctx->par.out);
 }
 /* Whether rows lo .. hi (indices into in[i]) of input i are all zero

@@ -316,6 +316,15 @@ static inline bool bloom_kernels_simd(const bloom_kernels_t *k)
 /* A row with B = 0: the source decoded and encoded again (no tent). */
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o);
 
+/* Whether bloom_row_copy_c is a copy of the bytes: one format, RGB888 or
+ * RGB565 (decode then encode gives each code back, tests/test_fixed.c), no
+ * debug view. bloom_process's early copy of dark rows relies on the same. */
+static inline bool bloom_copy_is_bytes(const bloom_out_t *o)
+{
+    return !o->debug && o->in_fmt == o->out_fmt &&
+           (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565);
+}
+
 /* The AVX2 twins of the 16-bit kernels (bloom_row16_avx2.c). */
 #if defined(BLOOM_SIMD_AVX2) && BLOOM_USE_S16
 uint32_t bloom_row_narrow16_avx2(const uint32_t *src, uint16_t *dst, int n, int sh);

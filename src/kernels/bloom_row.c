@@ -436,9 +436,7 @@ void bloom_row_tent_c(const uint32_t *const u[3], int odd, const uint32_t *add, 
 void bloom_row_copy_c(const uint8_t *src, uint8_t *dst, int w, const bloom_out_t *o)
 {
     const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
-    /* decode then encode gives the code back for these (tests/test_fixed.c) */
-    if (!o->debug && o->in_fmt == o->out_fmt &&
-        (o->in_fmt == BLOOM_FMT_RGB888 || o->in_fmt == BLOOM_FMT_RGB565)) {
+    if (bloom_copy_is_bytes(o)) {
         if (src != dst)
             memcpy(dst, src, (size_t)w * ibpp); /* in place is src == dst: rows never half-overlap */
         return;

@@ -541,7 +541,8 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
     /* every node but the output is zero-preserving, and a source pixel with
      * no channel above the knee's t - k makes zeros of D_1 (arm.md, skipping) */
     par->dark_cut = bg_knee_cut(par);
-    par->dark_copy = true; /* zero bloom: the source copied (fn_out) */
+    if (BG_DARK_COPY)
+        par->dark_copy = true; /* zero bloom: the source copied (fn_out) */
     int d = bg_node(g, fn_d1, g->w[1], g->h[1], 1, 1);
     bg_input(g, d, BG_SRC, BG_DOWN, -1, 2);
     if (g->cfg->aux_fmt != BLOOM_AUX_NONE)

@@ -109,7 +109,8 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
         par->views = true; /* the stages and d1_atten read their widths by bg_in_w */
     /* the factor is at most 1: what the knee zeroes stays zero */
     par->dark_cut = bg_knee_cut(par);
-    par->dark_copy = true; /* zero bloom: the source copied (bg_fn_out_add) */
+    if (BG_DARK_COPY)
+        par->dark_copy = true; /* zero bloom: the source copied (bg_fn_out_add) */
     return BLOOM_OK;
 }
 

@@ -358,7 +358,8 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
     par->dark_cut = bg_knee_cut(par);
     /* zero bloom: the source copied when additive, and over a dark row at
      * cut 0 (black: S = 0 = v) (out_cod) */
-    par->dark_copy = (g->cfg->flags & BLOOM_FLAG_ADDITIVE) || par->dark_cut == 0;
+    if (BG_DARK_COPY)
+        par->dark_copy = (g->cfg->flags & BLOOM_FLAG_ADDITIVE) || par->dark_cut == 0;
     const bool keep = (g->cfg->flags & BLOOM_FLAG_KEEP_LEVELS) != 0;
     int S = BG_SRC;
     if (keep && par->dark_cut == 0) { /* the source decoded once (dec_row) */

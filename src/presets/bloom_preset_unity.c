@@ -29,7 +29,8 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
         par->views = true; /* the stages read their widths by bg_in_w */
     if (BLOOM_USE_SKIP)
         par->dark_cut = bg_knee_cut(par); /* a source row with nothing above t - k makes zeros */
-    par->dark_copy = true;                /* zero bloom: the source copied (bg_fn_out_add) */
+    if (BG_DARK_COPY)
+        par->dark_copy = true; /* zero bloom: the source copied (bg_fn_out_add) */
     return BLOOM_OK;
 }
 

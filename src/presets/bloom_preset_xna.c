@@ -462,7 +462,8 @@ static bloom_status_t build(bg_graph_t *g, bg_params_t *par)
      * is dark; H skips where its 16-row window is dark, Q where any H row it
      * reads was skipped; the passes and the tent are zero-preserving */
     par->dark_cut = par->knee.t;
-    par->dark_copy = true; /* zero bloom: out = S, the source copied (fn_out) */
+    if (BG_DARK_COPY)
+        par->dark_copy = true; /* zero bloom: out = S, the source copied (fn_out) */
     const int hn = bg_node(g, fn_half, g->w[1], g->h[1], 3, 1);
     bg_input(g, hn, BG_SRC, BG_DOWN, -1, 2);
     if (!(g->cfg->flags & BLOOM_FLAG_COPY_SOURCE)) {
