@@ -176,6 +176,15 @@ static bool slot_dark(const bloom_t *b, int slot, int r)
 {
     return b->src_tag[slot] == (r | BLOOM_TAG_ZERO);
 }
+
+/* Whether source row r is tagged dark, its slot followed by a cursor (the
+ * slot *slot of row *row; rows only go forward, so no division per row). */
+static bool row_dark(const bloom_t *b, int *slot, int *row, int r)
+{
+    for (; *row < r; ++*row)
+        *slot = *slot + 1 == b->src_cap ? 0 : *slot + 1;
+    return slot_dark(b, *slot, r);
+}
 /* Only the frame call copies dark rows early: the argument is compiled out
  * with that code. */
 #define FRAME_PARAM , bool frame
@@ -208,22 +217,20 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
 #if BG_DARK_COPY
     const bool copies = frame && dark_copies(b, s, d);
     const size_t row_bytes = b->src_row_bytes;
-    /* the ring slot of source row bloom_rows_out(b): untiled, the output
-     * row of that number is made from it */
-    int oslot = copies ? bloom_rows_out(b) % b->src_cap : 0;
+    /* the cursor on the source row of the next output row (untiled, the
+     * output row of that number is made from it); the tiled and band calls
+     * never touch it */
+    int orow = bloom_rows_out(b), oslot = copies ? orow % b->src_cap : 0;
 #endif
     for (;;) {
         bloom_status_t st;
         do {
 #if BG_DARK_COPY
-            b->row.par.dst_copied = copies && slot_dark(b, oslot, bloom_rows_out(b));
+            if (copies)
+                b->row.par.dst_copied = row_dark(b, &oslot, &orow, bloom_rows_out(b));
 #endif
             st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
                                              dst_stride); /* span checked above */
-#if BG_DARK_COPY
-            if (copies && st == BLOOM_OK && ++oslot == b->src_cap)
-                oslot = 0;
-#endif
         } while (st == BLOOM_OK);
 #if BG_DARK_COPY
         b->row.par.dst_copied = false;
@@ -234,14 +241,12 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (r == end)
             return BLOOM_OK;
         const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
-#if BG_DARK_COPY
-        const int pslot = b->src_put; /* the slot row r goes to */
-#endif
         st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
 #if BG_DARK_COPY
-        if (copies && slot_dark(b, pslot, r)) /* untiled: output row r is frame row r */
+        /* (row r went to the slot before src_put) untiled: output row r is frame row r */
+        if (copies && slot_dark(b, (b->src_put ? b->src_put : b->src_cap) - 1, r))
             memcpy(d + fr * dst_stride, s + fr * src_stride, row_bytes);
 #endif
     }
