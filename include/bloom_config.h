@@ -67,6 +67,22 @@
 #define BLOOM_USE_SKIP 1
 #endif
 
+/* bloom_process copies a dark source row to its destination right after
+ * its dark test, while the row is in the data cache: a dark frame is then
+ * one read of each row, not two. A dark row that still gets bloom is
+ * written again at its turn. On a microcontroller (ARM M profile: no data
+ * cache on Cortex-M0 to M4, framebuffers often uncached on M7) the early
+ * copy saves no read and costs that second write (0.9 instructions per
+ * pixel on the firmware's scene, sim/docs/targets.md), so it is off there.
+ * Needs BLOOM_USE_SKIP; the size build leaves it out. Same bits. */
+#ifndef BLOOM_DARK_COPY
+#if defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+#define BLOOM_DARK_COPY 0
+#else
+#define BLOOM_DARK_COPY 1
+#endif
+#endif
+
 /* Fraction bits of the internal linear samples, 16..20 (Q12.20 by default;
  * fewer only to measure precision against accuracy: make report). The
  * sRGB tables must be generated for the same value (sim/gen_tables.c F). */

@@ -172,10 +172,11 @@ typedef struct {
                            struct's tail padding (no workspace byte on any target) */
 } bg_params_t;
 #define BG_NO_CUT 0xFFFFFFFFu
-/* Whether bloom_process's early copy of dark rows is compiled in (it needs
- * the dark test; the size build leaves it out): dark_copy and dst_copied
- * are then never set, and the tests on them compile out. */
-#define BG_DARK_COPY (BLOOM_USE_SKIP && !BLOOM_SMALL)
+/* Whether bloom_process's early copy of dark rows is compiled in
+ * (BLOOM_DARK_COPY; it needs the dark test; the size build leaves it out):
+ * else dark_copy and dst_copied are never set, and the tests on them
+ * compile out. */
+#define BG_DARK_COPY (BLOOM_DARK_COPY && BLOOM_USE_SKIP && !BLOOM_SMALL)
 
 /* What a row function sees (its row context): the parameters and kernels,
  * the nodes (for their widths, bg_in_w), which of its input rows are zero,
