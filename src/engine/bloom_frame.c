@@ -185,17 +185,10 @@ static bool row_dark(const bloom_t *b, int *slot, int *row, int r)
         *slot = *slot + 1 == b->src_cap ? 0 : *slot + 1;
     return slot_dark(b, *slot, r);
 }
-/* Only the frame call copies dark rows early: the argument is compiled out
- * with that code. */
-#define FRAME_PARAM , bool frame
-#define FRAME_ARG(f) , f
-#else
-#define FRAME_PARAM
-#define FRAME_ARG(f)
 #endif
 
 static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
-                               ptrdiff_t dst_stride FRAME_PARAM)
+                               ptrdiff_t dst_stride, bool frame)
 {
     if (!b || !src || !dst)
         return BLOOM_E_NULL;
@@ -221,6 +214,8 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
      * output row of that number is made from it); the tiled and band calls
      * never touch it */
     int orow = bloom_rows_out(b), oslot = copies ? orow % b->src_cap : 0;
+#else
+    (void)frame; /* (only the frame call copies dark rows early) */
 #endif
     for (;;) {
         bloom_status_t st;
@@ -255,7 +250,7 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
                               ptrdiff_t dst_stride)
 {
-    return run_rows(b, src, src_stride, nrows, dst, dst_stride FRAME_ARG(false));
+    return run_rows(b, src, src_stride, nrows, dst, dst_stride, false);
 }
 
 bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, void *dst,
@@ -263,7 +258,7 @@ bloom_status_t bloom_process(bloom_t *b, const void *src, ptrdiff_t src_stride, 
 {
     bloom_status_t st = bloom_begin(b);
     if (st == BLOOM_OK)
-        st = run_rows(b, src, src_stride, rows_total(b), dst, dst_stride FRAME_ARG(true));
+        st = run_rows(b, src, src_stride, rows_total(b), dst, dst_stride, true);
     if (st == BLOOM_OK && bloom_rows_out(b) != out_total(b))
         st = BLOOM_E_INTERNAL;
     return st;
