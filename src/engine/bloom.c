@@ -317,7 +317,8 @@ static uint32_t input_step(const bloom_t *g, const bg_node_t *n, int i)
 /* Each input's gather, for the row calls, from offset off of base (NULL:
  * only counted; returns the offset after them); cap: the source ring's
  * slots. A tile's inputs read from a column on: their own view of the
- * slots' pointers, when the slots stay (node rings, copied source rows). */
+ * slots' pointers, when the slots stay (node rings, copied source rows);
+ * else (the caller's own rows) the offset is added per row read. */
 static uint64_t lay_out_gathers(bloom_t *g, uint8_t *base, uint64_t off, int cap)
 {
     int nin = 0;
@@ -347,12 +348,14 @@ static uint64_t lay_out_gathers(bloom_t *g, uint8_t *base, uint64_t off, int cap
             ga->cap = (uint16_t)c;
             ga->h = (uint16_t)(f ? f->h : g->gr.h[0]);
             ga->add = view ? 0u : step; /* (the cursor: bloom_begin) */
-            ga->zb = c > BG_ZB_CAP ? NULL : f ? &g->gr.node[in->node].zb : &g->src_zb;
+            ga->zb = !f ? (const void *)g->src_zb : c > BG_ZB_CAP ? NULL : &g->gr.node[in->node].zb;
+            ga->zw = !f;
             ga->lo = in->lo;
-            ga->hi = in->hi;
+            ga->n1 = (uint8_t)(in->hi - in->lo);
             ga->sh = (uint8_t)(in->map == BG_DOWN ? 0 : in->map == BG_SAME ? 1 : 2);
             ga->zmask = (2u << (in->hi - in->lo)) - 1u;
-            ga->zfull = in->node == BG_AUX ? 0u : ga->zmask;
+            ga->zaux = in->node == BG_AUX;
+            ga->fend = (uint16_t)(ga->add || !ga->zb ? 0 : imax(ga->h - (in->hi - in->lo), 0));
             for (int s = 0; view && s < 2 * c; s++)
                 view[s] = (const uint8_t *)ga->ring[s] + step;
             if (view)
@@ -394,6 +397,9 @@ uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
     }
 #endif
     g->src_tag = (int32_t *)take(base, &off, copies * sizeof(int32_t));
+#if BLOOM_SCHED_TABLE
+    g->src_zb = (uint32_t *)take(base, &off, (copies + 31) / 32 * sizeof(uint32_t));
+#endif
     if (bg_tiled(&g->row))
         g->out_row = (uint8_t *)take(
             base, &off, (uint64_t)g->gr.node[g->gr.out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
@@ -549,7 +555,7 @@ bloom_status_t bloom_begin(bloom_t *b)
     for (int i = 0; i < BG_RING_COPIES * b->src_cap; i++)
         b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
 #if BLOOM_SCHED_TABLE
-    b->src_zb = 0;
+    memset(b->src_zb, 0, (size_t)(BG_RING_COPIES * b->src_cap + 31) / 32 * sizeof *b->src_zb);
 #endif
     /* node slots keep their zero bit: a slot that holds zeros still does */
     for (int i = 0; i < b->gr.nnodes; i++) {

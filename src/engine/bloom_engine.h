@@ -60,7 +60,7 @@ struct bloom {
     uint8_t *src_copy, *aux_copy;
     int32_t *src_tag;
 #if BLOOM_SCHED_TABLE
-    uint64_t src_zb; /* the source ring's zero bitmap (bg_gather_t) */
+    uint32_t *src_zb; /* the source ring's zero bitmap (bg_gather_t), 2 src_cap bits */
 #endif
     int src_cap;
     size_t src_row_bytes, aux_row_bytes;

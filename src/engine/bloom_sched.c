@@ -92,6 +92,73 @@ static bool ensure_inputs(bloom_t *g, const bg_node_t *n, int r)
  * the recursion of ensure() keeps small frames (the Cortex-M stack figure). */
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
+#if BLOOM_SCHED_TABLE
+/* Which of the rows in slots slot .. slot + n1 of an input's ring are zero,
+ * from its bitmap (the source's: bits of two words past a word's end). */
+static inline uint32_t zero_bits(const bg_gather_t *ga, int slot)
+{
+    if (!ga->zw) /* a node's: one word (slot + n1 < 2 cap <= 64) */
+        return (uint32_t)(*(const uint64_t *)ga->zb >> slot) & ga->zmask;
+    const uint32_t *z = (const uint32_t *)ga->zb + (slot >> 5);
+    const int o = slot & 31;
+    uint32_t v = z[0] >> o;
+    if (o + ga->n1 > 31) /* (o > 0: n1 < 32) */
+        v |= z[1] << (32 - o);
+    return v & ga->zmask;
+}
+
+/* The gather of one input whose rows reach past an edge, whose ring has
+ * no bitmap, or that adds a column offset (run_row's long path): the slot
+ * cursor moved to the first row read, the row pointers laid out in
+ * rows[*used ..] (edge rows repeated, a tile's column offset added) or,
+ * when neither, the slots' own; returns which are zero. */
+static BLOOM_NOINLINE uint32_t gather_edge(bloom_t *g, bg_gather_t *ga, int lo, const void **rows, int *used,
+                                           const void *const **in)
+{
+    const int hin = ga->h, cap = ga->cap, n1 = ga->n1;
+    const int first = clampi(lo, 0, hin - 1), last = clampi(lo + n1, 0, hin - 1);
+    int slot = ga->slot + (first - ga->row);
+    while (slot >= cap)
+        slot -= cap;
+    ga->row = (uint16_t)first;
+    ga->slot = (uint16_t)slot;
+    const int32_t *tags = ga->tags + slot;
+    const void *const *ring = ga->ring + slot;
+#if BLOOM_CHECK_RINGS
+    if ((tags[0] & ~ZBIT) != first || (tags[last - first] & ~ZBIT) != last)
+        g->failed = true;
+#else
+    (void)g;
+#endif
+    uint32_t zm = 0;
+    if (lo == first && lo + n1 == last) { /* no edge row */
+        if (BLOOM_USE_SKIP && ga->zb)
+            zm = zero_bits(ga, slot);
+        else if (BLOOM_USE_SKIP)
+            for (int k = 0; k <= n1; k++)
+                zm |= ((uint32_t)tags[k] >> 30 & 1u) << k;
+        if (!ga->add) { /* the slots' own pointers */
+            *in = ring;
+            return zm;
+        }
+        const void **p = rows + *used; /* a tile's column offset added */
+        *in = p;
+        *used += n1 + 1;
+        for (int k = 0; k <= n1; k++)
+            p[k] = (const uint8_t *)ring[k] + ga->add;
+        return zm;
+    }
+    *in = rows + *used; /* edge rows repeated, or a tile's column offset added */
+    for (int j = lo; j <= lo + n1; j++) {
+        const int d = clampi(j, 0, hin - 1) - first;
+        if (BLOOM_USE_SKIP)
+            zm |= ((uint32_t)tags[d] >> 30 & 1u) << (j - lo);
+        rows[(*used)++] = (const uint8_t *)ring[d] + ga->add;
+    }
+    return zm;
+}
+#endif
+
 static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
@@ -102,51 +169,40 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
     const int nin = n->nin;
     bg_gather_t *ga = n->gat;
     uint32_t *zin = g->row.zin;
+    uint32_t live = 0; /* bits of rows read that are not zero (the aux plane's aside) */
     for (int i = 0; i < nin; i++, ga++) {
-        const int hin = ga->h, cap = ga->cap;
-        /* rings keep their slots' row pointers and tags twice over: any
-         * run of consecutive slots is one array, wrap-around included */
-        const int32_t *tags = ga->tags;
-        const void *const *ring = ga->ring;
         /* base(r) = 2r >> sh: 2r (BG_DOWN), r (BG_SAME), r >> 1 (BG_UP) */
-        const int b = (2 * r) >> ga->sh, lo = b + ga->lo, hi = b + ga->hi;
-        /* the first row read moves the slot cursor: readers' rows only go
-         * forward, so no division; the rows are consecutive slots from it */
-        const int first = clampi(lo, 0, hin - 1), last = clampi(hi, 0, hin - 1);
-        int slot = ga->slot + (first - ga->row);
-        while (slot >= cap)
-            slot -= cap;
-        ga->row = (uint16_t)first;
-        ga->slot = (uint16_t)slot;
-        tags += slot;
-        ring += slot;
-#if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
-        if ((tags[0] & ~ZBIT) != first || (tags[last - first] & ~ZBIT) != last)
-            g->failed = true;
-#endif
+        const int lo = ((2 * r) >> ga->sh) + ga->lo;
         uint32_t zm = 0;
-        if (lo == first && hi == last && !ga->add) { /* the slots' own pointers: nothing to gather */
-            in[i] = ring;
-            if (BLOOM_USE_SKIP && ga->zb)
-                zm = (uint32_t)(*ga->zb >> slot) & ga->zmask;
-            else if (BLOOM_USE_SKIP)
-                for (int k = 0; k <= hi - lo; k++)
-                    zm |= ((uint32_t)tags[k] >> 30 & 1u) << k;
-        } else { /* edge rows repeated, or a tile's column offset added */
-            in[i] = rows + used;
-            for (int j = lo; j <= hi; j++) {
-                const int d = clampi(j, 0, hin - 1) - first;
-                if (BLOOM_USE_SKIP)
-                    zm |= ((uint32_t)tags[d] >> 30 & 1u) << (j - lo);
-                rows[used++] = (const uint8_t *)ring[d] + ga->add;
-            }
+        if ((unsigned)lo < ga->fend) { /* no edge row, no offset: the slots' own pointers */
+            /* the first row read moves the slot cursor: readers' rows only
+             * go forward, so no division; the rows are consecutive slots
+             * from it (rings keep their slots' row pointers and tags twice
+             * over: any run of consecutive slots is one array) */
+            int slot = ga->slot + (lo - ga->row);
+            while (slot >= ga->cap)
+                slot -= ga->cap;
+            ga->row = (uint16_t)lo;
+            ga->slot = (uint16_t)slot;
+#if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
+            const int32_t *tags = ga->tags + slot;
+            if (((tags[0] ^ lo) | (tags[ga->n1] ^ (lo + ga->n1))) & ~ZBIT)
+                g->failed = true;
+#endif
+            in[i] = ga->ring + slot;
+            if (BLOOM_USE_SKIP)
+                zm = zero_bits(ga, slot);
+        } else {
+            zm = gather_edge(g, ga, lo, rows, &used, &in[i]);
         }
         if (!BLOOM_USE_SKIP)
             continue;
         zin[i] = zm;
-        if ((zm & ga->zfull) != ga->zfull)
-            all_zero = false;
+        if (!ga->zaux)
+            live |= zm ^ ga->zmask;
     }
+    if (live)
+        all_zero = false;
 #else /* the size build: no cursors, no doubled rings, no aux plane, no tiles */
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
@@ -193,24 +249,32 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
     return !n->fn(&g->row, n, r, in, dst) && BLOOM_USE_SKIP && g->row.skip ? ROW_ZEROS : ROW_MADE;
 }
 
-/* Tag (or row pointer) v into slot s of a ring of cap slots: both copies
- * with the static schedule's doubled rings, the one otherwise. */
+/* Tag v into slot s of a ring of cap slots: both copies with the static
+ * schedule's doubled rings, the one otherwise; and a node's zero bit into
+ * its bitmap zb (the source's: put_src_bit). */
 static inline void put_tag(int32_t *tags, uint64_t *zb, int s, int cap, int32_t v)
 {
     tags[s] = v;
     if (BLOOM_SCHED_TABLE)
         tags[s + cap] = v;
-    if (BLOOM_SCHED_TABLE && cap <= BG_ZB_CAP) { /* the zero bit in the bitmap too (both copies) */
+    if (BLOOM_SCHED_TABLE && zb && cap <= BG_ZB_CAP) { /* the zero bit in the bitmap too (both copies) */
         const uint64_t m = (1ull << s) | (1ull << (s + cap));
         *zb = (v & ZBIT) ? *zb | m : *zb & ~m;
     }
 }
 #if BLOOM_SCHED_TABLE
 #define NODE_ZB(n) (&(n)->zb)
-#define SRC_ZB(g) (&(g)->src_zb)
+/* The source ring's bitmap (32-bit words, the Cortex-M's own): bits s and
+ * s + cap set to z. */
+static inline void put_src_bit(uint32_t *zb, int s, int cap, bool z)
+{
+    for (int k = 0; k < 2; k++, s += cap) {
+        uint32_t *w = zb + (s >> 5);
+        *w = (*w & ~(1u << (s & 31))) | (uint32_t)z << (s & 31);
+    }
+}
 #else
 #define NODE_ZB(n) NULL
-#define SRC_ZB(g) NULL
 #endif
 static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
 {
@@ -498,9 +562,12 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     const bool dark =
         g->row.dark_src &&
         BLOOM_KERN_DARK(&g->row.kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark);
-    put_tag(g->src_tag, SRC_ZB(g), slot, g->src_cap, r | (dark ? ZBIT : 0));
 #else
-    put_tag(g->src_tag, SRC_ZB(g), slot, g->src_cap, r);
+    const bool dark = false;
+#endif
+    put_tag(g->src_tag, NULL, slot, g->src_cap, dark ? r | ZBIT : r);
+#if BLOOM_SCHED_TABLE
+    put_src_bit(g->src_zb, slot, g->src_cap, dark);
 #endif
 #if BLOOM_SCHED_TABLE
     g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;

@@ -78,27 +78,36 @@ typedef struct {
 
 /* How the scheduler gathers one input's rows (engine/ fills it in: bloom_carve
  * lays it out, one per input of every node, in the workspace, beside the
- * node's ring): the ring read, its
- * slots' row pointers and tags (twice over: see bg_node_t; a tile's input
- * read from a column on gets its own view of the pointers, offset, when
- * the slots stay), its slots and height; `add`, bytes still to add per row
- * (that offset, for the caller's own source rows); and a cursor: the first
- * row read by the last row made and its slot (rows only move forward, so
- * no division per row). Which rows read are zero come from the ring's
- * bitmap zb (bit s: slot s holds a zero row, twice over as the tags) when
- * the ring has at most BG_ZB_CAP slots, else from the tags; zmask has a bit
- * per row read, zfull those that must be zero for the reader to be
- * skipped (none for the aux plane: a factor). */
+ * node's ring): the ring read, its slots' row pointers and tags (twice
+ * over: see bg_node_t; a tile's input read from a column on gets its own
+ * view of the pointers, offset, when the slots stay), its slots and
+ * height; `add`, bytes still to add per row (that offset, for the
+ * caller's own source rows); and a cursor: the first row read by the last
+ * row made and its slot
+ * (rows only move forward, so no division per row). Which rows read are
+ * zero come from the ring's bitmap zb (bit s: slot s holds a zero row,
+ * twice over as the tags: one word for a node's ring of at most BG_ZB_CAP
+ * slots, as many as it takes for the source ring's), else (a larger node
+ * ring) from the tags; zmask has a bit per row read, all of which must be
+ * zero for the reader to be skipped, but for the aux plane (zaux: a
+ * factor). Rows whose first row read, base(r) + lo, is below fend read no
+ * clamped row (base(r) + hi < h): run_row's short path, with the slots'
+ * own pointers and the bitmap (fend 0: never, for an input with an offset
+ * to add or a ring with no bitmap). */
 typedef struct {
     const void *const *ring;
     const int32_t *tags;
-    const uint64_t *zb;
+    const void *zb; /* uint64_t (a node's ring), uint32_t words (zw: the source's) */
     uint16_t cap, h;
     uint16_t row, slot;
-    int8_t lo, hi; /* the input's rows base(r) + lo .. base(r) + hi (bg_input_t) */
-    uint8_t sh;    /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
+    int8_t lo;  /* the input's rows base(r) + lo .. base(r) + lo + n1 (bg_input_t) */
+    uint8_t n1; /* (hi - lo) */
+    uint8_t sh; /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
+    bool zaux;  /* the aux plane: its zero rows do not make the reader's zero */
+    uint16_t fend;
+    uint8_t zw; /* (lo .. zw fill 64 bits: no workspace) */
     uint32_t add;
-    uint32_t zmask, zfull;
+    uint32_t zmask;
 } bg_gather_t;
 #define BG_ZB_CAP 32
 
