@@ -74,7 +74,7 @@ fn_counts "$dir/l5.s0.out" > "$dir/fn.s0.tsv"
 fn_counts "$dir/l5.s480.out" > "$dir/fn.s480.tsv"
 split_table=$(join -t "$(printf '\t')" -a1 -a2 -e 0 -o 0,1.2,2.2 "$dir/fn.s0.tsv" "$dir/fn.s480.tsv" | awk -F'\t' '
     function part(f) {
-        if (f ~ /^(run_row|walk_to_output|make_row|next_row|ensure|ensure_inputs|oldest_of|input_top)$/ || f ~ /^bloom_sched_/) return "scheduler (bloom_sched.c)"
+        if (f ~ /^(run_row|gather_edge|walk_to_output|make_row|next_row|ensure|ensure_inputs|oldest_of|input_top)$/ || f ~ /^bloom_sched_/) return "scheduler (bloom_sched.c)"
         if (f ~ /(box_src|knee|_d1|dark|bg_fn_d1)/) return "level 1 of the down chain (knee, dark test, box from the source)"
         if (f ~ /(row_box|bg_fn_box)/) return "deeper levels of the down chain (boxes)"
         if (f ~ /(mem(cpy|move|set))/) return "memcpy, memset (the tile row copied out, dark rows)"
@@ -241,7 +241,11 @@ $split_table
 
 A strip engine walks the whole frame's schedule: every node row of every
 level is gathered and made, only narrower, so the scheduler's cost is paid
-once per strip. The level-1 down chain runs over the halo (source columns
+once per strip; a strip's readers of the caller's own source rows add
+their column offset to each row read (\`gather_edge\`: the ring holds the
+caller's pointers, which change with every push; a view of them per
+reader, written by each push, would cost about 3 KB of workspace per
+reader in strips of 256 columns). The level-1 down chain runs over the halo (source columns
 beyond the strip); the SIMD kernels' last few pixels of a row, which
 narrower rows have more of per pixel, go through their C or SSE2 tails
 (\`bloom_row_il_add_c\`, \`bloom_row_htent_eo_c\`, \`bloom_encode_eo\`); the

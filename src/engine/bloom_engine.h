@@ -91,7 +91,7 @@ struct bloom {
     int fold_b, fold_e, fold_m, fold_rep;
     int walk_end;                 /* where the walk stops: fold_e while the period repeats, then sched_len */
     int dry_n;                    /* dry run: bytes of the unfolded table so far */
-    struct bloom_fold_scan *scan; /* dry run: the period search (bloom_sched.c) */
+    struct bloom_fold_scan *scan; /* dry run: the period search (bloom_fold.c) */
 #endif
     int src_free; /* source rows no firing to come reads: push r needs r - src_cap < src_free */
     int src_seen; /* BG_S_PUSH bytes the walk has passed */

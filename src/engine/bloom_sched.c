@@ -15,6 +15,7 @@
  * same pull-driven walk on the real rows. Either way a row is made from
  * the same input rows: the same bits. */
 #include "bloom_engine.h"
+#include "bloom_fold.h"
 
 #include <string.h>
 
@@ -305,86 +306,13 @@ static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
     put_tag(n->tag, NODE_ZB(n), s, n->cap, BLOOM_USE_SKIP && made != ROW_MADE ? r | ZBIT : r);
 }
 
-#if BLOOM_SCHED_TABLE
-/* The period search of the first dry run. The bytes from one BG_S_PUSH to
- * the next are a chunk; once the pyramid has filled, chunk y equals chunk
- * y - P (P = 2^L pushes, a row of the deepest level). Each chunk's length
- * and 64-bit FNV-1a hash are kept for P chunks; the longest run of chunks
- * equal to the chunk P before them is the fold: the block of P chunks
- * before the run is written once and walked as many times as it fits in
- * the run. The hash only proposes it: the second dry run compares every
- * byte of the repeats with the block (a mismatch fails bloom_init, never a
- * frame). It lives on bloom_init's stack: 640 bytes at most, below what a
- * frame call takes (port/mcu/FIGURES.md), hence P <= 64. */
-#define FOLD_MAX_P 64 /* L <= 6 (deeper pyramids are not folded) */
-struct bloom_fold_scan {
-    int P, y;       /* the period in chunks (0: no search); the chunk being hashed */
-    int off;        /* its first byte */
-    uint64_t h;     /* its hash so far */
-    int wsum;       /* the bytes of the last P chunks */
-    int run, run_b; /* the run of repeated chunks: its first chunk (-1: none), the block's first byte */
-    int run_len;    /* the block's bytes */
-    int best;       /* bytes the best fold saves */
-    int fb, fe, fm; /* that fold (bloom_t's fold_b, fold_e, fold_m at the end) */
-    uint64_t hash[FOLD_MAX_P];
-    uint16_t len[FOLD_MAX_P];
-};
-
-/* The run that ends before chunk y (exclusive): the fold it gives, kept if
- * it saves the most. */
-static void fold_run_end(struct bloom_fold_scan *f, int y)
-{
-    if (f->run < 0)
-        return;
-    const int m = (y - (f->run - f->P)) / f->P; /* whole blocks from the block's start */
-    if (m > 1 && (m - 1) * f->run_len > f->best) {
-        f->best = (m - 1) * f->run_len;
-        f->fb = f->run_b;
-        f->fe = f->run_b + f->run_len;
-        f->fm = m;
-    }
-    f->run = -1;
-}
-
-/* Chunk f->y is complete (the next push, or the end): compare it with the
- * chunk P before it, whose slot it then takes. */
-static void fold_chunk_end(bloom_t *g, struct bloom_fold_scan *f)
-{
-    const int y = f->y, k = y % f->P, len = g->dry_n - f->off;
-    if (y >= 0) {
-        if (len > 0xFFFF) { /* (never, at L <= 6: the search stops, no fold) */
-            f->P = 0;
-            return;
-        }
-        const bool same = y >= f->P && f->hash[k] == f->h && f->len[k] == len;
-        if (same && f->run < 0) { /* the last P chunks are the block */
-            f->run = y;
-            f->run_b = f->off - f->wsum;
-            f->run_len = f->wsum;
-        } else if (!same) {
-            fold_run_end(f, y);
-        }
-        f->wsum += len - (y >= f->P ? f->len[k] : 0);
-        f->hash[k] = f->h;
-        f->len[k] = (uint16_t)len;
-    }
-    f->y = y + 1;
-    f->off = g->dry_n;
-    f->h = 0xcbf29ce484222325ull;
-}
-#endif
-
 /* One byte of the static schedule: counted always (its size), written when
- * the table has its place (bloom_init's second dry run), folded (above). */
+ * the table has its place (bloom_init's second dry run), folded (bloom_fold.c). */
 static void emit(bloom_t *g, int byte)
 {
 #if BLOOM_SCHED_TABLE
-    struct bloom_fold_scan *f = g->scan;
-    if (f && f->P) { /* the first dry run */
-        if (byte == BG_S_PUSH)
-            fold_chunk_end(g, f);
-        f->h = (f->h ^ (uint8_t)byte) * 0x100000001b3ull;
-    }
+    if (g->scan) /* the first dry run */
+        bloom_fold_byte(g, byte);
     const int i = g->dry_n++, rep = g->fold_e - g->fold_b;
     if (g->fold_m > 1 && i >= g->fold_e && i < g->fold_b + g->fold_m * rep) {
         /* a repeat of the block: the same byte, or no fold */
@@ -464,20 +392,8 @@ void bloom_dry_frame(bloom_t *g)
     g->sched_len = 0;
     g->dry_n = 0;
     struct bloom_fold_scan scan;
-    if (!g->sched) { /* the first run looks for the period; the second folds by it */
-        scan.P = g->gr.L >= 0 && (1 << g->gr.L) <= FOLD_MAX_P ? 1 << g->gr.L : 0;
-        scan.wsum = 0;
-        scan.y = -1;
-        scan.off = 0;
-        scan.h = 0;
-        scan.run = -1;
-        scan.best = 0;
-        scan.fb = scan.fe = 0;
-        scan.fm = 1;
-        g->fold_b = g->fold_e = 0;
-        g->fold_m = 1;
-        g->scan = scan.P ? &scan : NULL;
-    }
+    if (!g->sched) /* the first run looks for the period; the second folds by it */
+        bloom_fold_start(g, &scan);
 #endif
     g->dry = true;
     emit_free(g);
@@ -495,18 +411,8 @@ void bloom_dry_frame(bloom_t *g)
         }
     }
 #if BLOOM_SCHED_TABLE
-    if (g->scan) {
-        if (scan.P)
-            fold_chunk_end(g, &scan);
-        if (scan.P) /* (the last chunk may have stopped the search) */
-            fold_run_end(&scan, scan.y);
-        g->fold_b = scan.fb;
-        g->fold_e = scan.fe;
-        g->fold_m = scan.fm;
-        /* the bytes counted were the unfolded table's */
-        g->sched_len -= (g->fold_m - 1) * (g->fold_e - g->fold_b);
-        g->scan = NULL;
-    }
+    if (g->scan)
+        bloom_fold_finish(g);
 #endif
     g->dry = false;
 }
