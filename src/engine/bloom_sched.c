@@ -108,6 +108,18 @@ static inline uint32_t zero_bits(const bg_gather_t *ga, int slot)
     return v & ga->zmask;
 }
 
+/* The input's slot cursor moved to row `first` (the first row it reads):
+ * readers' rows only go forward, so a step with wrap-around, no division. */
+static inline int move_cursor(bg_gather_t *ga, int first)
+{
+    int slot = ga->slot + (first - ga->row);
+    while (slot >= ga->cap)
+        slot -= ga->cap;
+    ga->row = (uint16_t)first;
+    ga->slot = (uint16_t)slot;
+    return slot;
+}
+
 /* The gather of one input whose rows reach past an edge, whose ring has
  * no bitmap, or that adds a column offset (run_row's long path): the slot
  * cursor moved to the first row read, the row pointers laid out in
@@ -116,13 +128,9 @@ static inline uint32_t zero_bits(const bg_gather_t *ga, int slot)
 static BLOOM_NOINLINE uint32_t gather_edge(bloom_t *g, bg_gather_t *ga, int lo, const void **rows, int *used,
                                            const void *const **in)
 {
-    const int hin = ga->h, cap = ga->cap, n1 = ga->n1;
+    const int hin = ga->h, n1 = ga->n1;
     const int first = clampi(lo, 0, hin - 1), last = clampi(lo + n1, 0, hin - 1);
-    int slot = ga->slot + (first - ga->row);
-    while (slot >= cap)
-        slot -= cap;
-    ga->row = (uint16_t)first;
-    ga->slot = (uint16_t)slot;
+    const int slot = move_cursor(ga, first);
     const int32_t *tags = ga->tags + slot;
     const void *const *ring = ga->ring + slot;
 #if BLOOM_CHECK_RINGS
@@ -176,15 +184,10 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         const int lo = ((2 * r) >> ga->sh) + ga->lo;
         uint32_t zm = 0;
         if ((unsigned)lo < ga->fend) { /* no edge row, no offset: the slots' own pointers */
-            /* the first row read moves the slot cursor: readers' rows only
-             * go forward, so no division; the rows are consecutive slots
-             * from it (rings keep their slots' row pointers and tags twice
-             * over: any run of consecutive slots is one array) */
-            int slot = ga->slot + (lo - ga->row);
-            while (slot >= ga->cap)
-                slot -= ga->cap;
-            ga->row = (uint16_t)lo;
-            ga->slot = (uint16_t)slot;
+            /* the rows are consecutive slots from the cursor (rings keep
+             * their slots' row pointers and tags twice over: any run of
+             * consecutive slots is one array) */
+            const int slot = move_cursor(ga, lo);
 #if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
             const int32_t *tags = ga->tags + slot;
             if (((tags[0] ^ lo) | (tags[ga->n1] ^ (lo + ga->n1))) & ~ZBIT)

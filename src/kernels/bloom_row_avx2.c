@@ -110,11 +110,11 @@ uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, in
     return r;
 }
 
-/* bloom_row_il_add_c in groups of 8 pixels. */
-static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+/* bloom_row_il_add_c over the first 8 nb pixels (e and o alternate from
+ * their first column). */
+static void il_add_blocks(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int nb)
 {
-    int x = 0;
-    for (; x + 8 <= n; x += 8, e += 12, o += 12, dst += 24) {
+    for (; nb > 0; nb--, e += 12, o += 12, dst += 24) {
         __m256i v[3];
         il24(e, o, v);
         if (add) {
@@ -125,8 +125,27 @@ static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, ui
         for (int j = 0; j < 3; j++)
             ST8(dst + 8 * j, v[j]);
     }
-    if (x < n)
-        bloom_row_il_add_c(e, o, add, dst, n - x);
+}
+
+/* bloom_row_il_add_c in groups of 8 pixels. */
+static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+{
+    il_add_blocks(e, o, add, dst, n >> 3);
+    int x = n & ~7;
+    if (x == n)
+        return;
+    if (n > 8 && add != dst) {
+        /* the tail as a block that overlaps the last one (a tile's rows end
+         * anywhere): pixels written twice get the same value, since dst is
+         * read by neither e, o nor add (gamedev adds in place: the C tail);
+         * the block starts on an even pixel, so an odd n leaves C its last */
+        const int b = (n - 8) & ~1;
+        il_add_blocks(e + 3 * (b >> 1), o + 3 * (b >> 1), add ? add + 3 * b : NULL, dst + 3 * b, 1);
+        x = b + 8;
+        if (x == n)
+            return;
+    }
+    bloom_row_il_add_c(e + 3 * (x >> 1), o + 3 * (x >> 1), add ? add + 3 * x : NULL, dst + 3 * x, n - x);
 }
 
 static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,
