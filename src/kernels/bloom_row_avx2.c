@@ -88,26 +88,32 @@ uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32
 }
 
 /* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3
- * (the horizontal pass rounds half down: bloom_kernels.h). */
-uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+ * (the horizontal pass rounds half down: bloom_kernels.h), samples i .. i + 7:
+ * their OR. */
+static inline __m256i htent_eo8(const uint32_t *v, uint32_t *e, uint32_t *o, int i)
 {
     const __m256i k4 = _mm256_set1_epi32(BLOOM_HT_RND);
+    const __m256i p = LD8(v + i - 3), q = LD8(v + i + 3);
+    const __m256i m =
+        _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(LD8(v + i), 2), k4), _mm256_add_epi32(p, q));
+    const __m256i ev = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(p, 1)), 3);
+    const __m256i ov = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(q, 1)), 3);
+    ST8(e + i, ev);
+    ST8(o + i, ov);
+    return _mm256_or_si256(ev, ov);
+}
+
+uint32_t bloom_row_htent_eo_avx2(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
+{
     __m256i any = _mm256_setzero_si256();
     int i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const __m256i p = LD8(v + i - 3), q = LD8(v + i + 3);
-        const __m256i m =
-            _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(LD8(v + i), 2), k4), _mm256_add_epi32(p, q));
-        const __m256i ev = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(p, 1)), 3);
-        const __m256i ov = _mm256_srli_epi32(_mm256_add_epi32(m, _mm256_slli_epi32(q, 1)), 3);
-        ST8(e + i, ev);
-        ST8(o + i, ov);
-        any = _mm256_or_si256(any, _mm256_or_si256(ev, ov));
-    }
-    uint32_t r = or_lanes8(any);
-    if (i < n)
-        r |= bloom_row_htent_eo_sse2(v + i, e + i, o + i, n - i);
-    return r;
+    for (; i + 8 <= n; i += 8)
+        any = _mm256_or_si256(any, htent_eo8(v, e, o, i));
+    if (i < n && n >= 8) /* the tail: a block overlapping the last (e, o are not v) */
+        any = _mm256_or_si256(any, htent_eo8(v, e, o, n - 8));
+    else if (i < n)
+        return bloom_row_htent_eo_sse2(v + i, e + i, o + i, n - i);
+    return or_lanes8(any);
 }
 
 /* bloom_row_il_add_c over the first 8 nb pixels (e and o alternate from
@@ -306,39 +312,54 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
 
 /* ---- box down (levels 2 ..): column sums, then four of them ------------- */
 
+/* k <= BLOOM_BOX_CHUNK blocks of 8 pixels from x >= 1 (no clamp on the
+ * left): reads V from b = 6x - 3 up to b + 48 (k - 1) + 58, made 8 at a
+ * time, so sources up to 6x + 48 (k - 1) + 62. */
+static void box_blocks(const uint32_t *const s[4], uint32_t *dst, int x, int k)
+{
+    uint32_t v[BLOOM_BOX_CHUNK * 48 + 16];
+    const size_t b = (size_t)(6 * x - 3);
+    const int nv = (48 * (k - 1) + 59 + 7) / 8;
+    for (int i = 0; i < nv; i++) {
+        const size_t o = b + 8u * (size_t)i;
+        ST8(v + 8 * i, _mm256_add_epi32(_mm256_add_epi32(LD8(s[0] + o), LD8(s[1] + o)),
+                                        _mm256_add_epi32(LD8(s[2] + o), LD8(s[3] + o))));
+    }
+    uint32_t *d = dst + 3u * (size_t)x;
+    for (int q = 0; q < k; q++, d += 24) {
+        __m256i o[3];
+        bloom_box_block8(v + 48 * q, o);
+        ST8(d, o[0]);
+        ST8(d + 8, o[1]);
+        ST8(d + 16, o[2]);
+    }
+}
+
 void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
 {
-    /* blocks start at x = 1 (no clamp on the left); block x reads V up
-     * to b + 58 and, V made 8 at a time, sources up to 6x + 62 < 3 sw */
-    const int xa = 1;
+    /* blocks start at x = 1 (no clamp on the left) and read sources up to
+     * 6x + 62 < 3 sw (the last block x <= xr) */
+    const int xa = 1, xr = (3 * sw - 63) / 6;
     int nb = 0;
-    if (dw >= xa + 8 && 3 * sw >= 6 * xa + 63)
-        nb = imin((dw - xa) / 8, (3 * sw - 63 - 6 * xa) / 48 + 1);
+    if (dw >= xa + 8 && xr >= xa)
+        nb = imin((dw - xa) / 8, (xr - xa) / 8 + 1);
     if (nb <= 0) {
         bloom_row_box_sse2_any(s, dst, dw, sw);
         return;
     }
     bloom_row_box_range_c(s, dst, 0, xa, sw);
-    uint32_t v[BLOOM_BOX_CHUNK * 48 + 16];
-    for (int j = 0; j < nb; j += BLOOM_BOX_CHUNK) {
-        const int k = imin(BLOOM_BOX_CHUNK, nb - j), x = xa + 8 * j;
-        const size_t b = (size_t)(6 * x - 3);
-        const int nv = (48 * (k - 1) + 59 + 7) / 8;
-        for (int i = 0; i < nv; i++) {
-            const size_t o = b + 8u * (size_t)i;
-            ST8(v + 8 * i, _mm256_add_epi32(_mm256_add_epi32(LD8(s[0] + o), LD8(s[1] + o)),
-                                            _mm256_add_epi32(LD8(s[2] + o), LD8(s[3] + o))));
-        }
-        uint32_t *d = dst + 3u * (size_t)x;
-        for (int q = 0; q < k; q++, d += 24) {
-            __m256i o[3];
-            bloom_box_block8(v + 48 * q, o);
-            ST8(d, o[0]);
-            ST8(d + 8, o[1]);
-            ST8(d + 16, o[2]);
-        }
+    for (int j = 0; j < nb; j += BLOOM_BOX_CHUNK)
+        box_blocks(s, dst, xa + 8 * j, imin(BLOOM_BOX_CHUNK, nb - j));
+    int x = xa + 8 * nb;
+    /* the tail (a tile's rows end anywhere): one more block, overlapping
+     * the last, as far right as it reads inside the row; pixels written
+     * twice get the same value (dst is not an input) */
+    const int xo = imin(dw - 8, xr);
+    if (xo > x - 8) {
+        box_blocks(s, dst, xo, 1);
+        x = xo + 8;
     }
-    bloom_row_box_range_c(s, dst, xa + 8 * nb, dw, sw);
+    bloom_row_box_range_c(s, dst, x, dw, sw);
 }
 
 /* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
