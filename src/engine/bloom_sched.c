@@ -120,11 +120,29 @@ static inline int move_cursor(bg_gather_t *ga, int first)
     return slot;
 }
 
-/* The gather of one input whose rows reach past an edge, whose ring has
- * no bitmap, or that adds a column offset (run_row's long path): the slot
- * cursor moved to the first row read, the row pointers laid out in
- * rows[*used ..] (edge rows repeated, a tile's column offset added) or,
- * when neither, the slots' own; returns which are zero. */
+/* The cursor moved to row lo, the first of rows lo .. lo + n1 that lie
+ * inside the input: their slots are consecutive from it (rings keep their
+ * slots' row pointers and tags twice over: any run of consecutive slots is
+ * one array). Rows are made in order: the first read intact and the last
+ * made, all are. */
+static BLOOM_ALWAYS_INLINE int cursor_check(bloom_t *g, bg_gather_t *ga, int lo)
+{
+    const int slot = move_cursor(ga, lo);
+#if BLOOM_CHECK_RINGS
+    const int32_t *tags = ga->tags + slot;
+    if (((tags[0] ^ lo) | (tags[ga->n1] ^ (lo + ga->n1))) & ~ZBIT)
+        g->failed = true;
+#else
+    (void)g;
+#endif
+    return slot;
+}
+
+/* The gather of one input whose rows reach past an edge, or whose ring
+ * has no bitmap (run_row's long path): the slot cursor moved to the first
+ * row read, the row pointers laid out in rows[*used ..] (edge rows
+ * repeated, a tile's column offset added) or, when neither, the slots'
+ * own; returns which are zero. */
 static BLOOM_NOINLINE uint32_t gather_edge(bloom_t *g, bg_gather_t *ga, int lo, const void **rows, int *used,
                                            const void *const **in)
 {
@@ -140,21 +158,13 @@ static BLOOM_NOINLINE uint32_t gather_edge(bloom_t *g, bg_gather_t *ga, int lo, 
     (void)g;
 #endif
     uint32_t zm = 0;
-    if (lo == first && lo + n1 == last) { /* no edge row */
+    if (lo == first && lo + n1 == last && !ga->add) { /* no edge row, no offset: the slots' own pointers */
         if (BLOOM_USE_SKIP && ga->zb)
             zm = zero_bits(ga, slot);
         else if (BLOOM_USE_SKIP)
             for (int k = 0; k <= n1; k++)
                 zm |= ((uint32_t)tags[k] >> 30 & 1u) << k;
-        if (!ga->add) { /* the slots' own pointers */
-            *in = ring;
-            return zm;
-        }
-        const void **p = rows + *used; /* a tile's column offset added */
-        *in = p;
-        *used += n1 + 1;
-        for (int k = 0; k <= n1; k++)
-            p[k] = (const uint8_t *)ring[k] + ga->add;
+        *in = ring;
         return zm;
     }
     *in = rows + *used; /* edge rows repeated, or a tile's column offset added */
@@ -184,16 +194,18 @@ static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         const int lo = ((2 * r) >> ga->sh) + ga->lo;
         uint32_t zm = 0;
         if ((unsigned)lo < ga->fend) { /* no edge row, no offset: the slots' own pointers */
-            /* the rows are consecutive slots from the cursor (rings keep
-             * their slots' row pointers and tags twice over: any run of
-             * consecutive slots is one array) */
-            const int slot = move_cursor(ga, lo);
-#if BLOOM_CHECK_RINGS /* rows are made in order: the first read intact and the last made, all are */
-            const int32_t *tags = ga->tags + slot;
-            if (((tags[0] ^ lo) | (tags[ga->n1] ^ (lo + ga->n1))) & ~ZBIT)
-                g->failed = true;
-#endif
+            const int slot = cursor_check(g, ga, lo);
             in[i] = ga->ring + slot;
+            if (BLOOM_USE_SKIP)
+                zm = zero_bits(ga, slot);
+        } else if (ga->add && lo >= 0 && lo + ga->n1 < ga->h) { /* (fend 0: the untiled test stays one) */
+            /* the caller's own rows (a source ring has a bitmap), a tile's column offset added */
+            const int slot = cursor_check(g, ga, lo);
+            const void **p = rows + used;
+            in[i] = p;
+            used += ga->n1 + 1;
+            for (int k = 0; k <= ga->n1; k++)
+                p[k] = (const uint8_t *)ga->ring[slot + k] + ga->add;
             if (BLOOM_USE_SKIP)
                 zm = zero_bits(ga, slot);
         } else {

@@ -93,7 +93,7 @@ typedef struct {
  * factor). Rows whose first row read, base(r) + lo, is below fend read no
  * clamped row (base(r) + hi < h): run_row's short path, with the slots'
  * own pointers and the bitmap (fend 0: never, for an input with an offset
- * to add or a ring with no bitmap). */
+ * to add, which run_row tests next, or a ring with no bitmap). */
 typedef struct {
     const void *const *ring;
     const int32_t *tags;
