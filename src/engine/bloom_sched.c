@@ -178,7 +178,15 @@ static BLOOM_NOINLINE uint32_t gather_edge(bloom_t *g, bg_gather_t *ga, int lo, 
 }
 #endif
 
-static BLOOM_NOINLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
+/* Node n's row r into dst, its inputs gathered. With the static schedule
+ * one walk makes every row (walk_to_output): inlined there; the size build
+ * calls it from two places. */
+#if BLOOM_SCHED_TABLE
+#define RUN_ROW_INLINE BLOOM_ALWAYS_INLINE
+#else
+#define RUN_ROW_INLINE BLOOM_NOINLINE
+#endif
+static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 {
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN]; /* (the row function reads in[0 .. nin - 1]) */
@@ -364,7 +372,7 @@ static BLOOM_NOINLINE void next_row(bloom_t *g, int ni)
 {
     bg_node_t *n = &g->gr.node[ni];
     const int r = n->next;
-    if (g->dry) {
+    if (BLOOM_SCHED_TABLE || g->dry) { /* (the table's rows are made by its walk) */
         n->need = (uint16_t)imax(n->need, r - imin(oldest_of(g, ni), r) + 1);
         emit(g, ni);
     } else {
@@ -433,7 +441,7 @@ void bloom_dry_frame(bloom_t *g)
 }
 
 #if BLOOM_SCHED_TABLE
-static bool walk_to_output(bloom_t *g);
+static bool walk_to_output(bloom_t *g, void *dst);
 #endif
 
 bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row)
@@ -458,7 +466,7 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
      * slot (a pull could not: it stops at that row); then a push is BUSY
      * only when an output row is due */
     if (r - g->src_cap >= g->src_free)
-        walk_to_output(g);
+        walk_to_output(g, NULL);
     if (g->failed)
         return BLOOM_E_INTERNAL;
     if (r - g->src_cap >= g->src_free)
@@ -499,9 +507,11 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
 
 #if BLOOM_SCHED_TABLE
 /* Walk the schedule up to the output's next row: true when it is due (its
- * inputs made), false when the walk waits for a push. The tile's halo rows
- * above it are passed (their inputs are made, they are not). */
-static bool walk_to_output(bloom_t *g)
+ * inputs made), and then made into dst if there is one (the walk passes
+ * its byte); false when the walk waits for a push. The tile's halo rows
+ * above it are passed (their inputs are made, they are not). The one
+ * caller of run_row: every row is made here, run_row inlined. */
+static bool walk_to_output(bloom_t *g, void *dst)
 {
     /* the output node is the last (bloom_plan checks it): a byte below it
      * is a node row, the commonest */
@@ -525,6 +535,10 @@ static bool walk_to_output(bloom_t *g)
             node[e].next++;
         } else if (e == out) {
             if (!bg_tiled(&g->row) || o->next >= g->tile_y0) {
+                if (dst) {
+                    run_row(g, o, o->next, dst);
+                    at++;
+                }
                 g->sched_at = at;
                 return true;
             }
@@ -548,10 +562,9 @@ bloom_status_t bloom_sched_pull(bloom_t *g, void *dst_row)
 #if BLOOM_SCHED_TABLE
     if (o->next >= g->gr.h[0] || (bg_tiled(&g->row) && o->next >= g->tile_y1))
         return BLOOM_DONE;
-    if (!walk_to_output(g) || g->failed)
+    void *row = bg_tiled(&g->row) ? (void *)g->out_row : dst_row;
+    if (!walk_to_output(g, row) || g->failed) /* (the row made) */
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
-    g->sched_at++; /* (the output row's byte) */
-    const int y = o->next;
 #else
 #if !BLOOM_SMALL
     if (g->row.tiled) /* halo rows above the tile: their inputs are made, they are not */
@@ -563,19 +576,15 @@ bloom_status_t bloom_sched_pull(bloom_t *g, void *dst_row)
         return BLOOM_DONE;
     if (y >= g->src_n || !ensure_inputs(g, o, y))
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
+    run_row(g, o, y, bg_tiled(&g->row) ? (void *)g->out_row : dst_row);
+    if (g->failed)
+        return BLOOM_E_INTERNAL;
 #endif
-    if (!bg_tiled(&g->row)) {
-        run_row(g, o, y, dst_row);
-    } else { /* the tile's columns of the window's row */
+    if (bg_tiled(&g->row)) { /* the tile's columns of the window's row */
         const size_t bpp = (size_t)bloom_bpp(g->cfg.out_fmt);
-        run_row(g, o, y, g->out_row);
-        if (g->failed)
-            return BLOOM_E_INTERNAL;
         memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp,
                g->out_row + (size_t)(g->tile_x0 - o->xa) * bpp, (size_t)(g->tile_x1 - g->tile_x0) * bpp);
     }
-    if (g->failed)
-        return BLOOM_E_INTERNAL;
     o->next++;
     g->out_rows++;
     return BLOOM_OK;
