@@ -32,12 +32,14 @@ $(FUZZ_DIR)/libfuzzbloom.a: $(FUZZ_LIB_OBJ)
 
 # One binary per target; fuzz_ppm and fuzz_pfm are one source (the reader
 # is one), their corpora differ.
+# fuzz_api's configurations are a second source of its own.
 FUZZ_MAIN = $(if $(filter ppm pfm,$(1)),fuzz_pnm,fuzz_$(1))
+FUZZ_EXTRA_api := $(FUZZ_DIR)/obj/tests/fuzz/fuzz_api_config.o
 define FUZZ_LINK
 $(FUZZ_DIR)/fuzz_$(1): tests/fuzz/$(call FUZZ_MAIN,$(1)).c $(FUZZ_DIR)/obj/tests/fuzz/fuzz_util.o \
-                      $(FUZZ_DIR)/libfuzzbloom.a $(FUZZ_HDR)
+                      $(FUZZ_EXTRA_$(1)) $(FUZZ_DIR)/libfuzzbloom.a $(FUZZ_HDR)
 	$$(CLANG) $$(FUZZ_CFLAGS) -fsanitize=fuzzer $$< $(FUZZ_DIR)/obj/tests/fuzz/fuzz_util.o \
-	  $(FUZZ_DIR)/libfuzzbloom.a $$(SIMTOOL_LIBS) -o $$@
+	  $(FUZZ_EXTRA_$(1)) $(FUZZ_DIR)/libfuzzbloom.a $$(SIMTOOL_LIBS) -o $$@
 endef
 $(foreach t,$(FUZZ_TARGETS),$(eval $(call FUZZ_LINK,$(t))))
 

@@ -153,7 +153,7 @@ function); \`make memtable\` prints the same table.
 
 ## How the halo is chosen
 
-\`bloom_plan\` (\`src/engine/bloom.c\`) first builds the graph over the whole
+\`bloom_plan\` (\`src/engine/bloom.c\`, the tile parts in \`bloom_tile.c\`) first builds the graph over the whole
 frame. \`tile_halo\` walks it from the source to the output node and adds,
 for each input of a node, exactly how far the node's pixels reach into it
 at the input's resolution: a pixel p at 2^-k covers frame pixels

@@ -104,6 +104,15 @@ bloom_status_t bloom_plan(bloom_t *b, const bloom_config_t *cfg, bg_node_t *node
  * base NULL (the engine at base otherwise) only count.
  * per_level[k] (if not NULL, zeroed) gets the ring bytes of level k. */
 uint64_t bloom_carve(bloom_t *b, uint8_t *base, size_t *per_level);
+#if !BLOOM_SMALL
+/* A tile's window [x0, x1) x [y0, y1) of the frame: the tile, the halo of
+ * b's graph over the whole frame either way, out to multiples of the
+ * deepest level's pixel (its levels then halve as the frame's), within the
+ * frame (bloom_tile.c). */
+void bloom_tile_window(const bloom_t *b, const bloom_config_t *cfg, int *x0, int *y0, int *x1, int *y1);
+/* Each node of b's window graph cut to the columns its readers use. */
+void bloom_tile_cut(bloom_t *b);
+#endif
 /* The dry run: ring sizes, source rows, latency. */
 void bloom_dry_frame(bloom_t *b);
 bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row);

@@ -1,4 +1,4 @@
-/* Seeds of fuzz_api (byte strings in the order fuzz_api.c reads them),
+/* Seeds of fuzz_api (byte strings in the order fuzz_api.c and fuzz_api_config.c read them),
  * fuzz_cam_opts (argument lists, NUL-separated) and fuzz_cam_conv. */
 #include "gen_seeds.h"
 
