@@ -149,12 +149,12 @@ static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c
     return r;
 }
 
-/* bloom_row_il_add_c in groups of 8 pixels: the R, G, B planes of the even
- * and the odd columns (vld3) zipped into pixel order, stored by vst3. */
-static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+/* bloom_row_il_add_c over the first 8 nb pixels: the R, G, B planes of
+ * the even and the odd columns (vld3) zipped into pixel order, stored by
+ * vst3. */
+static void il_add_blocks(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int nb)
 {
-    int x = 0;
-    for (; x + 8 <= n; x += 8, e += 12, o += 12, dst += 24) {
+    for (; nb > 0; nb--, e += 12, o += 12, dst += 24) {
         const uint32x4x3_t ev = vld3q_u32(e), ov = vld3q_u32(o);
         uint32x4x3_t lo, hi;
         for (int c = 0; c < 3; c++) {
@@ -172,8 +172,24 @@ static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, ui
         vst3q_u32(dst, lo);
         vst3q_u32(dst + 12, hi);
     }
-    if (x < n)
-        bloom_row_il_add_c(e, o, add, dst, n - x);
+}
+
+/* bloom_row_il_add_c in groups of 8 pixels, the tail as the AVX2 twin's
+ * (bloom_row_avx2.c): a block overlapping the last where dst is not add. */
+static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
+{
+    il_add_blocks(e, o, add, dst, n >> 3);
+    int x = n & ~7;
+    if (x == n)
+        return;
+    if (n > 8 && add != dst) {
+        const int b = (n - 8) & ~1; /* (even: e and o alternate from it) */
+        il_add_blocks(e + 3 * (b >> 1), o + 3 * (b >> 1), add ? add + 3 * b : NULL, dst + 3 * b, 1);
+        x = b + 8;
+        if (x == n)
+            return;
+    }
+    bloom_row_il_add_c(e + 3 * (x >> 1), o + 3 * (x >> 1), add ? add + 3 * x : NULL, dst + 3 * x, n - x);
 }
 
 void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,

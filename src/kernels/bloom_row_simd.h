@@ -230,24 +230,29 @@ static uint32_t vtent_flat(const uint32_t *a, const uint32_t *b, const uint32_t 
     return r;
 }
 
-/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3. */
+/* e[i] = (3 v[i-3] + 4 v[i] + v[i+3] + 3) >> 3, o[i] = (v[i-3] + 4 v[i] + 3 v[i+3] + 3) >> 3,
+ * samples i .. i + 3: their OR. */
+static inline VT htent_eo4(const uint32_t *v, uint32_t *e, uint32_t *o, int i)
+{
+    const VT p = LD4(v + i - 3), q = LD4(v + i + 3);
+    const VT m = ADD(ADD(SHL(LD4(v + i), 2), DUP(BLOOM_HT_RND)), ADD(p, q));
+    const VT ev = SHR(ADD(m, SHL(p, 1)), 3), ov = SHR(ADD(m, SHL(q, 1)), 3);
+    ST4(e + i, ev);
+    ST4(o + i, ov);
+    return OR(ev, ov);
+}
+
 static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n)
 {
-    const VT k4 = DUP(BLOOM_HT_RND);
     VT any = DUP(0u);
     int i = 0;
-    for (; i + 4 <= n; i += 4) {
-        const VT p = LD4(v + i - 3), q = LD4(v + i + 3);
-        const VT m = ADD(ADD(SHL(LD4(v + i), 2), k4), ADD(p, q));
-        const VT ev = SHR(ADD(m, SHL(p, 1)), 3), ov = SHR(ADD(m, SHL(q, 1)), 3);
-        ST4(e + i, ev);
-        ST4(o + i, ov);
-        any = OR(any, OR(ev, ov));
-    }
-    uint32_t r = OR_LANES(any);
-    if (i < n)
-        r |= bloom_row_htent_eo_c(v + i, e + i, o + i, n - i);
-    return r;
+    for (; i + 4 <= n; i += 4)
+        any = OR(any, htent_eo4(v, e, o, i));
+    if (i < n && n >= 4) /* the tail: a block overlapping the last (e, o are not v) */
+        any = OR(any, htent_eo4(v, e, o, n - 4));
+    else if (i < n)
+        return bloom_row_htent_eo_c(v + i, e + i, o + i, n - i);
+    return OR_LANES(any);
 }
 #endif
 
