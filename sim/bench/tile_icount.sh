@@ -76,7 +76,7 @@ split_table=$(join -t "$(printf '\t')" -a1 -a2 -e 0 -o 0,1.2,2.2 "$dir/fn.s0.tsv
     function part(f) {
         if (f ~ /^(run_row|gather_edge|walk_to_output|make_row|next_row|ensure|ensure_inputs|oldest_of|input_top)$/ || f ~ /^bloom_sched_/) return "scheduler (bloom_sched.c)"
         if (f ~ /(box_src|knee|_d1|dark|bg_fn_d1)/) return "level 1 of the down chain (knee, dark test, box from the source)"
-        if (f ~ /(row_box|bg_fn_box)/) return "deeper levels of the down chain (boxes)"
+        if (f ~ /(row_box|box_blocks|bg_fn_box)/) return "deeper levels of the down chain (boxes)"
         if (f ~ /(mem(cpy|move|set))/) return "memcpy, memset (the tile row copied out, dark rows)"
         if (f ~ /(out_|encode|row_copy|bg_fn_out)/) return "output row (tent, composite, encode)"
         if (f ~ /(tent|il_add|htent|vtent)/) return "up chain (tents, sums)"
@@ -242,15 +242,20 @@ $split_table
 A strip engine walks the whole frame's schedule: every node row of every
 level is gathered and made, only narrower, so the scheduler's cost is paid
 once per strip; a strip's readers of the caller's own source rows add
-their column offset to each row read (\`gather_edge\`: the ring holds the
-caller's pointers, which change with every push; a view of them per
+their column offset to each row read, in line (\`run_row\`: the ring holds
+the caller's pointers, which change with every push; a view of them per
 reader, written by each push, would cost about 3 KB of workspace per
 reader in strips of 256 columns). The level-1 down chain runs over the halo (source columns
-beyond the strip); the SIMD kernels' last few pixels of a row, which
-narrower rows have more of per pixel, go through their C or SSE2 tails
-(\`bloom_row_il_add_c\`, \`bloom_row_htent_eo_c\`, \`bloom_encode_eo\`); the
-output node makes 2 columns left of the tile (its clamped reads spoil them)
-into a row of the workspace, and the tile's part is copied out.
+beyond the strip). The SIMD kernels end a row that is not a whole number
+of blocks with one more block overlapping the last (the box, the tent's
+horizontal pass and its interleave: their outputs are not their inputs),
+so a narrow row's tail costs a block, not a C loop; the encoder's tail
+(\`bloom_encode_eo\`) and the box's clamped columns at a row's ends are
+still C. The output node makes 2 columns left of the tile (its clamped
+reads spoil them) into a row of the workspace, and the tile's part is
+copied out. A part can cost less in strips than untiled (the up chain
+here): a row is skipped whole when every row it reads is
+zero, and a strip's narrower rows are zero more often.
 
 Run time of this page: $t_all s under callgrind.
 EOF2
