@@ -136,6 +136,30 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
 /* dst pixels 0 .. n-1 = the even/odd columns e, o interleaved (pixel x is
  * column x / 2 of e or o), plus add if not NULL (add may equal dst). */
 void bloom_row_il_add_c(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n);
+/* bloom_row_il_add_c through a SIMD twin's blocks (blocks(e, o, add, dst,
+ * nb): the first 8 nb pixels). The tail is one more block overlapping the
+ * last (a tile's rows end anywhere): pixels written twice get the same
+ * value, since dst is read by neither e, o nor add; where add is dst
+ * (gamedev adds in place) the tail is C. The block starts on an even
+ * pixel, so an odd n leaves C its last. Inlined with the twin's own blocks. */
+typedef void (*bloom_il_blocks_fn)(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst,
+                                   int nb);
+static inline void bloom_il_add_by8(bloom_il_blocks_fn blocks, const uint32_t *e, const uint32_t *o,
+                                    const uint32_t *add, uint32_t *dst, int n)
+{
+    blocks(e, o, add, dst, n >> 3);
+    int x = n & ~7;
+    if (x == n)
+        return;
+    if (n > 8 && add != dst) {
+        const int b = (n - 8) & ~1;
+        blocks(e + 3 * (b >> 1), o + 3 * (b >> 1), add ? add + 3 * b : NULL, dst + 3 * b, 1);
+        x = b + 8;
+        if (x == n)
+            return;
+    }
+    bloom_row_il_add_c(e + 3 * (x >> 1), o + 3 * (x >> 1), add ? add + 3 * x : NULL, dst + 3 * x, n - x);
+}
 
 /* 16-bit samples (cfg.sample_bits = 16; sim/docs/fixed-point.md, "16-bit
  * samples"): the rings of the default pipeline hold uint16_t, the value

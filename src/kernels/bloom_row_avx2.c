@@ -136,22 +136,7 @@ static void il_add_blocks(const uint32_t *e, const uint32_t *o, const uint32_t *
 /* bloom_row_il_add_c in groups of 8 pixels. */
 static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
 {
-    il_add_blocks(e, o, add, dst, n >> 3);
-    int x = n & ~7;
-    if (x == n)
-        return;
-    if (n > 8 && add != dst) {
-        /* the tail as a block that overlaps the last one (a tile's rows end
-         * anywhere): pixels written twice get the same value, since dst is
-         * read by neither e, o nor add (gamedev adds in place: the C tail);
-         * the block starts on an even pixel, so an odd n leaves C its last */
-        const int b = (n - 8) & ~1;
-        il_add_blocks(e + 3 * (b >> 1), o + 3 * (b >> 1), add ? add + 3 * b : NULL, dst + 3 * b, 1);
-        x = b + 8;
-        if (x == n)
-            return;
-    }
-    bloom_row_il_add_c(e + 3 * (x >> 1), o + 3 * (x >> 1), add ? add + 3 * x : NULL, dst + 3 * x, n - x);
+    bloom_il_add_by8(il_add_blocks, e, o, add, dst, n);
 }
 
 static uint32_t vtent_in(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n,

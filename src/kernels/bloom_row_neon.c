@@ -174,22 +174,10 @@ static void il_add_blocks(const uint32_t *e, const uint32_t *o, const uint32_t *
     }
 }
 
-/* bloom_row_il_add_c in groups of 8 pixels, the tail as the AVX2 twin's
- * (bloom_row_avx2.c): a block overlapping the last where dst is not add. */
+/* bloom_row_il_add_c in groups of 8 pixels. */
 static void il_add(const uint32_t *e, const uint32_t *o, const uint32_t *add, uint32_t *dst, int n)
 {
-    il_add_blocks(e, o, add, dst, n >> 3);
-    int x = n & ~7;
-    if (x == n)
-        return;
-    if (n > 8 && add != dst) {
-        const int b = (n - 8) & ~1; /* (even: e and o alternate from it) */
-        il_add_blocks(e + 3 * (b >> 1), o + 3 * (b >> 1), add ? add + 3 * b : NULL, dst + 3 * b, 1);
-        x = b + 8;
-        if (x == n)
-            return;
-    }
-    bloom_row_il_add_c(e + 3 * (x >> 1), o + 3 * (x >> 1), add ? add + 3 * x : NULL, dst + 3 * x, n - x);
+    bloom_il_add_by8(il_add_blocks, e, o, add, dst, n);
 }
 
 void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
