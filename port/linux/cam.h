@@ -2,7 +2,9 @@
  * GPIO frame-sync output and mode button (libgpiod v1).
  *
  * Modules: cam_opts.c (command line), cam_conv.c (row conversion, pure
- * framebuffer logic), cam_aux.c (the --aux plane of the presets), v4l2.c (capture), fbdev.c (output), gpio.c (lines),
+ * framebuffer logic), cam_aux.c (the --aux plane of the presets), v4l2.c
+ * (capture) and v4l2_fmt.c (its format negotiation), fbdev.c (output),
+ * gpio.c (lines),
  * drm.c (DRM/KMS output, the choice of display), drm_pick.c (its pure rules),
  * main.c (frame loop, signals, statistics, recording), cam_mt.c (whole
  * frames on threads, --threads N > 1). Everything is allocated before the
@@ -180,7 +182,7 @@ typedef struct {
 } cam_fmt_cand_t;
 int cam_fmt_best(const cam_fmt_cand_t *c, int n);
 
-/* ---- capture (v4l2.c) ------------------------------------------------------ */
+/* ---- capture (v4l2.c, v4l2_fmt.c) ----------------------------------------- */
 typedef struct {
     void *start;
     size_t length;
@@ -291,6 +293,19 @@ int cam_v4l2_requeue(cam_v4l2_t *c, const cam_frame_t *f);
 void cam_v4l2_close(cam_v4l2_t *c); /* STREAMOFF, unmap, free buffers, close */
 /* ioctl(2), retried while it fails with EINTR. */
 int cam_xioctl(int fd, unsigned long req, void *arg);
+/* Between v4l2.c and v4l2_fmt.c: the device's ioctl through the seam in c
+ * (retried on EINTR); a message "bloom_cam: ..." kept in c->msg (the last
+ * one) and printed unless c->quiet (a reconnection's attempts); the buffer
+ * type of c's API; --format auto's fourcc (0: none usable, said); the
+ * planes' sizes from S_FMT's answer (fm: a struct v4l2_format; 0, or -1
+ * said when they cannot hold a frame); --fps by VIDIOC_S_PARM. */
+struct v4l2_format;
+int cam_v4l2_ioctl(cam_v4l2_t *c, unsigned long req, void *arg);
+__attribute__((format(printf, 2, 3))) void cam_v4l2_say(cam_v4l2_t *c, const char *fmt, ...);
+uint32_t cam_v4l2_buf_type(const cam_v4l2_t *c);
+uint32_t cam_v4l2_choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int fps);
+int cam_v4l2_layout(cam_v4l2_t *c, const cam_fmt_t *f, const struct v4l2_format *fm);
+void cam_v4l2_set_fps(cam_v4l2_t *c, int fps);
 
 /* ---- what a run went through (cam_stats.c) -------------------------------- */
 typedef struct {

@@ -25,7 +25,7 @@ CAM_DIR := port/linux
 # are expanded as it is read.
 CAM_MT_SRC := port/threads/bloom_mt.c
 CAM_MT_HDR := port/threads/bloom_mt.h
-CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c \
+CAM_SRC := $(CAM_DIR)/main.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/v4l2.c $(CAM_DIR)/v4l2_fmt.c \
            $(CAM_DIR)/cam_aux.c $(CAM_DIR)/cam_mjpeg.c $(CAM_DIR)/cam_stats.c $(CAM_DIR)/cam_engines.c $(CAM_DIR)/drm.c $(CAM_DIR)/drm_pick.c \
            $(CAM_DIR)/fbdev.c $(CAM_DIR)/gpio.c $(CAM_DIR)/cam_mt.c $(CAM_MT_SRC)
 CAM_HDR := $(CAM_DIR)/cam.h $(CAM_DIR)/cam_conv.h $(CAM_DIR)/test_jpeg.h $(CAM_MT_HDR)
@@ -89,7 +89,7 @@ $(B)/linux/bloom_cam.static: $(CAM_SRC) $(CAM_HDR) $(CORE_SRC) $(CORE_HDR)
 CAM_TEST_SRC := $(CAM_DIR)/test_host.c $(CAM_DIR)/test_conv.c $(CAM_DIR)/test_dequeue.c $(CAM_DIR)/cam_opts.c $(CAM_DIR)/cam_conv.c \
                 $(CAM_DIR)/cam_fmt.c $(CAM_DIR)/gpio.c \
                 $(CAM_DIR)/cam_aux.c \
-                $(CAM_DIR)/v4l2.c $(CAM_DIR)/drm_pick.c $(CAM_DIR)/cam_mjpeg.c
+                $(CAM_DIR)/v4l2.c $(CAM_DIR)/v4l2_fmt.c $(CAM_DIR)/drm_pick.c $(CAM_DIR)/cam_mjpeg.c
 # (test_conv.c reads its frames back through bloom_sim's own raw reader:
 # sim_source.c and the decoders it links, with sim.mk's flags and libraries.)
 CAM_TEST_SIM := sim/sim_convert.c sim/sim_source.c sim/sim_png.c sim/sim_jpeg.c sim/sim_exr.c

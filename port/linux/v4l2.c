@@ -1,6 +1,6 @@
 /* bloom_cam: V4L2 capture with mmap streaming, single-planar or through
  * the multi-planar API (one plane, or two for the NV..M formats); the
- * format asked (--format) or chosen (auto, choose_format); --fps. Every
+ * format asked (--format) or chosen (auto: v4l2_fmt.c); --fps. Every
  * failure prints "bloom_cam: CALL: reason" once; cam_v4l2_close undoes whatever was done
  * (STREAMOFF, munmap, REQBUFS 0, close) and is safe to call at any point. */
 #define _GNU_SOURCE /* ppoll(2), in glibc beside POSIX 2008 */
@@ -32,8 +32,7 @@ int cam_xioctl(int fd, unsigned long req, void *arg)
     return r;
 }
 
-/* The device's ioctl through the seam in c, retried on EINTR. */
-static int xioctl(cam_v4l2_t *c, unsigned long req, void *arg)
+int cam_v4l2_ioctl(cam_v4l2_t *c, unsigned long req, void *arg)
 {
     int r;
     do
@@ -48,9 +47,7 @@ static int sys_ppoll(struct pollfd *fds, nfds_t nfds, int timeout_ms, const sigs
     return ppoll(fds, nfds, timeout_ms < 0 ? NULL : &t, mask);
 }
 
-/* A message "bloom_cam: ...": kept in c->msg (the last one), printed unless
- * c->quiet (the attempts of a reconnection). */
-__attribute__((format(printf, 2, 3))) static void say(cam_v4l2_t *c, const char *fmt, ...)
+void cam_v4l2_say(cam_v4l2_t *c, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -62,7 +59,7 @@ __attribute__((format(printf, 2, 3))) static void say(cam_v4l2_t *c, const char 
 
 static int sys_fail(cam_v4l2_t *c, const char *call)
 {
-    say(c, "%s: %s", call, strerror(errno));
+    cam_v4l2_say(c, "%s: %s", call, strerror(errno));
     return -1;
 }
 
@@ -92,7 +89,7 @@ static int is_ycc(const cam_fmt_t *f)
     return f->chroma >= 0 || (f->bpp == 2 && f->opt != CAM_FMT_RGB565);
 }
 
-static uint32_t buf_type(const cam_v4l2_t *c)
+uint32_t cam_v4l2_buf_type(const cam_v4l2_t *c)
 {
     return c->mplane ? V4L2_BUF_TYPE_VIDEO_CAPTURE_MPLANE : V4L2_BUF_TYPE_VIDEO_CAPTURE;
 }
@@ -106,179 +103,13 @@ static int nplanes(const cam_v4l2_t *c)
 static void mmap_buffer(const cam_v4l2_t *c, vbuf_t *v, int index)
 {
     memset(v, 0, sizeof *v);
-    v->b.type = buf_type(c);
+    v->b.type = cam_v4l2_buf_type(c);
     v->b.memory = V4L2_MEMORY_MMAP;
     v->b.index = (uint32_t)index;
     if (c->mplane) {
         v->b.m.planes = v->p;
         v->b.length = (uint32_t)nplanes(c);
     }
-}
-
-/* Whether the device offers fourcc at w x h (VIDIOC_ENUM_FRAMESIZES; a
- * driver without it: yes, S_FMT will adjust). */
-static int size_offered(cam_v4l2_t *c, uint32_t fourcc, int w, int h)
-{
-    struct v4l2_frmsizeenum s;
-    for (uint32_t i = 0;; i++) {
-        memset(&s, 0, sizeof s);
-        s.index = i;
-        s.pixel_format = fourcc;
-        if (xioctl(c, VIDIOC_ENUM_FRAMESIZES, &s))
-            return i == 0;
-        if (s.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
-            if (s.discrete.width == (uint32_t)w && s.discrete.height == (uint32_t)h)
-                return 1;
-            continue;
-        }
-        const struct v4l2_frmsize_stepwise *t = &s.stepwise;
-        const uint32_t sw = t->step_width ? t->step_width : 1, sh = t->step_height ? t->step_height : 1;
-        return (uint32_t)w >= t->min_width && (uint32_t)w <= t->max_width && (uint32_t)h >= t->min_height &&
-               (uint32_t)h <= t->max_height && ((uint32_t)w - t->min_width) % sw == 0 &&
-               ((uint32_t)h - t->min_height) % sh == 0;
-    }
-}
-
-/* Whether fps is offered at fourcc, w x h (VIDIOC_ENUM_FRAMEINTERVALS; a
- * driver without it: yes). */
-static int fps_offered(cam_v4l2_t *c, uint32_t fourcc, int w, int h, int fps)
-{
-    struct v4l2_frmivalenum s;
-    for (uint32_t i = 0; fps > 0; i++) {
-        memset(&s, 0, sizeof s);
-        s.index = i;
-        s.pixel_format = fourcc;
-        s.width = (uint32_t)w;
-        s.height = (uint32_t)h;
-        if (xioctl(c, VIDIOC_ENUM_FRAMEINTERVALS, &s))
-            return i == 0;
-        const uint64_t f = (uint64_t)fps;
-        if (s.type == V4L2_FRMIVAL_TYPE_DISCRETE) { /* an interval num/den s: fps = den/num */
-            if (s.discrete.numerator && f * s.discrete.numerator == s.discrete.denominator)
-                return 1;
-            continue;
-        }
-        const struct v4l2_fract *lo = &s.stepwise.min, *hi = &s.stepwise.max;
-        return f * lo->numerator <= lo->denominator && hi->denominator <= f * hi->numerator;
-    }
-    return 1;
-}
-
-/* --format auto: the best of what VIDIOC_ENUM_FMT lists (cam_fmt_best),
- * said on one line. 0 when there is none to convert (message printed). */
-static uint32_t choose_format(cam_v4l2_t *c, const char *dev, int w, int h, int fps)
-{
-    cam_fmt_cand_t cand[32];
-    char offered[200] = "", usable[160] = ""; /* every fourcc (printable), the names converted */
-    int n = 0, others = 0;
-    for (uint32_t i = 0; n < 32; i++) {
-        struct v4l2_fmtdesc d;
-        memset(&d, 0, sizeof d);
-        d.index = i;
-        d.type = buf_type(c);
-        if (xioctl(c, VIDIOC_ENUM_FMT, &d))
-            break;
-        char cc[5];
-        for (int j = 0; j < 4; j++) { /* the big-endian flag (bit 31) and spaces shown as they read */
-            const char ch = (char)((d.pixelformat >> (8 * j)) & 0x7f);
-            cc[j] = ch > ' ' && ch < 127 ? ch : ch == ' ' ? '\0' : '?';
-        }
-        cc[4] = '\0';
-        size_t k = strlen(offered);
-        snprintf(offered + k, sizeof offered - k, "%s%s", k ? " " : "", cc);
-        const cam_fmt_t *f = cam_fmt_of_fourcc(d.pixelformat);
-        if (!f || (f->planes == 2 && !c->mplane) || (f->bpp && (d.flags & V4L2_FMT_FLAG_COMPRESSED))) {
-            others++;
-            continue;
-        }
-        k = strlen(usable);
-        snprintf(usable + k, sizeof usable - k, "%s%s", k ? " " : "", f->name);
-        cand[n].f = f;
-        cand[n].size_ok = size_offered(c, f->fourcc, w, h);
-        cand[n].fps_ok = fps_offered(c, f->fourcc, w, h, fps);
-        n++;
-    }
-    const int b = cam_fmt_best(cand, n);
-    if (b < 0) {
-        say(c, "VIDIOC_ENUM_FMT: %s offers %s: none of them converted here (--format)", dev,
-            offered[0] ? offered : "no format");
-        return 0;
-    }
-    if (!c->quiet) {
-        fprintf(stderr, "%s: --format auto: %s of %s (and %d formats not converted here; %dx%d %s", CAM_PROG,
-                cand[b].f->name, usable, others, w, h,
-                cand[b].size_ok ? "offered" : "not offered: the driver's nearest");
-        if (fps)
-            fprintf(stderr, ", %d fps %s", fps, cand[b].fps_ok ? "offered" : "not offered");
-        fputs(")\n", stderr);
-    }
-    return cand[b].f->fourcc;
-}
-
-/* The planes' sizes of the format in force, from S_FMT's answer: 0, or -1
- * (message said) when the driver's numbers cannot hold a frame. */
-static int layout(cam_v4l2_t *c, const cam_fmt_t *f, const struct v4l2_format *fm)
-{
-    uint32_t size[2] = {0, 0};
-    if (c->mplane) {
-        const struct v4l2_pix_format_mplane *mp = &fm->fmt.pix_mp;
-        c->nplanes = mp->num_planes;
-        c->bytesperline = mp->plane_fmt[0].bytesperline;
-        c->bytesperline2 = mp->num_planes == 2 ? mp->plane_fmt[1].bytesperline : 0;
-        size[0] = mp->plane_fmt[0].sizeimage;
-        size[1] = mp->num_planes == 2 ? mp->plane_fmt[1].sizeimage : 0;
-        c->sizeimage = size[0] + size[1];
-        if (mp->num_planes != f->planes) {
-            say(c, "VIDIOC_S_FMT: %s in %u planes, not %d", f->name, (unsigned)mp->num_planes, f->planes);
-            return -1;
-        }
-    } else {
-        c->nplanes = 1;
-        c->bytesperline = fm->fmt.pix.bytesperline;
-        c->sizeimage = size[0] = fm->fmt.pix.sizeimage;
-    }
-    const uint32_t minline = (uint32_t)c->width * (uint32_t)f->bpp;
-    if (!f->bpp) /* compressed: no rows, a frame is what bytesused says (cam_mjpeg.c checks it) */
-        c->bytesperline = 0;
-    if (c->bytesperline < minline)
-        c->bytesperline = minline; /* some drivers leave it 0 */
-    const uint32_t luma = c->bytesperline * (uint32_t)c->height;
-    c->plane_bytes[0] = luma;
-    c->plane_bytes[1] = 0;
-    if (f->chroma >= 0) { /* NV..: the chroma rows, in the first plane or the second */
-        const uint32_t rows = ((uint32_t)c->height + (uint32_t)f->chroma) >> f->chroma;
-        if (c->bytesperline2 < minline + (minline & 1))
-            c->bytesperline2 = c->nplanes == 2 ? minline + (minline & 1) : c->bytesperline;
-        c->plane_bytes[c->nplanes - 1] += c->bytesperline2 * rows;
-    }
-    for (int p = 0; p < c->nplanes; p++)
-        if (size[p] < c->plane_bytes[p]) {
-            say(c,
-                "VIDIOC_S_FMT: unusable format %dx%d %s, bytesperline %u, plane %d of %u bytes (%u needed)",
-                c->width, c->height, f->name, (unsigned)c->bytesperline, p, (unsigned)size[p],
-                (unsigned)c->plane_bytes[p]);
-            return -1;
-        }
-    return 0;
-}
-
-/* --fps: VIDIOC_S_PARM; what the driver set is kept (c->fps), a driver
- * without frame rates is said, not refused. */
-static void set_fps(cam_v4l2_t *c, int fps)
-{
-    struct v4l2_streamparm sp;
-    memset(&sp, 0, sizeof sp);
-    sp.type = buf_type(c);
-    sp.parm.capture.timeperframe.numerator = 1;
-    sp.parm.capture.timeperframe.denominator = (uint32_t)fps;
-    if (xioctl(c, VIDIOC_S_PARM, &sp) || !(sp.parm.capture.capability & V4L2_CAP_TIMEPERFRAME)) {
-        if (!c->quiet)
-            fprintf(stderr, "%s: --fps %d: the driver sets no frame rate (VIDIOC_S_PARM: %s)\n", CAM_PROG,
-                    fps, errno ? strerror(errno) : "no V4L2_CAP_TIMEPERFRAME");
-        return;
-    }
-    const struct v4l2_fract *t = &sp.parm.capture.timeperframe;
-    c->fps = t->numerator ? (int)((t->denominator + t->numerator / 2) / t->numerator) : 0;
 }
 
 int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt fmt, int fps, int nbufs)
@@ -293,13 +124,13 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     c->ycc_note = "";
     c->fd = open(dev, O_RDWR | O_NONBLOCK | O_CLOEXEC);
     if (c->fd < 0) {
-        say(c, "open %s: %s", dev, strerror(errno));
+        cam_v4l2_say(c, "open %s: %s", dev, strerror(errno));
         return lost(c, CAM_LOST_DEVICE);
     }
 
     struct v4l2_capability cap;
     memset(&cap, 0, sizeof cap);
-    if (xioctl(c, VIDIOC_QUERYCAP, &cap)) { /* ENOTTY: not a V4L2 device at all (the wrong path) */
+    if (cam_v4l2_ioctl(c, VIDIOC_QUERYCAP, &cap)) { /* ENOTTY: not a V4L2 device at all (the wrong path) */
         if (errno == ENOTTY || errno == EINVAL)
             return sys_fail(c, "VIDIOC_QUERYCAP"), lost(c, CAM_LOST_CONFIG);
         return dev_fail(c, "VIDIOC_QUERYCAP");
@@ -308,28 +139,28 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     snprintf(c->card, sizeof c->card, "%s", (const char *)cap.card);
     snprintf(c->driver, sizeof c->driver, "%s", (const char *)cap.driver);
     if (!(caps & (V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_VIDEO_CAPTURE_MPLANE))) {
-        say(c, "VIDIOC_QUERYCAP: %s is not a video capture device", dev);
+        cam_v4l2_say(c, "VIDIOC_QUERYCAP: %s is not a video capture device", dev);
         return lost(c, CAM_LOST_CONFIG);
     }
     c->mplane = !(caps & V4L2_CAP_VIDEO_CAPTURE); /* single-planar when it offers both */
     if (!(caps & V4L2_CAP_STREAMING)) {
-        say(c, "VIDIOC_QUERYCAP: %s does not support streaming I/O", dev);
+        cam_v4l2_say(c, "VIDIOC_QUERYCAP: %s does not support streaming I/O", dev);
         return lost(c, CAM_LOST_CONFIG);
     }
 
     const cam_fmt_t *want = cam_fmt_of_opt(fmt);
     if (want && want->planes == 2 && !c->mplane) {
-        say(c, "--format %s: %s is single-planar (two-plane formats need the multi-planar API)", want->name,
-            dev);
+        cam_v4l2_say(c, "--format %s: %s is single-planar (two-plane formats need the multi-planar API)",
+                     want->name, dev);
         return lost(c, CAM_LOST_CONFIG);
     }
-    const uint32_t fourcc = want ? want->fourcc : choose_format(c, dev, w, h, fps);
+    const uint32_t fourcc = want ? want->fourcc : cam_v4l2_choose_format(c, dev, w, h, fps);
     if (!fourcc)
         return lost(c, CAM_LOST_CONFIG);
     const cam_fmt_t *f = cam_fmt_of_fourcc(fourcc);
     struct v4l2_format fm;
     memset(&fm, 0, sizeof fm);
-    fm.type = buf_type(c);
+    fm.type = cam_v4l2_buf_type(c);
     if (c->mplane) {
         fm.fmt.pix_mp.width = (uint32_t)w;
         fm.fmt.pix_mp.height = (uint32_t)h;
@@ -342,7 +173,7 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
         fm.fmt.pix.pixelformat = fourcc;
         fm.fmt.pix.field = V4L2_FIELD_NONE;
     }
-    if (xioctl(c, VIDIOC_S_FMT, &fm))
+    if (cam_v4l2_ioctl(c, VIDIOC_S_FMT, &fm))
         return errno == EINVAL ? (sys_fail(c, "VIDIOC_S_FMT"), lost(c, CAM_LOST_CONFIG))
                                : dev_fail(c, "VIDIOC_S_FMT");
     /* What the driver chose is what counts (the two layouts share these
@@ -350,11 +181,11 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     const uint32_t got = c->mplane ? fm.fmt.pix_mp.pixelformat : fm.fmt.pix.pixelformat;
     const uint32_t field = c->mplane ? fm.fmt.pix_mp.field : fm.fmt.pix.field;
     if (got != fourcc) {
-        say(c, "VIDIOC_S_FMT: %s does not deliver %s", dev, f->name);
+        cam_v4l2_say(c, "VIDIOC_S_FMT: %s does not deliver %s", dev, f->name);
         return lost(c, CAM_LOST_CONFIG);
     }
     if (field != V4L2_FIELD_NONE && field != V4L2_FIELD_ANY) {
-        say(c, "VIDIOC_S_FMT: interlaced field order %u is not supported", (unsigned)field);
+        cam_v4l2_say(c, "VIDIOC_S_FMT: interlaced field order %u is not supported", (unsigned)field);
         return lost(c, CAM_LOST_CONFIG);
     }
     c->width = (int)(c->mplane ? fm.fmt.pix_mp.width : fm.fmt.pix.width);
@@ -368,28 +199,28 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
                                       &c->bt709, &c->full);
     if (c->width < 2 || c->height < 1 || c->width > BLOOM_MAX_DIM || c->height > BLOOM_MAX_DIM ||
         (is_ycc(f) && f->chroma < 0 && (c->width & 1))) { /* packed 4:2:2: whole pairs */
-        say(c, "VIDIOC_S_FMT: unusable format %dx%d %s", c->width, c->height, f->name);
+        cam_v4l2_say(c, "VIDIOC_S_FMT: unusable format %dx%d %s", c->width, c->height, f->name);
         return lost(c, CAM_LOST_CONFIG);
     }
-    if (layout(c, f, &fm))
+    if (cam_v4l2_layout(c, f, &fm))
         return lost(c, CAM_LOST_CONFIG);
     if (!f->bpp && cam_mjpeg_open(&c->jpeg, c->width, c->height)) {
-        say(c, "MJPEG decoder: out of memory");
+        cam_v4l2_say(c, "MJPEG decoder: out of memory");
         return lost(c, CAM_LOST_DEVICE);
     }
     if (fps > 0)
-        set_fps(c, fps);
+        cam_v4l2_set_fps(c, fps);
 
     struct v4l2_requestbuffers rb;
     memset(&rb, 0, sizeof rb);
     rb.count = (uint32_t)nbufs;
-    rb.type = buf_type(c);
+    rb.type = cam_v4l2_buf_type(c);
     rb.memory = V4L2_MEMORY_MMAP;
-    if (xioctl(c, VIDIOC_REQBUFS, &rb))
+    if (cam_v4l2_ioctl(c, VIDIOC_REQBUFS, &rb))
         return dev_fail(c, "VIDIOC_REQBUFS");
     if (rb.count < 2 || rb.count > CAM_MAX_BUFFERS) {
-        say(c, "VIDIOC_REQBUFS: the driver gave %u buffers (2..%d needed)", (unsigned)rb.count,
-            CAM_MAX_BUFFERS);
+        cam_v4l2_say(c, "VIDIOC_REQBUFS: the driver gave %u buffers (2..%d needed)", (unsigned)rb.count,
+                     CAM_MAX_BUFFERS);
         c->nbufs = (int)(rb.count > CAM_MAX_BUFFERS ? 0 : rb.count);
         return lost(c, CAM_LOST_CONFIG);
     }
@@ -397,14 +228,14 @@ int cam_v4l2_open(cam_v4l2_t *c, const char *dev, int w, int h, enum cam_pixfmt 
     for (int i = 0; i < c->nbufs; i++) {
         vbuf_t v;
         mmap_buffer(c, &v, i);
-        if (xioctl(c, VIDIOC_QUERYBUF, &v.b))
+        if (cam_v4l2_ioctl(c, VIDIOC_QUERYBUF, &v.b))
             return dev_fail(c, "VIDIOC_QUERYBUF");
         for (int p = 0; p < nplanes(c); p++) {
             const uint32_t len = c->mplane ? v.p[p].length : v.b.length;
             const uint32_t off = c->mplane ? v.p[p].m.mem_offset : v.b.m.offset;
             if (len < c->plane_bytes[p]) {
-                say(c, "VIDIOC_QUERYBUF: buffer %d plane %d holds %u bytes, a frame %u", i, p, (unsigned)len,
-                    (unsigned)c->plane_bytes[p]);
+                cam_v4l2_say(c, "VIDIOC_QUERYBUF: buffer %d plane %d holds %u bytes, a frame %u", i, p,
+                             (unsigned)len, (unsigned)c->plane_bytes[p]);
                 return lost(c, CAM_LOST_CONFIG);
             }
             void *m = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_SHARED, c->fd, off);
@@ -440,7 +271,7 @@ static int queue(cam_v4l2_t *c, int index)
 {
     vbuf_t v;
     mmap_buffer(c, &v, index);
-    if (xioctl(c, VIDIOC_QBUF, &v.b))
+    if (cam_v4l2_ioctl(c, VIDIOC_QBUF, &v.b))
         return dev_fail(c, "VIDIOC_QBUF");
     return 0;
 }
@@ -456,9 +287,9 @@ int cam_v4l2_start(cam_v4l2_t *c)
     struct v4l2_event_subscription sub;
     memset(&sub, 0, sizeof sub);
     sub.type = V4L2_EVENT_SOURCE_CHANGE;
-    c->events = !xioctl(c, VIDIOC_SUBSCRIBE_EVENT, &sub);
-    enum v4l2_buf_type t = (enum v4l2_buf_type)buf_type(c);
-    if (xioctl(c, VIDIOC_STREAMON, &t))
+    c->events = !cam_v4l2_ioctl(c, VIDIOC_SUBSCRIBE_EVENT, &sub);
+    enum v4l2_buf_type t = (enum v4l2_buf_type)cam_v4l2_buf_type(c);
+    if (cam_v4l2_ioctl(c, VIDIOC_STREAMON, &t))
         return dev_fail(c, "VIDIOC_STREAMON");
     c->streaming = 1;
     return 0;
@@ -470,10 +301,10 @@ static int event(cam_v4l2_t *c)
 {
     struct v4l2_event ev;
     memset(&ev, 0, sizeof ev);
-    if (xioctl(c, VIDIOC_DQEVENT, &ev) || ev.type != V4L2_EVENT_SOURCE_CHANGE)
+    if (cam_v4l2_ioctl(c, VIDIOC_DQEVENT, &ev) || ev.type != V4L2_EVENT_SOURCE_CHANGE)
         return 0;
-    say(c, "the source changed (changes 0x%x): negotiating the format again",
-        (unsigned)ev.u.src_change.changes);
+    cam_v4l2_say(c, "the source changed (changes 0x%x): negotiating the format again",
+                 (unsigned)ev.u.src_change.changes);
     return lost(c, CAM_LOST_SOURCE);
 }
 
@@ -484,7 +315,7 @@ static int take(cam_v4l2_t *c, const vbuf_t *v, cam_frame_t *f)
 {
     const struct v4l2_buffer *b = &v->b;
     if (b->index >= (uint32_t)c->nbufs) {
-        say(c, "VIDIOC_DQBUF: buffer index %u out of range", (unsigned)b->index);
+        cam_v4l2_say(c, "VIDIOC_DQBUF: buffer index %u out of range", (unsigned)b->index);
         return lost(c, CAM_LOST_DEVICE);
     }
     const cam_vbuf_t *m = &c->bufs[b->index];
@@ -524,7 +355,7 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
             return dev_fail(c, "poll");
         }
         if (r == 0) {
-            say(c, "poll: no frame from the device within %d ms", timeout_ms);
+            cam_v4l2_say(c, "poll: no frame from the device within %d ms", timeout_ms);
             return lost(c, CAM_LOST_TIMEOUT);
         }
         if (extra_fd >= 0 && (p[1].revents & POLLIN))
@@ -537,11 +368,11 @@ int cam_v4l2_dequeue(cam_v4l2_t *c, int timeout_ms, int extra_fd, int *extra_rea
 
         vbuf_t v;
         mmap_buffer(c, &v, 0);
-        if (xioctl(c, VIDIOC_DQBUF, &v.b)) {
+        if (cam_v4l2_ioctl(c, VIDIOC_DQBUF, &v.b)) {
             if (errno == EAGAIN && !(p[0].revents & (POLLERR | POLLHUP | POLLNVAL)))
                 continue; /* nothing after all: wait again */
             if (errno == EAGAIN) {
-                say(c, "poll: the device reports an error (revents 0x%x)", (unsigned)p[0].revents);
+                cam_v4l2_say(c, "poll: the device reports an error (revents 0x%x)", (unsigned)p[0].revents);
                 return lost(c, CAM_LOST_DEVICE);
             }
             return dev_fail(c, "VIDIOC_DQBUF");
@@ -555,7 +386,7 @@ int cam_v4l2_latest(cam_v4l2_t *c, cam_frame_t *f, long *skipped, long bad[3])
     for (;;) {
         vbuf_t v;
         mmap_buffer(c, &v, 0);
-        if (xioctl(c, VIDIOC_DQBUF, &v.b)) { /* the descriptor is non-blocking */
+        if (cam_v4l2_ioctl(c, VIDIOC_DQBUF, &v.b)) { /* the descriptor is non-blocking */
             if (errno == EAGAIN)
                 return 0; /* f is the newest */
             const int e = errno;
@@ -591,8 +422,8 @@ void cam_v4l2_close(cam_v4l2_t *c)
     if (c->fd <= 0 && !c->nbufs)
         return;
     if (c->streaming) {
-        enum v4l2_buf_type t = (enum v4l2_buf_type)buf_type(c);
-        if (xioctl(c, VIDIOC_STREAMOFF, &t) && errno != ENODEV)
+        enum v4l2_buf_type t = (enum v4l2_buf_type)cam_v4l2_buf_type(c);
+        if (cam_v4l2_ioctl(c, VIDIOC_STREAMOFF, &t) && errno != ENODEV)
             sys_fail(c, "VIDIOC_STREAMOFF");
         c->streaming = 0;
     }
@@ -606,9 +437,9 @@ void cam_v4l2_close(cam_v4l2_t *c)
     if (c->nbufs && c->fd > 0) {
         struct v4l2_requestbuffers rb;
         memset(&rb, 0, sizeof rb);
-        rb.type = buf_type(c);
+        rb.type = cam_v4l2_buf_type(c);
         rb.memory = V4L2_MEMORY_MMAP;
-        xioctl(c, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
+        cam_v4l2_ioctl(c, VIDIOC_REQBUFS, &rb); /* may fail after a disconnect */
     }
     c->nbufs = 0;
     cam_mjpeg_close(c->jpeg);
