@@ -301,9 +301,10 @@ bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloo
     const int nb = n * (x4 ? 4 : 3);
     if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
         return bloom_row_dark(fmt, p, n, d);
-    uint8x16_t m = vld1q_u8(p + nb - 16);
-    for (int i = 0; i + 16 < nb; i += 16)
+    uint8x16_t m = vld1q_u8(p); /* in address order (bloom_row_dark_avx2) */
+    for (int i = 16; i + 16 < nb; i += 16)
         m = vmaxq_u8(m, vld1q_u8(p + i));
+    m = vmaxq_u8(m, vld1q_u8(p + nb - 16));
     if (x4)
         m = vandq_u8(m, vreinterpretq_u8_u32(vdupq_n_u32(0x00FFFFFFu)));
     return vmaxvq_u8(m) <= d->c8;

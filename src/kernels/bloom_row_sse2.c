@@ -170,9 +170,10 @@ bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloo
     const int nb = n * (x4 ? 4 : 3);
     if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
         return bloom_row_dark(fmt, p, n, d);
-    __m128i m = LD4(p + nb - 16);
-    for (int i = 0; i + 16 < nb; i += 16)
+    __m128i m = LD4(p); /* in address order (bloom_row_dark_avx2) */
+    for (int i = 16; i + 16 < nb; i += 16)
         m = _mm_max_epu8(m, LD4(p + i));
+    m = _mm_max_epu8(m, LD4(p + nb - 16));
     if (x4)
         m = _mm_and_si128(m, _mm_set1_epi32(0x00FFFFFF));
     const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
