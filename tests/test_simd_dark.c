@@ -6,7 +6,10 @@
  * XRGB8888 (the X byte bright: it must not count) and RGB565 and RGBQ16
  * (passed to the C test): every byte at or below the dark code, then one
  * colour byte one above it at a random place, at the first and at the last
- * byte; dark codes 0, 254, 255 and random. */
+ * byte; dark codes 0, 254, 255 and random. The test that copies the row
+ * as it reads it (kern.dark_copy, the frame call's dark rows) the same
+ * way: its answer the C test's, a dark row copied whole, no byte written
+ * outside the row. */
 #include <string.h>
 
 #include "bloom_kernels.h"
@@ -34,6 +37,21 @@ static int colour_byte(int k, int bpp)
     return bpp == 4 ? k / 3 * 4 + k % 3 : k;
 }
 
+/* k's dark test that copies (kern.dark_copy) on the n pixels at p: the
+ * same answer as the C test, the row's bytes copied whole when dark, and
+ * nothing written past the row either way. Returns 1 when it differs. */
+static int copy_differs(const bloom_kernels_t *k, bloom_format_t fmt, const uint8_t *p, int n, int bpp,
+                        const bloom_dark_t *d)
+{
+    static uint8_t out[12 * NMAX + 64];
+    const size_t nb = (size_t)n * (size_t)bpp;
+    memset(out, 0xA5, nb + 64);
+    const bool dark = k->dark_copy(fmt, p, n, d, out + 1);
+    if (dark != bloom_row_dark(fmt, p, n, d) || out[0] != 0xA5 || out[nb + 1] != 0xA5)
+        return 1;
+    return dark && memcmp(out + 1, p, nb) != 0;
+}
+
 static int check_set(const bloom_kernels_t *k)
 {
     static uint8_t buf[12 * NMAX + 64];
@@ -55,6 +73,7 @@ static int check_set(const bloom_kernels_t *k)
                     const int bpp = bpps[f], cb = bpp == 4 ? 3 * n : n * bpp;
                     fill_dark(p, n, bpp, d.c8);
                     bad += bloom_row_dark(fmts[f], p, n, &d) != k->dark(fmts[f], p, n, &d);
+                    bad += copy_differs(k, fmts[f], p, n, bpp, &d);
                     if (d.c8 == 255 || f >= 2)
                         continue;
                     const int at[3] = {0, cb - 1, (int)(rng_next(&seed) % (uint32_t)cb)};
@@ -63,6 +82,7 @@ static int check_set(const bloom_kernels_t *k)
                         const uint8_t keep = p[i];
                         p[i] = (uint8_t)(d.c8 + 1u);
                         bad += k->dark(fmts[f], p, n, &d) != false;
+                        bad += copy_differs(k, fmts[f], p, n, bpp, &d);
                         p[i] = keep;
                     }
                 }
@@ -74,9 +94,13 @@ static int check_set(const bloom_kernels_t *k)
 static void run(const bloom_kernels_t *k)
 {
     const int bad = check_set(k);
-    CHECKF(bad == 0, "%s dark-row test = C over widths 1 .. %d, offsets 0 .. 3 (%d cases differ)", k->name,
-           NMAX, bad);
-    printf("%s: dark-row test bit-identical to C (and bright bytes found), widths 1 .. %d\n", k->name, NMAX);
+    CHECKF(bad == 0,
+           "%s dark-row test (and the one that copies) = C over widths 1 .. %d, offsets 0 .. 3 (%d cases "
+           "differ)",
+           k->name, NMAX, bad);
+    printf("%s: dark-row test and its copying twin bit-identical to C (bright bytes found, dark rows copied "
+           "whole, nothing written past a row), widths 1 .. %d\n",
+           k->name, NMAX);
 }
 #endif
 

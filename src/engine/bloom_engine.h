@@ -115,7 +115,9 @@ void bloom_tile_cut(bloom_t *b);
 #endif
 /* The dry run: ring sizes, source rows, latency. */
 void bloom_dry_frame(bloom_t *b);
-bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row);
+/* A source row in; copy (the frame call's dark rows, BG_DARK_COPY): where
+ * the row's bytes go when it is dark (bloom_dark_copy_fn), else NULL. */
+bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row, void *copy);
 bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
 
 #endif

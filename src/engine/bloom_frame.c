@@ -51,14 +51,14 @@ bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *a
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-    return bloom_sched_push(b, src_row, aux_row);
+    return bloom_sched_push(b, src_row, aux_row, NULL);
 }
 
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-    return bloom_sched_push(b, src_row, NULL);
+    return bloom_sched_push(b, src_row, NULL, NULL);
 }
 
 #if !BLOOM_SMALL
@@ -155,13 +155,14 @@ static bool frames_overlap(const bloom_t *b, const uint8_t *s, ptrdiff_t ss, con
 
 #if BG_DARK_COPY
 /* The frame call's dark rows (bloom_process): a source row tagged dark is
- * copied to its destination row as soon as it is pushed, while it is in the
- * cache from the dark test, when the preset's output of such a row with no
- * bloom is that copy (par.dark_copy) and the copy is the bytes themselves
- * (bloom_copy_is_bytes), out of place and untiled. At the row's turn the
+ * copied to its destination row as it is pushed, by the dark test itself
+ * as it reads the row (kern.dark_copy: a row found bright leaves a part
+ * copied, written over at its turn), when the preset's output of such a
+ * row with no bloom is that copy (par.dark_copy) and the copy is the bytes
+ * themselves (bloom_copy_is_bytes), out of place and untiled. At the row's turn the
  * output node's copy then has nothing to do (par.dst_copied, bg_copy_row); a
  * row that does get bloom is written over as before. A dark frame thus
- * costs one read of each row and one copy, not two reads: the destination
+ * costs one pass over each row, as a copy does: the destination
  * rows of a frame call are only defined when it returns
  * (sim/docs/streaming.md). The band and row calls never write a row before
  * its turn. */
@@ -209,7 +210,6 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
     }
 #if BG_DARK_COPY
     const bool copies = frame && dark_copies(b, s, d);
-    const size_t row_bytes = b->src_row_bytes;
     /* the cursor on the source row of the next output row (untiled, the
      * output row of that number is made from it); the tiled and band calls
      * never touch it */
@@ -236,14 +236,15 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (r == end)
             return BLOOM_OK;
         const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
-        st = bloom_push_row_aux(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
+#if BG_DARK_COPY
+        /* untiled: output row r is frame row r */
+        st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL,
+                              copies ? d + fr * dst_stride : NULL);
+#else
+        st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL, NULL);
+#endif
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
-#if BG_DARK_COPY
-        /* (row r went to the slot before src_put) untiled: output row r is frame row r */
-        if (copies && slot_dark(b, (b->src_put ? b->src_put : b->src_cap) - 1, r))
-            memcpy(d + fr * dst_stride, s + fr * src_stride, row_bytes);
-#endif
     }
 }
 

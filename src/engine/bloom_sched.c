@@ -444,7 +444,7 @@ void bloom_dry_frame(bloom_t *g)
 static bool walk_to_output(bloom_t *g, void *dst);
 #endif
 
-bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row)
+bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row, void *copy)
 {
     if (bg_aux_bpp(&g->row) && !aux_row)
         return BLOOM_E_AUX;
@@ -487,11 +487,18 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
         if (bg_aux_bpp(&g->row))
             put_ptr(g->aux_ptr, slot, g->src_cap, aux_row);
     }
-#if BLOOM_USE_SKIP
+#if BG_DARK_COPY
+    const bool dark =
+        g->row.dark_src &&
+        (copy ? g->row.kern.dark_copy(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark, copy)
+              : g->row.kern.dark(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark));
+#elif BLOOM_USE_SKIP
+    (void)copy;
     const bool dark =
         g->row.dark_src &&
         BLOOM_KERN_DARK(&g->row.kern)(g->cfg.in_fmt, (const uint8_t *)src_row, g->gr.w[0], &g->row.dark);
 #else
+    (void)copy;
     const bool dark = false;
 #endif
     put_tag(g->src_tag, NULL, slot, g->src_cap, dark ? r | ZBIT : r);

@@ -220,6 +220,13 @@ typedef void (*bloom_box_src_fn)(const uint8_t *const s[4], bloom_format_t fmt, 
 
 /* bloom_row_dark and its twins. */
 typedef bool (*bloom_dark_fn)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+/* The dark-row test that copies the row's bytes to `copy` as it reads them
+ * (the frame call's early copy of a dark row: bloom_frame.c): true, the
+ * row is dark and copied whole; false, it is not, and `copy` holds a part
+ * of it (the twins stop at the first block with a bright byte; the row's
+ * output is written whole at its turn). bloom_row_dark_copy and twins. */
+typedef bool (*bloom_dark_copy_fn)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                                   uint8_t *copy);
 
 typedef struct {
     bloom_box_fn box;
@@ -235,8 +242,9 @@ typedef struct {
                                    one by table gathers took fewer instructions and more time:
                                    sim/docs/profile.md); NULL if BLOOM_SMALL */
 #if !BLOOM_SMALL
-    bloom_dark_fn dark; /* the dark-row test of every pushed source row (bloom_row_dark; the
+    bloom_dark_fn dark;           /* the dark-row test of every pushed source row (bloom_row_dark; the
                            twins take RGB888 and XRGB8888 rows of a vector or more) */
+    bloom_dark_copy_fn dark_copy; /* the same, copying the row (bloom_row_dark_copy) */
 #endif
     const char *name; /* "c", "sse2", "avx2", "neon" */
     bloom_isa_t isa;  /* the same as a value: presets pick their own twins by it */
@@ -285,6 +293,8 @@ uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
 bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy);
 /* AVX2 twins (bloom_row_avx2.c), picked at run time by bloom_cpu_avx2(). */
 #if !BLOOM_NO_AVX2 && !BLOOM_SMALL && (defined(__GNUC__) || defined(__clang__))
 #define BLOOM_SIMD_AVX2 1
@@ -299,6 +309,8 @@ void bloom_encode_eo_avx2(bloom_format_t in_fmt, bloom_format_t out_fmt, bool de
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
 void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int sw);
 bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+bool bloom_row_dark_copy_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy);
 #endif
 #elif !BLOOM_NO_SIMD && defined(__aarch64__) && defined(__ARM_NEON)
 #define BLOOM_SIMD_NEON 1
@@ -316,6 +328,8 @@ void bloom_row_tent_neon_flat(const uint32_t *const u[3], int odd, const uint32_
 void bloom_encode_eo_neon(bloom_format_t in_fmt, bloom_format_t out_fmt, bool debug, const uint8_t *src,
                           const uint32_t *e, const uint32_t *o, uint8_t *dst, int n);
 bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+bool bloom_row_dark_copy_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy);
 #endif
 /* The dark-row test of a kernel set (bloom_row_dark itself where the sets
  * carry no slot for it: BLOOM_SMALL). */

@@ -537,6 +537,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->eo = bloom_encode_eo;
     k->box_src = bloom_row_box_src_range_c;
     k->dark = bloom_row_dark;
+    k->dark_copy = bloom_row_dark_copy;
 #else
     k->box_src = NULL;
     k->d1 = NULL; /* compute_d1 calls the box and the knee itself */
@@ -555,12 +556,11 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->composite = bloom_row_composite_sse2_any;
 #if !BLOOM_SMALL
     k->d1 = bloom_row_d1_sse2;
-#endif
-#if !BLOOM_SMALL
     k->vtent = bloom_row_vtent_sse2;
     k->htent_eo = bloom_row_htent_eo_sse2;
     k->scale = bloom_row_scale_sse2;
     k->dark = bloom_row_dark_sse2;
+    k->dark_copy = bloom_row_dark_copy_sse2;
 #endif
     k->name = "sse2";
     k->isa = BLOOM_ISA_SSE2;
@@ -573,6 +573,7 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
         k->htent_eo = bloom_row_htent_eo_avx2;
         k->eo = bloom_encode_eo_avx2;
         k->dark = bloom_row_dark_avx2;
+        k->dark_copy = bloom_row_dark_copy_avx2;
         k->name = "avx2";
         k->isa = BLOOM_ISA_AVX2;
     }
@@ -583,14 +584,13 @@ void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags)
     k->composite = bloom_row_composite_neon_any;
 #if !BLOOM_SMALL
     k->d1 = bloom_row_d1_neon;
-#endif
-#if !BLOOM_SMALL
     k->vtent = bloom_row_vtent_neon;
     k->htent_eo = bloom_row_htent_eo_neon;
     k->scale = bloom_row_scale_neon;
     k->tent = bloom_row_tent_neon_flat;
     k->eo = bloom_encode_eo_neon;
     k->dark = bloom_row_dark_neon;
+    k->dark_copy = bloom_row_dark_copy_neon;
 #endif
     k->name = "neon";
     k->isa = BLOOM_ISA_NEON;

@@ -309,6 +309,32 @@ bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloo
         m = vandq_u8(m, vreinterpretq_u8_u32(vdupq_n_u32(0x00FFFFFFu)));
     return vmaxvq_u8(m) <= d->c8;
 }
+
+/* bloom_row_dark_neon copying the row (bloom_row_dark_copy_avx2's plan, 64
+ * bytes at a time). */
+bool bloom_row_dark_copy_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
+        return bloom_row_dark_copy(fmt, p, n, d, copy);
+    const uint8x16_t keep = vreinterpretq_u8_u32(vdupq_n_u32(x4 ? 0x00FFFFFFu : 0xFFFFFFFFu));
+    for (int i = 0;; i += 64) {
+        if (i > nb - 64)
+            i = nb - 64;
+        const uint8x16_t a = vld1q_u8(p + i), b = vld1q_u8(p + i + 16), e = vld1q_u8(p + i + 32),
+                         f = vld1q_u8(p + i + 48);
+        if (vmaxvq_u8(vandq_u8(vmaxq_u8(vmaxq_u8(a, b), vmaxq_u8(e, f)), keep)) > d->c8)
+            return false;
+        vst1q_u8(copy + i, a);
+        vst1q_u8(copy + i + 16, b);
+        vst1q_u8(copy + i + 32, e);
+        vst1q_u8(copy + i + 48, f);
+        if (i == nb - 64)
+            return true;
+    }
+}
 #endif
 
 #else

@@ -179,6 +179,33 @@ bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloo
     const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
     return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) == 0xFFFF;
 }
+
+/* bloom_row_dark_sse2 copying the row (bloom_row_dark_copy_avx2's plan, 64
+ * bytes at a time). */
+bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
+        return bloom_row_dark_copy(fmt, p, n, d, copy);
+    const __m128i c = _mm_set1_epi8((char)(uint8_t)d->c8), zero = _mm_setzero_si128();
+    const __m128i keep = _mm_set1_epi32(x4 ? 0x00FFFFFF : -1);
+    for (int i = 0;; i += 64) {
+        if (i > nb - 64)
+            i = nb - 64;
+        const __m128i a = LD4(p + i), b = LD4(p + i + 16), e = LD4(p + i + 32), f = LD4(p + i + 48);
+        const __m128i m = _mm_and_si128(_mm_max_epu8(_mm_max_epu8(a, b), _mm_max_epu8(e, f)), keep);
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_subs_epu8(m, c), zero)) != 0xFFFF)
+            return false;
+        ST4(copy + i, a);
+        ST4(copy + i + 16, b);
+        ST4(copy + i + 32, e);
+        ST4(copy + i + 48, f);
+        if (i == nb - 64)
+            return true;
+    }
+}
 #endif
 
 #else

@@ -435,6 +435,16 @@ bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dar
     }
 }
 
+#if !BLOOM_SMALL
+bool bloom_row_dark_copy(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d, uint8_t *copy)
+{
+    if (!bloom_row_dark(fmt, p, n, d))
+        return false;
+    memcpy(copy, p, (size_t)n * (size_t)bloom_bpp(fmt));
+    return true;
+}
+#endif
+
 int bloom_format_bpp(bloom_format_t fmt)
 {
     return bloom_bpp(fmt);

@@ -60,6 +60,9 @@ uint32_t bloom_srgb_to_linear_q16(uint32_t i);
 void bloom_pixel_decode(bloom_format_t fmt, bool linear, const uint8_t *p, uint32_t rgb[3]);
 /* Whether no channel of the n pixels exceeds the dark codes. */
 bool bloom_row_dark(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d);
+/* The same, the row's bytes copied to `copy` when it is dark (the C one of
+ * bloom_dark_copy_fn, bloom_kernels.h: the frame call's dark rows). */
+bool bloom_row_dark_copy(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d, uint8_t *copy);
 void bloom_pixel_encode(bloom_format_t fmt, bool linear, const uint32_t v[3], uint8_t *p);
 
 #if defined(__GNUC__) && !BLOOM_SMALL
