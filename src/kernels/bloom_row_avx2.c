@@ -347,35 +347,53 @@ void bloom_row_box_avx2(const uint32_t *const s[4], uint32_t *dst, int dw, int s
     bloom_row_box_range_c(s, dst, x, dw, sw);
 }
 
-/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
- * least 32 bytes, by 32-byte loads, the last ending at the row's end (a
- * whole number of pixels from the start); other rows to the C test. */
+/* The dark-row test of RGB888 and XRGB8888 rows (X bytes cleared) of at
+ * least 128 bytes, 128 at a time in address order, the last block ending
+ * at the row's end (a whole number of pixels from the start: XRGB's lanes
+ * stay pixels). A block with a bright byte ends it: the row is not dark,
+ * and the rest of it is not read here. copy: each block found dark stored
+ * there (bloom_dark_copy_fn: a dark row is then one pass over its bytes,
+ * as in a copy; the test and then a copy from the cache took a cold 1080p
+ * frame a fifth more time here). In order, because the row comes from
+ * memory (the test is its first reader): a first load at its end cost a
+ * cold frame 40 % more time than loads that the hardware prefetcher
+ * follows. */
+static BLOOM_ALWAYS_INLINE bool dark_blocks(const uint8_t *p, int nb, bool x4, uint8_t c8, uint8_t *copy,
+                                            bool store)
+{
+    const __m256i c = _mm256_set1_epi8((char)c8), keep = _mm256_set1_epi32(x4 ? 0x00FFFFFF : -1);
+    for (int i = 0;; i += 128) {
+        if (i > nb - 128)
+            i = nb - 128;
+        const __m256i a = LD8(p + i), b = LD8(p + i + 32), e = LD8(p + i + 64), f = LD8(p + i + 96);
+        const __m256i m =
+            _mm256_and_si256(_mm256_max_epu8(_mm256_max_epu8(a, b), _mm256_max_epu8(e, f)), keep);
+        const __m256i over = _mm256_subs_epu8(m, c);
+        if (!_mm256_testz_si256(over, over))
+            return false;
+        if (store) { /* (a constant in each caller) */
+            ST8(copy + i, a);
+            ST8(copy + i + 32, b);
+            ST8(copy + i + 64, e);
+            ST8(copy + i + 96, f);
+        }
+        if (i == nb - 128)
+            return true;
+    }
+}
+
+/* bloom_row_dark by dark_blocks; other formats and shorter rows to the C
+ * test. */
 bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
 {
     const bool x4 = fmt == BLOOM_FMT_XRGB8888;
     const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 32)
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 128)
         return bloom_row_dark(fmt, p, n, d);
-    /* in address order, the last load ending at the row's end: the row
-     * comes from memory (the test is its first reader), and a first load
-     * at its end cost a cold 1080p frame 40 % more time here than loads
-     * in order, which the hardware prefetcher follows */
-    __m256i m = LD8(p);
-    for (int i = 32; i + 32 < nb; i += 32)
-        m = _mm256_max_epu8(m, LD8(p + i));
-    m = _mm256_max_epu8(m, LD8(p + nb - 32));
-    if (x4)
-        m = _mm256_and_si256(m, _mm256_set1_epi32(0x00FFFFFF));
-    const __m256i over = _mm256_subs_epu8(m, _mm256_set1_epi8((char)(uint8_t)d->c8));
-    return _mm256_testz_si256(over, over) != 0;
+    return dark_blocks(p, nb, x4, d->c8, NULL, false);
 }
 
-/* bloom_row_dark_avx2 copying the row to `copy` (bloom_dark_copy_fn), 128
- * bytes at a time, the last block ending at the row's end: a block is
- * stored once it is found dark, and the first with a bright byte ends the
- * test (its row is not read further here). One pass over the row, as a
- * copy's: the test and then a copy from the cache took a cold 1080p frame
- * a fifth more time here. Rows under 128 bytes: the C pair. */
+/* bloom_row_dark_copy (bloom_dark_copy_fn) by dark_blocks. */
 bool bloom_row_dark_copy_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
                               uint8_t *copy)
 {
@@ -383,24 +401,7 @@ bool bloom_row_dark_copy_avx2(bloom_format_t fmt, const uint8_t *p, int n, const
     const int nb = n * (x4 ? 4 : 3);
     if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 128)
         return bloom_row_dark_copy(fmt, p, n, d, copy);
-    const __m256i c = _mm256_set1_epi8((char)(uint8_t)d->c8);
-    const __m256i keep = _mm256_set1_epi32(x4 ? 0x00FFFFFF : -1);
-    for (int i = 0;; i += 128) {
-        if (i > nb - 128)
-            i = nb - 128; /* (a whole number of pixels from the start: XRGB's lanes stay pixels) */
-        const __m256i a = LD8(p + i), b = LD8(p + i + 32), e = LD8(p + i + 64), f = LD8(p + i + 96);
-        const __m256i m =
-            _mm256_and_si256(_mm256_max_epu8(_mm256_max_epu8(a, b), _mm256_max_epu8(e, f)), keep);
-        const __m256i over = _mm256_subs_epu8(m, c);
-        if (!_mm256_testz_si256(over, over))
-            return false;
-        ST8(copy + i, a);
-        ST8(copy + i + 32, b);
-        ST8(copy + i + 64, e);
-        ST8(copy + i + 96, f);
-        if (i == nb - 128)
-            return true;
-    }
+    return dark_blocks(p, nb, x4, d->c8, copy, true);
 }
 
 #include "bloom_avx2_end.h"

@@ -292,26 +292,41 @@ void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity)
 #endif
 
 #if !BLOOM_SMALL
-/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
- * least 16 bytes, by 16-byte loads, the last ending at the row's end;
- * other rows to the C test. */
+/* dark_blocks of bloom_row_avx2.c, 64 bytes at a time. */
+static BLOOM_ALWAYS_INLINE bool dark_blocks(const uint8_t *p, int nb, bool x4, uint8_t c8, uint8_t *copy,
+                                            bool store)
+{
+    const uint8x16_t keep = vreinterpretq_u8_u32(vdupq_n_u32(x4 ? 0x00FFFFFFu : 0xFFFFFFFFu));
+    for (int i = 0;; i += 64) {
+        if (i > nb - 64)
+            i = nb - 64;
+        const uint8x16_t a = vld1q_u8(p + i), b = vld1q_u8(p + i + 16), e = vld1q_u8(p + i + 32),
+                         f = vld1q_u8(p + i + 48);
+        if (vmaxvq_u8(vandq_u8(vmaxq_u8(vmaxq_u8(a, b), vmaxq_u8(e, f)), keep)) > c8)
+            return false;
+        if (store) { /* (a constant in each caller) */
+            vst1q_u8(copy + i, a);
+            vst1q_u8(copy + i + 16, b);
+            vst1q_u8(copy + i + 32, e);
+            vst1q_u8(copy + i + 48, f);
+        }
+        if (i == nb - 64)
+            return true;
+    }
+}
+
+/* bloom_row_dark by dark_blocks; other formats and shorter rows to the C
+ * test. */
 bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
 {
     const bool x4 = fmt == BLOOM_FMT_XRGB8888;
     const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
         return bloom_row_dark(fmt, p, n, d);
-    uint8x16_t m = vld1q_u8(p); /* in address order (bloom_row_dark_avx2) */
-    for (int i = 16; i + 16 < nb; i += 16)
-        m = vmaxq_u8(m, vld1q_u8(p + i));
-    m = vmaxq_u8(m, vld1q_u8(p + nb - 16));
-    if (x4)
-        m = vandq_u8(m, vreinterpretq_u8_u32(vdupq_n_u32(0x00FFFFFFu)));
-    return vmaxvq_u8(m) <= d->c8;
+    return dark_blocks(p, nb, x4, d->c8, NULL, false);
 }
 
-/* bloom_row_dark_neon copying the row (bloom_row_dark_copy_avx2's plan, 64
- * bytes at a time). */
+/* bloom_row_dark_copy (bloom_dark_copy_fn) by dark_blocks. */
 bool bloom_row_dark_copy_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
                               uint8_t *copy)
 {
@@ -319,21 +334,7 @@ bool bloom_row_dark_copy_neon(bloom_format_t fmt, const uint8_t *p, int n, const
     const int nb = n * (x4 ? 4 : 3);
     if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
         return bloom_row_dark_copy(fmt, p, n, d, copy);
-    const uint8x16_t keep = vreinterpretq_u8_u32(vdupq_n_u32(x4 ? 0x00FFFFFFu : 0xFFFFFFFFu));
-    for (int i = 0;; i += 64) {
-        if (i > nb - 64)
-            i = nb - 64;
-        const uint8x16_t a = vld1q_u8(p + i), b = vld1q_u8(p + i + 16), e = vld1q_u8(p + i + 32),
-                         f = vld1q_u8(p + i + 48);
-        if (vmaxvq_u8(vandq_u8(vmaxq_u8(vmaxq_u8(a, b), vmaxq_u8(e, f)), keep)) > d->c8)
-            return false;
-        vst1q_u8(copy + i, a);
-        vst1q_u8(copy + i + 16, b);
-        vst1q_u8(copy + i + 32, e);
-        vst1q_u8(copy + i + 48, f);
-        if (i == nb - 64)
-            return true;
-    }
+    return dark_blocks(p, nb, x4, d->c8, copy, true);
 }
 #endif
 

@@ -161,35 +161,11 @@ void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity)
 #endif
 
 #if !BLOOM_SMALL
-/* bloom_row_dark for RGB888 and XRGB8888 (X bytes cleared) rows of at
- * least 16 bytes, by 16-byte loads, the last ending at the row's end;
- * other rows to the C test. */
-bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+/* dark_blocks of bloom_row_avx2.c, 64 bytes at a time. */
+static BLOOM_ALWAYS_INLINE bool dark_blocks(const uint8_t *p, int nb, bool x4, uint8_t c8, uint8_t *copy,
+                                            bool store)
 {
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
-        return bloom_row_dark(fmt, p, n, d);
-    __m128i m = LD4(p); /* in address order (bloom_row_dark_avx2) */
-    for (int i = 16; i + 16 < nb; i += 16)
-        m = _mm_max_epu8(m, LD4(p + i));
-    m = _mm_max_epu8(m, LD4(p + nb - 16));
-    if (x4)
-        m = _mm_and_si128(m, _mm_set1_epi32(0x00FFFFFF));
-    const __m128i over = _mm_subs_epu8(m, _mm_set1_epi8((char)(uint8_t)d->c8));
-    return _mm_movemask_epi8(_mm_cmpeq_epi8(over, _mm_setzero_si128())) == 0xFFFF;
-}
-
-/* bloom_row_dark_sse2 copying the row (bloom_row_dark_copy_avx2's plan, 64
- * bytes at a time). */
-bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
-                              uint8_t *copy)
-{
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
-        return bloom_row_dark_copy(fmt, p, n, d, copy);
-    const __m128i c = _mm_set1_epi8((char)(uint8_t)d->c8), zero = _mm_setzero_si128();
+    const __m128i c = _mm_set1_epi8((char)c8), zero = _mm_setzero_si128();
     const __m128i keep = _mm_set1_epi32(x4 ? 0x00FFFFFF : -1);
     for (int i = 0;; i += 64) {
         if (i > nb - 64)
@@ -198,13 +174,37 @@ bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const
         const __m128i m = _mm_and_si128(_mm_max_epu8(_mm_max_epu8(a, b), _mm_max_epu8(e, f)), keep);
         if (_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_subs_epu8(m, c), zero)) != 0xFFFF)
             return false;
-        ST4(copy + i, a);
-        ST4(copy + i + 16, b);
-        ST4(copy + i + 32, e);
-        ST4(copy + i + 48, f);
+        if (store) { /* (a constant in each caller) */
+            ST4(copy + i, a);
+            ST4(copy + i + 16, b);
+            ST4(copy + i + 32, e);
+            ST4(copy + i + 48, f);
+        }
         if (i == nb - 64)
             return true;
     }
+}
+
+/* bloom_row_dark by dark_blocks; other formats and shorter rows to the C
+ * test. */
+bool bloom_row_dark_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
+        return bloom_row_dark(fmt, p, n, d);
+    return dark_blocks(p, nb, x4, d->c8, NULL, false);
+}
+
+/* bloom_row_dark_copy (bloom_dark_copy_fn) by dark_blocks. */
+bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
+                              uint8_t *copy)
+{
+    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
+    const int nb = n * (x4 ? 4 : 3);
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
+        return bloom_row_dark_copy(fmt, p, n, d, copy);
+    return dark_blocks(p, nb, x4, d->c8, copy, true);
 }
 #endif
 
