@@ -315,15 +315,22 @@ static BLOOM_ALWAYS_INLINE bool dark_blocks(const uint8_t *p, int nb, bool x4, u
     }
 }
 
-/* bloom_row_dark by dark_blocks; other formats and shorter rows to the C
- * test. */
+/* bloom_row_dark by dark_blocks; rows of one to four vectors by one
+ * vector at a time, other formats and shorter rows to the C test. */
 bool bloom_row_dark_neon(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
 {
     const bool x4 = fmt == BLOOM_FMT_XRGB8888;
     const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 64)
+    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 16)
         return bloom_row_dark(fmt, p, n, d);
-    return dark_blocks(p, nb, x4, d->c8, NULL, false);
+    if (nb >= 64)
+        return dark_blocks(p, nb, x4, d->c8, NULL, false);
+    uint8x16_t m = vld1q_u8(p); /* (the arm preset's dark blocks: about 100 bytes) */
+    for (int i = 16; i < nb - 16; i += 16)
+        m = vmaxq_u8(m, vld1q_u8(p + i));
+    m = vandq_u8(vmaxq_u8(m, vld1q_u8(p + nb - 16)),
+                 vreinterpretq_u8_u32(vdupq_n_u32(x4 ? 0x00FFFFFFu : 0xFFFFFFFFu)));
+    return vmaxvq_u8(m) <= d->c8;
 }
 
 /* bloom_row_dark_copy (bloom_dark_copy_fn) by dark_blocks. */
