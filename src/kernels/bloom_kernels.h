@@ -228,6 +228,14 @@ typedef bool (*bloom_dark_fn)(bloom_format_t fmt, const uint8_t *p, int n, const
 typedef bool (*bloom_dark_copy_fn)(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
                                    uint8_t *copy);
 
+/* The bytes of an n-pixel row that the SIMD dark tests read by vectors: the
+ * 8-bit formats (RGB888, XRGB8888) only, 0 for the others (the C test
+ * decodes them). Every twin's prologue. */
+static inline int bloom_dark_row_bytes(bloom_format_t fmt, int n)
+{
+    return fmt == BLOOM_FMT_XRGB8888 ? 4 * n : fmt == BLOOM_FMT_RGB888 ? 3 * n : 0;
+}
+
 typedef struct {
     bloom_box_fn box;
     bloom_tent_fn tent;

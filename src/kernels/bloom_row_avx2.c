@@ -387,8 +387,8 @@ static BLOOM_ALWAYS_INLINE bool dark_blocks(const uint8_t *p, int nb, bool x4, u
 bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d)
 {
     const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 32)
+    const int nb = bloom_dark_row_bytes(fmt, n);
+    if (nb < 32)
         return bloom_row_dark(fmt, p, n, d);
     if (nb >= 128)
         return dark_blocks(p, nb, x4, d->c8, NULL, false);
@@ -405,11 +405,10 @@ bool bloom_row_dark_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloo
 bool bloom_row_dark_copy_avx2(bloom_format_t fmt, const uint8_t *p, int n, const bloom_dark_t *d,
                               uint8_t *copy)
 {
-    const bool x4 = fmt == BLOOM_FMT_XRGB8888;
-    const int nb = n * (x4 ? 4 : 3);
-    if ((!x4 && fmt != BLOOM_FMT_RGB888) || nb < 128)
+    const int nb = bloom_dark_row_bytes(fmt, n);
+    if (nb < 128)
         return bloom_row_dark_copy(fmt, p, n, d, copy);
-    return dark_blocks(p, nb, x4, d->c8, copy, true);
+    return dark_blocks(p, nb, fmt == BLOOM_FMT_XRGB8888, d->c8, copy, true);
 }
 
 #include "bloom_avx2_end.h"
