@@ -444,7 +444,7 @@ bloom_status_t bloom_begin(bloom_t *b)
 #if BLOOM_SCHED_TABLE
         n->put = 0;
         for (int j = 0; j < n->nin; j++)
-            n->gat[j].row = n->gat[j].slot = 0; /* row 0 is in slot 0 */
+            n->gat[j].off = 0; /* row 0 is in slot 0 */
 #endif
 #if BLOOM_SCHED_TABLE
         n->zb = 0;

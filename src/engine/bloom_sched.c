@@ -108,15 +108,20 @@ static inline uint32_t zero_bits(const bg_gather_t *ga, int slot)
     return v & ga->zmask;
 }
 
-/* The input's slot cursor moved to row `first` (the first row it reads):
- * readers' rows only go forward, so a step with wrap-around, no division. */
+/* The slot of row `first` (the first row the input reads), the cursor
+ * moved on a lap when it passes the ring's end: readers' rows only go
+ * forward, so no division, and a store only at a lap's end. */
 static inline int move_cursor(bg_gather_t *ga, int first)
 {
-    int slot = ga->slot + (first - ga->row);
-    while (slot >= ga->cap)
-        slot -= ga->cap;
-    ga->row = (uint16_t)first;
-    ga->slot = (uint16_t)slot;
+    int slot = first - ga->off;
+    if (slot >= ga->cap) {
+        int off = ga->off;
+        do {
+            off += ga->cap;
+            slot -= ga->cap;
+        } while (slot >= ga->cap);
+        ga->off = off;
+    }
     return slot;
 }
 
@@ -191,7 +196,6 @@ static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
     const void *rows[BG_MAX_ROWS];
     const void *const *in[BG_MAX_IN]; /* (the row function reads in[0 .. nin - 1]) */
     int used = 0;
-    bool all_zero = BLOOM_USE_SKIP && g->row.skip && n->z;
 #if BLOOM_SCHED_TABLE
     const int nin = n->nin;
     bg_gather_t *ga = n->gat;
@@ -225,9 +229,11 @@ static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         if (!ga->zaux)
             live |= zm ^ ga->zmask;
     }
-    if (live)
-        all_zero = false;
+    /* (decided after the gather: nothing else is live across its loop) */
+    if (BLOOM_USE_SKIP && !live && g->row.skip && n->z)
+        return ROW_SKIPPED;
 #else /* the size build: no cursors, no doubled rings, no aux plane, no tiles */
+    bool all_zero = BLOOM_USE_SKIP && g->row.skip && n->z;
     for (int i = 0; i < n->nin; i++) {
         const bg_input_t *ip = &n->in[i];
         const int from = ip->node, hin = in_height(g, from), b = bg_base(ip->map, r);
@@ -265,9 +271,9 @@ static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
         if (from != BG_AUX && zm != (2u << (ip->hi - ip->lo)) - 1u)
             all_zero = false;
     }
-#endif
     if (all_zero)
         return ROW_SKIPPED;
+#endif
     if (BLOOM_CHECK_RINGS && g->failed)
         return ROW_MADE; /* an input row was overwritten: nothing is made of it */
     return !n->fn(&g->row, n, r, in, dst) && BLOOM_USE_SKIP && g->row.skip ? ROW_ZEROS : ROW_MADE;
@@ -275,27 +281,29 @@ static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
 
 /* Tag v into slot s of a ring of cap slots: both copies with the static
  * schedule's doubled rings, the one otherwise; and a node's zero bit into
- * its bitmap zb (the source's: put_src_bit). */
-static inline void put_tag(int32_t *tags, uint64_t *zb, int s, int cap, int32_t v)
+ * its bitmap zb. A bitmap's bits are its tags' zero bits (bloom_begin
+ * sets them so): they are flipped only when the slot's zero bit changes,
+ * seldom (a run of zero rows or of bright ones keeps it). Returns the
+ * slot's old tag (the source's bitmap: flip_src_bits). */
+static inline int32_t put_tag(int32_t *tags, uint64_t *zb, int s, int cap, int32_t v)
 {
+    const int32_t old = tags[s];
     tags[s] = v;
     if (BLOOM_SCHED_TABLE)
         tags[s + cap] = v;
-    if (BLOOM_SCHED_TABLE && zb && cap <= BG_ZB_CAP) { /* the zero bit in the bitmap too (both copies) */
-        const uint64_t m = (1ull << s) | (1ull << (s + cap));
-        *zb = (v & ZBIT) ? *zb | m : *zb & ~m;
-    }
+    if (BLOOM_SCHED_TABLE && zb && cap <= BG_ZB_CAP && ((old ^ v) & ZBIT)) /* (both copies) */
+        *zb ^= (1ull << s) | (1ull << (s + cap));
+    return old;
 }
 #if BLOOM_SCHED_TABLE
 #define NODE_ZB(n) (&(n)->zb)
 /* The source ring's bitmap (32-bit words, the Cortex-M's own): bits s and
- * s + cap set to z. */
-static inline void put_src_bit(uint32_t *zb, int s, int cap, bool z)
+ * s + cap flipped. */
+static inline void flip_src_bits(uint32_t *zb, int s, int cap)
 {
-    for (int k = 0; k < 2; k++, s += cap) {
-        uint32_t *w = zb + (s >> 5);
-        *w = (*w & ~(1u << (s & 31))) | (uint32_t)z << (s & 31);
-    }
+    zb[s >> 5] ^= 1u << (s & 31);
+    s += cap;
+    zb[s >> 5] ^= 1u << (s & 31);
 }
 #else
 #define NODE_ZB(n) NULL
@@ -312,20 +320,21 @@ static inline void put_ptr(const void **ptrs, int s, int cap, const void *v)
  * written). */
 static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
 {
-    const size_t len = bg_row_bytes(n);
 #if BLOOM_SCHED_TABLE
     const int s = n->put;
     n->put = s + 1 == n->cap ? 0 : s + 1;
-    void *dst = (void *)(uintptr_t)n->rowp[s];
+#define SLOT_ROW(n, s) ((void *)(uintptr_t)(n)->rowp[s])
 #else
     const int s = r % n->cap;
-    void *dst = (uint8_t *)n->buf + (size_t)s * len;
+#define SLOT_ROW(n, s) ((void *)((uint8_t *)(n)->buf + (size_t)(s) * bg_row_bytes(n)))
 #endif
-    /* (tagged after the row is made: no row function reads its own node) */
-    const bool had_zeros = (n->tag[s] & ZBIT) != 0;
-    const int made = run_row(g, n, r, dst);
-    if (BLOOM_USE_SKIP && made == ROW_SKIPPED && !had_zeros)
-        memset(dst, 0, len);
+    const int made = run_row(g, n, r, SLOT_ROW(n, s));
+    /* The slot's old tag and the row's place read after the row is made
+     * (no row function reads or tags its own node's ring): only s is live
+     * across the gather and the call. */
+    if (BLOOM_USE_SKIP && made == ROW_SKIPPED && !(n->tag[s] & ZBIT))
+        memset(SLOT_ROW(n, s), 0, bg_row_bytes(n));
+#undef SLOT_ROW
     put_tag(n->tag, NODE_ZB(n), s, n->cap, BLOOM_USE_SKIP && made != ROW_MADE ? r | ZBIT : r);
 }
 
@@ -501,9 +510,12 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     (void)copy;
     const bool dark = false;
 #endif
-    put_tag(g->src_tag, NULL, slot, g->src_cap, dark ? r | ZBIT : r);
+    const int32_t tag = dark ? r | ZBIT : r;
 #if BLOOM_SCHED_TABLE
-    put_src_bit(g->src_zb, slot, g->src_cap, dark);
+    if ((put_tag(g->src_tag, NULL, slot, g->src_cap, tag) ^ tag) & ZBIT)
+        flip_src_bits(g->src_zb, slot, g->src_cap);
+#else
+    put_tag(g->src_tag, NULL, slot, g->src_cap, tag);
 #endif
 #if BLOOM_SCHED_TABLE
     g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;

@@ -82,9 +82,9 @@ typedef struct {
  * over: see bg_node_t; a tile's input read from a column on gets its own
  * view of the pointers, offset, when the slots stay), its slots and
  * height; `add`, bytes still to add per row (that offset, for the
- * caller's own source rows); and a cursor: the first row read by the last
- * row made and its slot
- * (rows only move forward, so no division per row). Which rows read are
+ * caller's own source rows); and a cursor, off: row j is in slot j - off,
+ * off moved on by cap when a row read passes the lap's end (rows only move
+ * forward, so no division per row). Which rows read are
  * zero come from the ring's bitmap zb (bit s: slot s holds a zero row,
  * twice over as the tags: one word for a node's ring of at most BG_ZB_CAP
  * slots, as many as it takes for the source ring's), else (a larger node
@@ -99,7 +99,7 @@ typedef struct {
     const int32_t *tags;
     const void *zb; /* uint64_t (a node's ring), uint32_t words (zw: the source's) */
     uint16_t cap, h;
-    uint16_t row, slot;
+    int32_t off; /* the cursor: the row in slot 0 of the ring's current lap */
     int8_t lo;  /* the input's rows base(r) + lo .. base(r) + lo + n1 (bg_input_t) */
     uint8_t n1; /* (hi - lo) */
     uint8_t sh; /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
