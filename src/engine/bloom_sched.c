@@ -94,6 +94,8 @@ static bool ensure_inputs(bloom_t *g, const bg_node_t *n, int r)
 enum { ROW_MADE, ROW_ZEROS, ROW_SKIPPED };
 
 #if BLOOM_SCHED_TABLE
+static bool walk_to_output(bloom_t *g, void *dst);
+
 /* Which of the rows in slots slot .. slot + n1 of an input's ring are zero,
  * from its bitmap (the source's: bits of two words past a word's end). */
 static inline uint32_t zero_bits(const bg_gather_t *ga, int slot)
@@ -279,12 +281,10 @@ static RUN_ROW_INLINE int run_row(bloom_t *g, bg_node_t *n, int r, void *dst)
     return !n->fn(&g->row, n, r, in, dst) && BLOOM_USE_SKIP && g->row.skip ? ROW_ZEROS : ROW_MADE;
 }
 
-/* Tag v into slot s of a ring of cap slots: both copies with the static
- * schedule's doubled rings, the one otherwise; and a node's zero bit into
- * its bitmap zb. A bitmap's bits are its tags' zero bits (bloom_begin
- * sets them so): they are flipped only when the slot's zero bit changes,
- * seldom (a run of zero rows or of bright ones keeps it). Returns the
- * slot's old tag (the source's bitmap: flip_src_bits). */
+/* Tag v into slot s of a ring of cap slots (both copies with the static
+ * schedule's doubled rings); a node's bitmap zb holds the tags' zero bits
+ * (bloom_begin), flipped only when the slot's changes. Returns the old tag
+ * (the source's bitmap: flip_src_bits). */
 static inline int32_t put_tag(int32_t *tags, uint64_t *zb, int s, int cap, int32_t v)
 {
     const int32_t old = tags[s];
@@ -326,12 +326,11 @@ static BLOOM_ALWAYS_INLINE void make_row(bloom_t *g, bg_node_t *n, int r)
 #define SLOT_ROW(n, s) ((void *)(uintptr_t)(n)->rowp[s])
 #else
     const int s = r % n->cap;
-#define SLOT_ROW(n, s) ((void *)((uint8_t *)(n)->buf + (size_t)(s) * bg_row_bytes(n)))
+#define SLOT_ROW(n, s) ((void *)((uint8_t *)(n)->buf + (size_t)(s)*bg_row_bytes(n)))
 #endif
     const int made = run_row(g, n, r, SLOT_ROW(n, s));
-    /* The slot's old tag and the row's place read after the row is made
-     * (no row function reads or tags its own node's ring): only s is live
-     * across the gather and the call. */
+    /* (the old tag and the row's place read after: only s lives across
+     * the gather and the call; no row function reads its own node) */
     if (BLOOM_USE_SKIP && made == ROW_SKIPPED && !(n->tag[s] & ZBIT))
         memset(SLOT_ROW(n, s), 0, bg_row_bytes(n));
 #undef SLOT_ROW
@@ -449,10 +448,6 @@ void bloom_dry_frame(bloom_t *g)
     g->dry = false;
 }
 
-#if BLOOM_SCHED_TABLE
-static bool walk_to_output(bloom_t *g, void *dst);
-#endif
-
 bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row, void *copy)
 {
     if (bg_aux_bpp(&g->row) && !aux_row)
@@ -467,10 +462,6 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     }
 #if BLOOM_SCHED_TABLE
     const int r = g->src_n, slot = g->src_put;
-#else
-    const int r = g->src_n, slot = r % g->src_cap;
-#endif
-#if BLOOM_SCHED_TABLE
     /* the rows the table makes before the next output row may free the
      * slot (a pull could not: it stops at that row); then a push is BUSY
      * only when an output row is due */
@@ -480,6 +471,7 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
         return BLOOM_E_INTERNAL;
     if (r - g->src_cap >= g->src_free)
 #else
+    const int r = g->src_n, slot = r % g->src_cap;
     if (r - g->src_cap >= oldest_of(g, BG_SRC))
 #endif
         return BLOOM_E_BUSY;
@@ -514,11 +506,9 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
 #if BLOOM_SCHED_TABLE
     if ((put_tag(g->src_tag, NULL, slot, g->src_cap, tag) ^ tag) & ZBIT)
         flip_src_bits(g->src_zb, slot, g->src_cap);
+    g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
 #else
     put_tag(g->src_tag, NULL, slot, g->src_cap, tag);
-#endif
-#if BLOOM_SCHED_TABLE
-    g->src_put = slot + 1 == g->src_cap ? 0 : slot + 1;
 #endif
     g->src_n++;
     return BLOOM_OK;

@@ -100,10 +100,10 @@ typedef struct {
     const void *zb; /* uint64_t (a node's ring), uint32_t words (zw: the source's) */
     uint16_t cap, h;
     int32_t off; /* the cursor: the row in slot 0 of the ring's current lap */
-    int8_t lo;  /* the input's rows base(r) + lo .. base(r) + lo + n1 (bg_input_t) */
-    uint8_t n1; /* (hi - lo) */
-    uint8_t sh; /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
-    bool zaux;  /* the aux plane: its zero rows do not make the reader's zero */
+    int8_t lo;   /* the input's rows base(r) + lo .. base(r) + lo + n1 (bg_input_t) */
+    uint8_t n1;  /* (hi - lo) */
+    uint8_t sh;  /* base(r) = 2r >> sh: 0 BG_DOWN, 1 BG_SAME, 2 BG_UP */
+    bool zaux;   /* the aux plane: its zero rows do not make the reader's zero */
     uint16_t fend;
     uint8_t zw; /* (lo .. zw fill 64 bits: no workspace) */
     uint32_t add;
