@@ -41,7 +41,7 @@ stage_of() {
     bloom_row_d1*|bloom_row_box_src*|bloom_row_knee*|bloom_div_u64_u32*|d1_*|bright*) echo "level-1 box from the source + knee" ;;
     bloom_row_box*|box_*) echo "box down, levels 2.." ;;
     bloom_row_dark*|max_bytes) echo "dark-row test on push" ;;
-    ensure|ensure_*|run_row*|make_row|next_row|input_top|oldest_of|src_slot|bloom_sched_*|bloom_run_rows|bloom_process|bloom_push*|bloom_pull*|bg_fn_*) echo "scheduler" ;;
+    ensure|ensure_*|run_row*|make_row|next_row|input_top|oldest_of|src_slot|walk_to_output|gather_edge|push_row|out_made|feed_push|bloom_sched_*|bloom_run_rows|bloom_process|bloom_push*|bloom_pull*|bg_fn_*) echo "scheduler" ;;
     *) echo "other" ;;
     esac
 }

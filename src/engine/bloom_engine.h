@@ -119,5 +119,25 @@ void bloom_dry_frame(bloom_t *b);
  * the row's bytes go when it is dark (bloom_dark_copy_fn), else NULL. */
 bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row, void *copy);
 bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
+#if BLOOM_SCHED_TABLE
+/* The rows of a band or frame call (bloom_frame.c's run_rows), fed to the
+ * schedule's walk in one call: window row i of the source at
+ * src + (win_y + i) src_stride (aux alike; NULL without the plane), output
+ * row j of the tile (or frame) at dst + (out_y0 + j) dst_stride. The walk
+ * pushes the next row where the table has a push, up to `end` rows in,
+ * and makes each output row due into its place: no push or pull call per
+ * row. copies (the frame call's dark rows, BG_DARK_COPY): a dark source
+ * row copied to its destination row as pushed; orow, oslot: the cursor on
+ * the source row of the next output row (its slot). */
+typedef struct {
+    const uint8_t *src, *aux;
+    uint8_t *dst;
+    ptrdiff_t src_stride, aux_stride, dst_stride;
+    int end, out_y0;
+    bool copies;
+    int orow, oslot;
+} bloom_feed_t;
+bloom_status_t bloom_sched_feed(bloom_t *b, bloom_feed_t *f);
+#endif
 
 #endif

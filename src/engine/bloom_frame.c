@@ -171,21 +171,6 @@ static bool dark_copies(const bloom_t *b, const uint8_t *s, const uint8_t *d)
     return b->row.dark_src && b->row.par.dark_copy && s != d && !bg_tiled(&b->row) &&
            bloom_copy_is_bytes(&b->row.par.out);
 }
-
-/* Whether source row r, at ring slot `slot`, is still there and tagged dark. */
-static bool slot_dark(const bloom_t *b, int slot, int r)
-{
-    return b->src_tag[slot] == (r | BLOOM_TAG_ZERO);
-}
-
-/* Whether source row r is tagged dark, its slot followed by a cursor (the
- * slot *slot of row *row; rows only go forward, so no division per row). */
-static bool row_dark(const bloom_t *b, int *slot, int *row, int r)
-{
-    for (; *row < r; ++*row)
-        *slot = *slot + 1 == b->src_cap ? 0 : *slot + 1;
-    return slot_dark(b, *slot, r);
-}
 #endif
 
 static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
@@ -208,44 +193,43 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (!aux)
             return BLOOM_E_AUX;
     }
-#if BG_DARK_COPY
+#if BLOOM_SCHED_TABLE
+    /* one walk of the schedule pushes and pulls every row (bloom_feed_t);
+     * the cursor on the source row of the next output row (untiled, the
+     * output row of that number is made from it) */
     const bool copies = frame && dark_copies(b, s, d);
-    /* the cursor on the source row of the next output row (untiled, the
-     * output row of that number is made from it); the tiled and band calls
-     * never touch it */
-    int orow = bloom_rows_out(b), oslot = copies ? orow % b->src_cap : 0;
+    const int orow = bloom_rows_out(b);
+    bloom_feed_t f = {s,
+                      aux,
+                      d,
+                      src_stride,
+                      aux_stride,
+                      dst_stride,
+                      end,
+                      out_row0(b),
+                      copies,
+                      orow,
+                      copies ? orow % b->src_cap : 0};
+    return bloom_sched_feed(b, &f);
 #else
     (void)frame; /* (only the frame call copies dark rows early) */
-#endif
     for (;;) {
         bloom_status_t st;
-        do {
-#if BG_DARK_COPY
-            if (copies)
-                b->row.par.dst_copied = row_dark(b, &oslot, &orow, bloom_rows_out(b));
-#endif
+        do
             st = bloom_sched_pull(b, d + (ptrdiff_t)(out_row0(b) + bloom_rows_out(b)) *
                                              dst_stride); /* span checked above */
-        } while (st == BLOOM_OK);
-#if BG_DARK_COPY
-        b->row.par.dst_copied = false;
-#endif
+        while (st == BLOOM_OK);
         if (st < 0)
             return st;
         const int r = bloom_rows_in(b);
         if (r == end)
             return BLOOM_OK;
         const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
-#if BG_DARK_COPY
-        /* untiled: output row r is frame row r */
-        st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL,
-                              copies ? d + fr * dst_stride : NULL);
-#else
         st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL, NULL);
-#endif
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
     }
+#endif
 }
 
 bloom_status_t bloom_run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride, int nrows, void *dst,
