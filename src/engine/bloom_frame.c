@@ -197,19 +197,24 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
     /* one walk of the schedule pushes and pulls every row (bloom_feed_t);
      * the cursor on the source row of the next output row (untiled, the
      * output row of that number is made from it) */
+#if BG_DARK_COPY
     const bool copies = frame && dark_copies(b, s, d);
+#else
+    (void)frame; /* (no early copies of dark rows in this build) */
+    const bool copies = false;
+#endif
     const int orow = bloom_rows_out(b);
-    bloom_feed_t f = {s,
-                      aux,
-                      d,
-                      src_stride,
-                      aux_stride,
-                      dst_stride,
-                      end,
-                      out_row0(b),
-                      copies,
-                      orow,
-                      copies ? orow % b->src_cap : 0};
+    bloom_feed_t f = {.src = s,
+                      .aux = aux,
+                      .dst = d,
+                      .src_stride = src_stride,
+                      .aux_stride = aux_stride,
+                      .dst_stride = dst_stride,
+                      .end = end,
+                      .out_y0 = out_row0(b),
+                      .copies = copies,
+                      .orow = orow,
+                      .oslot = copies ? orow % b->src_cap : 0};
     return bloom_sched_feed(b, &f);
 #else
     (void)frame; /* (only the frame call copies dark rows early) */

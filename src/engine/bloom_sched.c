@@ -330,9 +330,9 @@ static bool walk_to_output(bloom_t *g, void *dst, bloom_feed_t *f)
                 break;
             uint8_t *row = f ? feed_row(g, f) : NULL;
             run_row(g, o, o->next, !f ? dst : bg_tiled(&g->row) ? (void *)g->out_row : row);
-            if (f) {
+            if (f && !g->failed) { /* (a failed row is not counted: the call fails) */
                 out_made(g, row);
-                if (!g->failed && o->next < (bg_tiled(&g->row) ? g->tile_y1 : g->gr.h[0]))
+                if (o->next < (bg_tiled(&g->row) ? g->tile_y1 : g->gr.h[0]))
                     continue;
             }
             at++;
