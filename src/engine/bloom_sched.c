@@ -1,4 +1,5 @@
-/* The scheduler (bloom_engine.h): rows in and out, and the dry run.
+/* The scheduler (bloom_engine.h): rows in and out (a row at a time, or a
+ * band or frame fed to one walk), and the dry run.
  *
  * The order in which node rows are made depends on the frame geometry
  * alone. The dry run (bloom_plan, at bloom_query and bloom_init) finds it

@@ -1,8 +1,8 @@
 /* The scheduler's rows (bloom_sched.c, its one includer): a node row made
  * from its gathered inputs (run_row), into its ring slot and tagged
  * (make_row), the tags' and bitmaps' upkeep. Static: the walk of the
- * static schedule inlines them (one function per frame row, no calls per
- * node row), and the size build keeps them apart for its stack. */
+ * static schedule inlines them (no call per node row), and the size build
+ * keeps run_row apart for its stack. */
 #ifndef BLOOM_SCHED_ROWS_H
 #define BLOOM_SCHED_ROWS_H
 
