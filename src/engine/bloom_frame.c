@@ -1,7 +1,8 @@
 /* The row, band and frame calls of the API: argument checks, the aliasing
  * rules (a destination may overlap its source only in place), and the band
- * and frame calls as loops over the row calls of the scheduler
- * (bloom_sched.c). */
+ * and frame calls: one walk of the static schedule fed the frames
+ * (bloom_sched_feed), or, in the size build, loops over the row calls of
+ * the scheduler (bloom_sched.c). */
 #include <string.h>
 
 #include "bloom_engine.h"
@@ -94,7 +95,7 @@ static bool dst_overlaps(const void *const *ptr, const int32_t *tag, int cap, si
 
 /* The row call checks dst_row against every source row still held (a scan
  * of the source ring per row); the band and frame calls check their whole
- * span once instead (frames_overlap) and pull without it. */
+ * span once instead (frames_overlap) and make their rows without it. */
 bloom_status_t bloom_pull_row(bloom_t *b, void *dst_row)
 {
     if (!b || !dst_row)

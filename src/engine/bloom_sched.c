@@ -295,7 +295,8 @@ static uint8_t *feed_row(bloom_t *g, bloom_feed_t *f)
  * inputs made), and then made into dst if there is one (the walk passes
  * its byte); false when the walk waits for a push. With a feed f, the walk
  * pushes its rows and makes every output row due into its place, and goes
- * on to the feed's end, the tile's last row or the table's. The tile's
+ * on to the feed's end, the tile's last row or the table's (true if any
+ * output row was due: unused). The tile's
  * halo rows above it are passed (their inputs are made, they are not). The
  * one caller of run_row: every row is made here, run_row inlined. */
 static bool walk_to_output(bloom_t *g, void *dst, bloom_feed_t *f)
