@@ -213,8 +213,8 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     return BLOOM_OK;
 }
 
-/* Source row src_n into ring slot `slot`, free (bloom_sched_push's checks
- * passed, or a feed's walk at the table's push). */
+/* Source row src_n into ring slot `slot`, which no reader still needs
+ * (bloom_sched_push's checks passed, or a feed's walk at the table's push). */
 static void push_row(bloom_t *g, int slot, const void *src_row, const void *aux_row, void *copy)
 {
     const int r = g->src_n;
