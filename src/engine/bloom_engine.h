@@ -115,10 +115,9 @@ void bloom_tile_cut(bloom_t *b);
 #endif
 /* The dry run: ring sizes, source rows, latency. */
 void bloom_dry_frame(bloom_t *b);
-/* A source row in; copy: where the row's bytes go when it is dark
- * (bloom_dark_copy_fn), else NULL. Every caller passes NULL now: the frame
- * call's dark rows are copied by its feed's pushes (bloom_sched_feed). */
-bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row, void *copy);
+/* A source row in (the row call's push; the frame call's dark rows are
+ * copied by its feed's pushes, bloom_sched_feed). */
+bloom_status_t bloom_sched_push(bloom_t *b, const void *src_row, const void *aux_row);
 bloom_status_t bloom_sched_pull(bloom_t *b, void *dst_row);
 #if BLOOM_SCHED_TABLE
 /* The rows of a band or frame call (bloom_frame.c's run_rows), fed to the

@@ -52,14 +52,14 @@ bloom_status_t bloom_push_row_aux(bloom_t *b, const void *src_row, const void *a
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-    return bloom_sched_push(b, src_row, aux_row, NULL);
+    return bloom_sched_push(b, src_row, aux_row);
 }
 
 bloom_status_t bloom_push_row(bloom_t *b, const void *src_row)
 {
     if (!b || !src_row)
         return BLOOM_E_NULL;
-    return bloom_sched_push(b, src_row, NULL, NULL);
+    return bloom_sched_push(b, src_row, NULL);
 }
 
 #if !BLOOM_SMALL
@@ -231,7 +231,7 @@ static bloom_status_t run_rows(bloom_t *b, const void *src, ptrdiff_t src_stride
         if (r == end)
             return BLOOM_OK;
         const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&b->row) + r; /* the frame row */
-        st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL, NULL);
+        st = bloom_sched_push(b, s + fr * src_stride, aux ? aux + fr * aux_stride : NULL);
         if (st < 0)
             return st; /* BUSY cannot happen right after a full drain */
     }

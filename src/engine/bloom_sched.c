@@ -182,7 +182,7 @@ static void push_row(bloom_t *g, int slot, const void *src_row, const void *aux_
 static bool walk_to_output(bloom_t *g, void *dst, bloom_feed_t *f);
 #endif
 
-bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row, void *copy)
+bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux_row)
 {
     if (bg_aux_bpp(&g->row) && !aux_row)
         return BLOOM_E_AUX;
@@ -209,12 +209,13 @@ bloom_status_t bloom_sched_push(bloom_t *g, const void *src_row, const void *aux
     if (r - g->src_cap >= oldest_of(g, BG_SRC))
 #endif
         return BLOOM_E_BUSY;
-    push_row(g, slot, src_row, aux_row, copy);
+    push_row(g, slot, src_row, aux_row, NULL);
     return BLOOM_OK;
 }
 
 /* Source row src_n into ring slot `slot`, which no reader still needs
- * (bloom_sched_push's checks passed, or a feed's walk at the table's push). */
+ * (bloom_sched_push's checks passed, or a feed's walk at the table's push);
+ * copy: where a dark row's bytes go (the frame call's feed), else NULL. */
 static void push_row(bloom_t *g, int slot, const void *src_row, const void *aux_row, void *copy)
 {
     const int r = g->src_n;
@@ -271,12 +272,19 @@ static void out_made(bloom_t *g, void *dst_row)
 }
 
 #if BLOOM_SCHED_TABLE
-/* The feed's next source row pushed, at the table's push (its slot free). */
-static BLOOM_NOINLINE void feed_push(bloom_t *g, const bloom_feed_t *f)
+/* The feed's next source row pushed, at the table's push (its slot free,
+ * checked: the table is checked at bloom_init, but not the rings without
+ * BLOOM_CHECK_RINGS); false when it is not. */
+static BLOOM_NOINLINE bool feed_push(bloom_t *g, const bloom_feed_t *f)
 {
+    if (g->src_n - g->src_cap >= g->src_free) { /* a wrong table: fail, not overwrite a row still read */
+        g->failed = true;
+        return false;
+    }
     const ptrdiff_t fr = (ptrdiff_t)bg_win_y(&g->row) + g->src_n; /* the frame row */
     push_row(g, g->src_put, f->src + fr * f->src_stride, f->aux ? f->aux + fr * f->aux_stride : NULL,
              f->copies ? f->dst + fr * f->dst_stride : NULL); /* (untiled: output row r is frame row r) */
+    return true;
 }
 
 /* The feed's next output row: its place, and whether the push copied its
@@ -343,9 +351,8 @@ static bool walk_to_output(bloom_t *g, void *dst, bloom_feed_t *f)
             g->src_free++;
         } else { /* BG_S_PUSH */
             if (g->src_seen == g->src_n) {
-                if (!f || g->src_n == f->end)
-                    break;
-                feed_push(g, f);
+                if (!f || g->src_n == f->end || g->failed || !feed_push(g, f))
+                    break; /* (after a failed row the call ends at the next push) */
             }
             g->src_seen++;
         }
