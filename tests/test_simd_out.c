@@ -115,7 +115,7 @@ static void test_eo(const bloom_kernels_t *ks)
 
 /* The output row kernel: bloom_row_out_k (fast path where it applies) with
  * the SIMD and the C kernels against bloom_row_out_c, U at the bound of the
- * default pipeline (16 * 2^F) and below. */
+ * default pipeline (16 * 2^F) and below; and from an even column on. */
 static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
 {
     static const bloom_format_t fmts[] = {BLOOM_FMT_RGB888, BLOOM_FMT_XRGB8888, BLOOM_FMT_RGB565,
@@ -164,8 +164,8 @@ static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         d[j] += 1; /* unaligned */
                     }
                     for (int odd = 0; odd < 2; odd++) {
-                        bloom_row_out_k(ks, up, odd, src, d[0], w, sw, &o);
-                        bloom_row_out_k(kc, up, odd, src, d[1], w, sw, &o);
+                        bloom_row_out_k(ks, up, odd, src, d[0], 0, w, sw, &o);
+                        bloom_row_out_k(kc, up, odd, src, d[1], 0, w, sw, &o);
                         bloom_row_out_c(up, odd, src, d[2], w, sw, &o);
                         cases++;
                         const size_t nb = (size_t)w * (size_t)ob;
@@ -173,6 +173,16 @@ static void test_out(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         for (int j = 0; j < 3; j++)
                             for (int g = 0; g < 7; g++)
                                 ok = ok && d[j][nb + (size_t)g] == 0x5A;
+                        /* from an even column x0 on (a tile's row in place):
+                         * the same columns, none before x0 written */
+                        const int x0 = (w / 3) & ~1;
+                        const size_t nx0 = (size_t)x0 * (size_t)ob;
+                        memset(d[0], 0x5A, nb);
+                        bloom_row_out_k(ks, up, odd, src + (size_t)x0 * (size_t)ib, d[0] + nx0, x0, w, sw,
+                                        &o);
+                        ok = ok && memcmp(d[0] + nx0, d[2] + nx0, nb - nx0) == 0;
+                        for (size_t i = 0; i < nx0; i++)
+                            ok = ok && d[0][i] == 0x5A;
                         if (!ok) {
                             bad++;
                             fprintf(stderr, "out: w %d in %d out %d var %d odd %d differs\n", w,

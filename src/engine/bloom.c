@@ -153,8 +153,15 @@ bloom_status_t bloom_plan(bloom_t *g, const bloom_config_t *cfg, bg_node_t *node
         g->tile_x1 = g->tile_x0 + cfg->tile_w;
         g->tile_y0 = cfg->tile_y - y0;
         g->tile_y1 = g->tile_y0 + cfg->tile_h;
-        if (st == BLOOM_OK)
+        if (st == BLOOM_OK) {
             bloom_tile_cut(g);
+            /* the tile's row written in place when the output row function
+             * can start at the tile's column (an even one: the tents pair
+             * the output's columns), else made into out_row and copied out */
+            const int lead = g->tile_x0 - g->gr.node[g->gr.out_node].xa;
+            g->out_direct = g->gr.out_from_x0 && !(lead & 1);
+            g->row.out_x0 = g->out_direct ? lead : 0;
+        }
     }
 #endif
     if (st == BLOOM_OK)
@@ -280,7 +287,7 @@ uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
 #if BLOOM_SCHED_TABLE
     g->src_zb = (uint32_t *)take(base, &off, (copies + 31) / 32 * sizeof(uint32_t));
 #endif
-    if (bg_tiled(&g->row))
+    if (bg_tiled(&g->row) && !g->out_direct)
         g->out_row = (uint8_t *)take(
             base, &off, (uint64_t)g->gr.node[g->gr.out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
     g->row.scratch = (uint32_t *)take(

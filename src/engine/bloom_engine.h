@@ -48,8 +48,9 @@ struct bloom {
      * rectangle from column row.win_x and row row.win_y of the frame,
      * gr.w[0] x gr.h[0]. With a tile (row.tiled) the output is the
      * window's columns tile_x0 .. tile_x1 - 1 and rows tile_y0 .. tile_y1 - 1
-     * (the tile): the output node writes out_row, the tile's part is
-     * copied out. */
+     * (the tile): the output node writes the tile's columns of the
+     * caller's row in place (out_direct), or else out_row, whose tile
+     * part is copied out. */
     int tile_x0, tile_x1, tile_y0, tile_y1;
     uint8_t *out_row;
     int out_rows; /* output rows given to the caller this frame */
@@ -74,6 +75,7 @@ struct bloom {
     int src_n;
     int src_put; /* the source ring's slot for row src_n (src_n % src_cap) */
     bool failed, dry;
+    bool out_direct; /* a tile's output rows are written in place (bg_out_x0), not into out_row */
     int need_src, latency;
     /* The static schedule (BLOOM_SCHED_TABLE; engine/bloom_sched.c): the
      * dry run's firings in order, one byte each: a node index (make its

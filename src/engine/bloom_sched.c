@@ -257,12 +257,25 @@ static void push_row(bloom_t *g, int slot, const void *src_row, const void *aux_
     g->src_n++;
 }
 
-/* Output row o->next made (into dst_row, or the tile's row, whose columns
- * of the window's row go to dst_row): counted. */
+#if BLOOM_SCHED_TABLE
+/* Where the output node makes its row for the caller's row dst_row: there,
+ * or a tile's columns of it (written in place: the row function starts at
+ * bg_out_x0), or out_row (copied out by out_made). */
+static void *out_place(const bloom_t *g, void *dst_row)
+{
+    if (!bg_tiled(&g->row))
+        return dst_row;
+    return g->out_direct ? (uint8_t *)dst_row + (size_t)g->cfg.tile_x * (size_t)bloom_bpp(g->cfg.out_fmt)
+                         : (void *)g->out_row;
+}
+#endif
+
+/* Output row o->next made (at out_place(dst_row)): the tile's columns of
+ * out_row copied to dst_row, counted. */
 static void out_made(bloom_t *g, void *dst_row)
 {
     bg_node_t *o = &g->gr.node[g->gr.out_node];
-    if (bg_tiled(&g->row)) { /* the tile's columns of the window's row */
+    if (bg_tiled(&g->row) && !g->out_direct) { /* the tile's columns of the window's row */
         const size_t bpp = (size_t)bloom_bpp(g->cfg.out_fmt);
         memcpy((uint8_t *)dst_row + (size_t)g->cfg.tile_x * bpp,
                g->out_row + (size_t)(g->tile_x0 - o->xa) * bpp, (size_t)(g->tile_x1 - g->tile_x0) * bpp);
@@ -339,7 +352,7 @@ static bool walk_to_output(bloom_t *g, void *dst, bloom_feed_t *f)
             if (!dst && !f)
                 break;
             uint8_t *row = f ? feed_row(g, f) : NULL;
-            run_row(g, o, o->next, !f ? dst : bg_tiled(&g->row) ? (void *)g->out_row : row);
+            run_row(g, o, o->next, f ? out_place(g, row) : dst);
             if (f && !g->failed) { /* (a failed row is not counted: the call fails) */
                 out_made(g, row);
                 if (o->next < (bg_tiled(&g->row) ? g->tile_y1 : g->gr.h[0]))
@@ -382,8 +395,7 @@ bloom_status_t bloom_sched_pull(bloom_t *g, void *dst_row)
 #if BLOOM_SCHED_TABLE
     if (o->next >= g->gr.h[0] || (bg_tiled(&g->row) && o->next >= g->tile_y1))
         return BLOOM_DONE;
-    void *row = bg_tiled(&g->row) ? (void *)g->out_row : dst_row;
-    if (!walk_to_output(g, row, NULL) || g->failed) /* (the row made) */
+    if (!walk_to_output(g, out_place(g, dst_row), NULL) || g->failed) /* (the row made) */
         return g->failed ? BLOOM_E_INTERNAL : BLOOM_AGAIN;
 #else
 #if !BLOOM_SMALL

@@ -207,6 +207,9 @@ struct bg_ctx {
     bool dark_src;             /* source rows are tagged dark by `dark` (the preset set a dark cut) */
     bool tiled;                /* a tile's window (bloom_plan) */
     int win_x, win_y;          /* the window's first column and row in the frame */
+#if !BLOOM_SMALL
+    int out_x0; /* bg_out_x0 */
+#endif
 };
 
 /* The graph a preset's build hook makes (graph construction below): the
@@ -219,6 +222,10 @@ typedef struct {
     bg_node_t *node;
     int nnodes, node_cap, out_node;
     bool failed; /* out of nodes, or a malformed input */
+#if !BLOOM_SMALL
+    bool out_from_x0; /* the output node's row function can write a tile's row
+                         in place, from column bg_out_x0 on (bg_build_out_add) */
+#endif
 } bg_graph_t;
 
 #define BG_SCRATCH 4
@@ -289,6 +296,19 @@ static inline bool bg_in_zero(const bg_ctx_t *ctx, int i, int lo, int hi)
 static inline bool bg_tiled(const bg_ctx_t *ctx)
 {
     return !BLOOM_SMALL && ctx->tiled;
+}
+/* The output node's first column written: where a tile's row is written in
+ * place (bg_graph_t.out_from_x0), the tile's first, and the output row
+ * function's dst and source row then point at it (the columns before it
+ * are read, not made: its inputs' clamped reads spoil them); else 0. */
+static inline int bg_out_x0(const bg_ctx_t *ctx)
+{
+#if !BLOOM_SMALL
+    return ctx->out_x0;
+#else
+    (void)ctx;
+    return 0;
+#endif
 }
 /* The first row (or column) of an input that row (column) r of its reader
  * is based at: 2r for BG_DOWN, r for BG_SAME, r >> 1 for BG_UP. */

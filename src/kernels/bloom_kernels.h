@@ -259,13 +259,15 @@ typedef struct {
 } bloom_kernels_t;
 /* The kernels for flags (BLOOM_FLAG_NO_SIMD: the C ones). */
 void bloom_kernels_select(bloom_kernels_t *k, uint32_t flags);
-/* bloom_row_out_c with the kernels of k. For 8/6/5-bit sRGB input and
- * output it takes the fast path (flat vertical tent, horizontal tent into
- * even/odd columns, fused composite and encode), which relies on the bound
- * of the default pipeline: u values at most 16 * 2^F (sums of at most 16
- * decoded 8/6/5-bit samples). */
+/* bloom_row_out_c with the kernels of k, for columns x0 .. w - 1 of the
+ * row (x0 even; src and dst point at column x0: a tile's row written in
+ * place, the columns before it read from u but not made). For 8/6/5-bit
+ * sRGB input and output it takes the fast path (flat vertical tent,
+ * horizontal tent into even/odd columns, fused composite and encode),
+ * which relies on the bound of the default pipeline: u values at most
+ * 16 * 2^F (sums of at most 16 decoded 8/6/5-bit samples). */
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o);
+                     uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o);
 /* The 16-bit kernels of k's instruction set: the AVX2 twins with the AVX2
  * set (bloom_row16_avx2.c), the SSE2 ones with SSE2 (bloom_row16_sse2.c),
  * the NEON ones with NEON (bloom_row16_neon.c), the C ones otherwise; same
@@ -286,7 +288,7 @@ void bloom_row_tent16_k(const bloom_kernels_t *k, const uint16_t *const u[3], in
 /* bloom_row_out_k on U_1 rows of 16-bit samples, widened by sh in its sums
  * (no widened copy of the rows). Not in builds without BLOOM_USE_S16. */
 void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
-                       const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o);
+                       const uint8_t *src, uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o);
 
 /* Which SIMD twins this build has (bloom_row_sse2.c, bloom_row_neon.c). */
 #if !BLOOM_NO_SIMD && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))

@@ -22,23 +22,25 @@
  * holds for every level sum, sim/docs/fixed-point.md). Per chunk of level-1 columns m0 .. m0+n-1: the
  * vertical tent V of columns m0-1 .. m0+n (edges replicated) in one flat
  * pass, the horizontal tent into the even (e) and odd (od) output columns,
- * the intensity, then the composite and encode per output pixel. Same bits
- * as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
+ * the intensity, then the composite and encode per output pixel; the
+ * chunks start at x0 / 2 (x0 even). Same bits as bloom_row_out_c: with U <= 16 * 2^F every 32-bit sum is exact, P < 2^32
  * for I <= 223.8 and P + S < 2^32. */
 static void out_fast(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
+                     uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
 {
     const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     const void *ua = odd ? u[2] : u[0], *ub = u[1], *uc = odd ? u[0] : u[2];
     uint32_t vb[3 * (OUT_FAST_CH + 2)], eo[6 * OUT_FAST_CH]; /* even, then odd columns */
     uint32_t *e = eo, *od = eo + 3 * OUT_FAST_CH;
     const int mw = (w + 1) / 2; /* the columns read, sw or fewer (a tile's output) */
-    for (int m0 = 0; m0 < mw; m0 += OUT_FAST_CH) {
+    for (int m0 = x0 / 2; m0 < mw; m0 += OUT_FAST_CH) {
         const int n = imin(OUT_FAST_CH, mw - m0);
         const int lo = m0 > 0 ? m0 - 1 : 0, hi = imin(m0 + n, sw - 1); /* columns computed */
         const size_t c0 = (size_t)lo * 3u;
         uint32_t *v0 = vb + (size_t)(lo - m0 + 1) * 3u; /* vb[3 j] is column m0 - 1 + j */
-        const int x0 = 2 * m0, nx = imin(2 * n, w - x0);
+        const int xs = 2 * m0, nx = imin(2 * n, w - xs);
+        const uint8_t *sc = src + (size_t)(xs - x0) * ibpp; /* column xs */
+        uint8_t *dc = dst + (size_t)(xs - x0) * obpp;
         /* 16-bit rows (sh > 0: U_1 of cfg.sample_bits 16) are widened in the sums */
         const uint32_t any =
 #if BLOOM_USE_S16
@@ -49,7 +51,7 @@ static void out_fast(const bloom_kernels_t *k, const void *const u[3], int sh, i
                k->vtent((const uint32_t *)ua + c0, (const uint32_t *)ub + c0, (const uint32_t *)uc + c0, v0,
                         3 * (hi - lo + 1));
         if (!any) { /* V = 0: B = 0 here */
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
+            bloom_row_copy_c(sc, dc, nx, o);
             continue;
         }
         if (m0 == 0)
@@ -57,14 +59,14 @@ static void out_fast(const bloom_kernels_t *k, const void *const u[3], int sh, i
         if (m0 + n == sw)
             memcpy(vb + 3 * (n + 1), vb + 3 * n, 3u * sizeof *vb);
         if (!k->htent_eo(vb + 3, e, od, 3 * n)) { /* B = 0 on this chunk */
-            bloom_row_copy_c(src + (size_t)x0 * ibpp, dst + (size_t)x0 * obpp, nx, o);
+            bloom_row_copy_c(sc, dc, nx, o);
             continue;
         }
         if (o->intensity != 65536u) { /* (65536 x + 32768) >> 16 = x */
             k->scale(e, 3 * n, o->intensity);
             k->scale(od, 3 * n, o->intensity);
         }
-        k->eo(o->in_fmt, o->out_fmt, o->debug, src + (size_t)x0 * ibpp, e, od, dst + (size_t)x0 * obpp, nx);
+        k->eo(o->in_fmt, o->out_fmt, o->debug, sc, e, od, dc, nx);
     }
 }
 #endif
@@ -114,64 +116,65 @@ void bloom_row_tent_flat(const uint32_t *const u[3], int odd, const uint32_t *ad
 }
 #endif
 
-/* The general output path, chunk by chunk: tent, composite, encode. u
+/* The general output path, chunk by chunk from column x0: tent, composite, encode. u
  * holds 32-bit rows, or with sh > 0 (U_1 of cfg.sample_bits 16) 16-bit
  * rows the tent widens in its sums. */
 static void out_chunks(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
-                       uint8_t *dst, int w, int sw, const bloom_out_t *o)
+                       uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
 {
     const size_t ibpp = (size_t)bloom_bpp(o->in_fmt), obpp = (size_t)bloom_bpp(o->out_fmt);
     uint32_t bl[3 * BLOOM_OUT_CHUNK], sv[3 * BLOOM_OUT_CHUNK];
     (void)sh; /* (0 where 16-bit samples are compiled out) */
     if (o->debug)
         memset(sv, 0, sizeof sv);
-    for (int x0 = 0; x0 < w; x0 += BLOOM_OUT_CHUNK) {
-        const int n = imin(BLOOM_OUT_CHUNK, w - x0);
+    for (int xs = x0; xs < w; xs += BLOOM_OUT_CHUNK) {
+        const int n = imin(BLOOM_OUT_CHUNK, w - xs);
 #if BLOOM_USE_S16
         if (sh) {
             const uint16_t *const u16[3] = {(const uint16_t *)u[0], (const uint16_t *)u[1],
                                             (const uint16_t *)u[2]};
-            bloom_row_tent16w_c(u16, odd, bl, x0, n, sw, sh);
+            bloom_row_tent16w_c(u16, odd, bl, xs, n, sw, sh);
         } else
 #endif
         {
             const uint32_t *const u32[3] = {(const uint32_t *)u[0], (const uint32_t *)u[1],
                                             (const uint32_t *)u[2]};
-            k->tent(u32, odd, NULL, bl, x0, n, sw);
+            k->tent(u32, odd, NULL, bl, xs, n, sw);
         }
         if (!o->debug)
-            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)x0 * ibpp, sv, n);
+            bloom_decode_row(o->in_fmt, o->linear, src + (size_t)(xs - x0) * ibpp, sv, n);
         k->composite(bl, sv, 3 * n, o->intensity);
-        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)x0 * obpp, n);
+        bloom_encode_row(o->out_fmt, o->linear, bl, dst + (size_t)(xs - x0) * obpp, n);
     }
 }
 
-/* One output row from 32-bit U rows, or 16-bit ones widened by sh. */
+/* Columns x0 .. w - 1 of one output row (src and dst from column x0 on)
+ * from 32-bit U rows, or 16-bit ones widened by sh. */
 static void out_row(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
-                    uint8_t *dst, int w, int sw, const bloom_out_t *o)
+                    uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
 {
 #if !BLOOM_SMALL
     if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&
         bloom_encode_eo_ok(o->in_fmt, o->out_fmt, o->linear)) {
-        out_fast(k, u, sh, odd, src, dst, w, sw, o);
+        out_fast(k, u, sh, odd, src, dst, x0, w, sw, o);
         return;
     }
 #endif
-    out_chunks(k, u, sh, odd, src, dst, w, sw, o);
+    out_chunks(k, u, sh, odd, src, dst, x0, w, sw, o);
 }
 
 void bloom_row_out_k(const bloom_kernels_t *k, const uint32_t *const u[3], int odd, const uint8_t *src,
-                     uint8_t *dst, int w, int sw, const bloom_out_t *o)
+                     uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
 {
     const void *const uv[3] = {u[0], u[1], u[2]};
-    out_row(k, uv, 0, odd, src, dst, w, sw, o);
+    out_row(k, uv, 0, odd, src, dst, x0, w, sw, o);
 }
 
 #if BLOOM_USE_S16
 void bloom_row_out16_k(const bloom_kernels_t *k, const uint16_t *const u[3], int sh, int odd,
-                       const uint8_t *src, uint8_t *dst, int w, int sw, const bloom_out_t *o)
+                       const uint8_t *src, uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
 {
     const void *const uv[3] = {u[0], u[1], u[2]};
-    out_row(k, uv, sh, odd, src, dst, w, sw, o);
+    out_row(k, uv, sh, odd, src, dst, x0, w, sw, o);
 }
 #endif

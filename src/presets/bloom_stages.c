@@ -62,14 +62,15 @@ bool bg_fn_add_tent(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
 bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst)
 {
-    const uint8_t *src = (const uint8_t *)in[1][0];
+    const int x0 = bg_out_x0(ctx); /* (a tile's row in place: dst is column x0) */
+    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)x0 * ctx->src_bpp;
     const int sw = bg_node_in_w(ctx, n, 0);
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
-        bg_copy_row(ctx, src, (uint8_t *)dst, n->w);
+        bg_copy_row(ctx, src, (uint8_t *)dst, n->w - x0);
     else if (!BLOOM_SMALL && ctx->kern.htent_eo) /* the flat kernels: every set but BLOOM_SMALL's */
-        bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
+        bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, x0, n->w, sw, &ctx->par.out);
     else
         bloom_row_out_c(u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     return true;
@@ -137,13 +138,14 @@ static bool fn_add_tent16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
 static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
-    const uint8_t *src = (const uint8_t *)in[1][0];
+    const int x0 = bg_out_x0(ctx);
+    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)x0 * ctx->src_bpp;
     const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
-        bg_copy_row(ctx, src, (uint8_t *)dst, n->w);
+        bg_copy_row(ctx, src, (uint8_t *)dst, n->w - x0);
     else
-        bloom_row_out16_k(&ctx->kern, u, ctx->par.s16, r & 1, src, (uint8_t *)dst, n->w,
+        bloom_row_out16_k(&ctx->kern, u, ctx->par.s16, r & 1, src, (uint8_t *)dst, x0, n->w,
                           bg_node_in_w(ctx, n, 0), &ctx->par.out);
     return true;
 }

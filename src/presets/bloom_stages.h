@@ -40,6 +40,9 @@ static inline int bg_build_out_add(bg_graph_t *g, int u1)
     const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, u1, BG_UP, -1, 1);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
+#if !BLOOM_SMALL
+    g->out_from_x0 = true; /* bg_fn_out_add (and its 16-bit twin) write from bg_out_x0 */
+#endif
     return g->out_node = o;
 }
 
