@@ -356,14 +356,41 @@ static void test_d1(const bloom_kernels_t *ks, const bloom_kernels_t *kc)
                         fprintf(stderr, "box_src (%s): sw %d fmt %d %d..%d differs\n", ks->name, sw,
                                 (int)fmts[fi], xa, xb);
                     }
-                    const bool ra = ks->d1(sp, fmts[fi], lin, a.p, dw, sw, &kn, &dk);
-                    const bool rc = kc->d1(sp, fmts[fi], lin, c.p, dw, sw, &kn, &dk);
+                    const bool ra = ks->d1(sp, fmts[fi], lin, a.p, dw, sw, &kn, &dk, NULL);
+                    const bool rc = kc->d1(sp, fmts[fi], lin, c.p, dw, sw, &kn, &dk, NULL);
                     cases++;
                     if (ra != rc || memcmp(a.p, c.p, (size_t)dw * 12u) != 0 || !row_guard_ok(&a) ||
                         !row_guard_ok(&c)) {
                         bad++;
                         fprintf(stderr, "d1: sw %d fmt %d var %d dark %u differs\n", sw, (int)fmts[fi], var,
                                 (unsigned)dk.c8);
+                    }
+                    /* the sums kept for the next row (bloom_d1_keep_t): row 7
+                     * with nothing kept, then row 8, whose upper rows are row
+                     * 7's lower ones, with what row 7 kept; each kernel set
+                     * against the same rows with nothing kept */
+                    for (int set = 0; set < 2; set++) {
+                        const bloom_kernels_t *kk = set ? kc : ks;
+                        bloom_d1_keep_t kp;
+                        kp.sum = (uint32_t *)xmalloc((size_t)(dw + 1) * 12u);
+                        kp.tag = (int32_t *)xmalloc((size_t)(dw + 1) * 4u);
+                        memset(kp.tag, 0xFF, (size_t)(dw + 1) * 4u);
+                        const uint8_t *sn[4] = {sp[2], sp[3], sp[0], sp[1]};
+                        for (int y = 7; y <= 8; y++) {
+                            const uint8_t *const *sy = y == 7 ? sp : sn;
+                            kp.y = y;
+                            const bool rk = kk->d1(sy, fmts[fi], lin, a.p, dw, sw, &kn, &dk, &kp);
+                            const bool rn = kc->d1(sy, fmts[fi], lin, c.p, dw, sw, &kn, &dk, NULL);
+                            cases++;
+                            if (rk != rn || memcmp(a.p, c.p, (size_t)dw * 12u) != 0 || !row_guard_ok(&a)) {
+                                bad++;
+                                fprintf(stderr,
+                                        "d1 (%s) with kept sums, row %d: sw %d fmt %d var %d differs\n",
+                                        kk->name, y, sw, (int)fmts[fi], var);
+                            }
+                        }
+                        free(kp.sum);
+                        free(kp.tag);
                     }
                     free(a.base);
                     free(c.base);

@@ -9,6 +9,13 @@
 
 #include "bloom_engine.h"
 #include "bloom_internal.h"
+#include "bloom_stages.h"
+
+#if BLOOM_USE_S16
+#define D1_16 bg_fn_d1_16
+#else
+#define D1_16 bg_fn_d1 /* (never compared) */
+#endif
 
 #if BLOOM_USE_SKIP
 /* The largest code of each width whose decoded value is at most cut: rows
@@ -290,6 +297,25 @@ uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
     if (bg_tiled(&g->row) && !g->out_direct)
         g->out_row = (uint8_t *)take(
             base, &off, (uint64_t)g->gr.node[g->gr.out_node].w * (uint64_t)bloom_bpp(g->cfg.out_fmt));
+#if !BLOOM_SMALL
+    /* the default's level-1 node keeps its lower rows' sums for the next
+     * row (bloom_d1_keep_t): one entry per column pair of its row, 8 bytes
+     * a source column; not for RGB565, the microcontrollers' format, whose
+     * QVGA frame stays within 48 KB (tests/test_core.c) */
+    g->d1_keep_n = 0;
+    g->row.d1_keep = NULL;
+    for (int i = 0; bloom_format_bpp(g->cfg.in_fmt) >= 3 && i < g->gr.nnodes; i++) {
+        const bg_node_t *n = &g->gr.node[i];
+        if (n->fn != bg_fn_d1 && !(BLOOM_USE_S16 && n->fn == D1_16))
+            continue;
+        const uint64_t e = (uint64_t)n->w + 1u;
+        g->d1_keep.sum = (uint32_t *)take(base, &off, e * 3u * sizeof(uint32_t));
+        g->d1_keep.tag = (int32_t *)take(base, &off, e * sizeof(int32_t));
+        g->d1_keep_n = (int)e;
+        g->row.d1_keep = base ? &g->d1_keep : NULL;
+        break;
+    }
+#endif
     g->row.scratch = (uint32_t *)take(
         base, &off, (uint64_t)g->row.par.scratch_rows * g->row.par.scratch_len * sizeof(uint32_t));
 #if BLOOM_SCHED_TABLE
@@ -441,6 +467,10 @@ bloom_status_t bloom_begin(bloom_t *b)
      * the zero bit (were it read, it would not pass for a dark row) */
     for (int i = 0; i < BG_RING_COPIES * b->src_cap; i++)
         b->src_tag[i] = -1 - BLOOM_TAG_ZERO;
+#if !BLOOM_SMALL
+    if (b->row.d1_keep) /* nothing kept from the frame before */
+        memset(b->d1_keep.tag, 0xFF, (size_t)b->d1_keep_n * sizeof *b->d1_keep.tag);
+#endif
 #if BLOOM_SCHED_TABLE
     memset(b->src_zb, 0, (size_t)(BG_RING_COPIES * b->src_cap + 31) / 32 * sizeof *b->src_zb);
 #endif

@@ -54,6 +54,10 @@ struct bloom {
     int tile_x0, tile_x1, tile_y0, tile_y1;
     uint8_t *out_row;
     int out_rows; /* output rows given to the caller this frame */
+#if !BLOOM_SMALL
+    bloom_d1_keep_t d1_keep; /* row.d1_keep's (its arrays in the workspace) */
+    int d1_keep_n;           /* entries of d1_keep.tag (0: none kept) */
+#endif
     /* source and aux rings: one slot per pushed row, the same for both;
      * pointers and tags twice over as a node's (rowp, tag), the pointers
      * the caller's rows or the copies' (BLOOM_FLAG_COPY_SOURCE) */

@@ -208,7 +208,8 @@ struct bg_ctx {
     bool tiled;                /* a tile's window (bloom_plan) */
     int win_x, win_y;          /* the window's first column and row in the frame */
 #if !BLOOM_SMALL
-    int out_x0; /* bg_out_x0 */
+    int out_x0;               /* bg_out_x0 */
+    bloom_d1_keep_t *d1_keep; /* the level-1 box's sums kept for the next row (bg_fn_d1), or NULL */
 #endif
 };
 

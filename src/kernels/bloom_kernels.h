@@ -81,16 +81,36 @@ uint32_t bloom_row_vtent_c(const uint32_t *a, const uint32_t *b, const uint32_t 
 uint32_t bloom_row_htent_eo_c(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
 
+/* What the level-1 box keeps of a row for the next: D_1 row y reads
+ * source rows 2y - 1 .. 2y + 2 (clamped), so its two lower rows are row
+ * y + 1's two upper ones. For column pair j (source columns 2j - 1 and 2j,
+ * clamped: D_1 pixel x reads pairs x and x + 1), sum[3j + ch] holds
+ * channel ch decoded and summed over the two lower rows of D_1 row
+ * tag[j] - 1, and row y takes it for its upper rows instead of decoding
+ * them again where tag[j] = y (the caller sets y before each row; -1: none
+ * kept, as bloom_begin sets them). The sums are exact (the box's are in 32
+ * bits): the same bits, half the decoding where a row follows the one
+ * before. Not in BLOOM_SMALL builds. */
+typedef struct {
+    uint32_t *sum; /* 3 (w + 1) for D_1 rows of w pixels */
+    int32_t *tag;  /* w + 1 */
+    int32_t y;     /* the row being made */
+} bloom_d1_keep_t;
+
 /* Level-1 row: bloom_row_box_src_c then bloom_row_knee_c (returns its
- * result). The SIMD twins write the zeros of 4-pixel blocks whose 4 x 10
- * source codes are all at most the dark codes dk (the knee zeroes them)
- * without computing the box: same bits. */
+ * result); with kp (NULL: nothing kept) the box keeps its lower rows' sums
+ * for the next row (bloom_d1_keep_t). The SIMD twins write the zeros of
+ * 4-pixel blocks whose 4 x 10 source codes are all at most the dark codes
+ * dk (the knee zeroes them) without computing the box: same bits. */
 bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                    const bloom_knee_t *kn, const bloom_dark_t *dk);
+                    const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp);
 /* bloom_row_box_src_c for destination pixels xa .. xb-1 only (dst is the
  * row); not in BLOOM_SMALL builds. */
 void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
                                int xa, int xb, int sw);
+/* The same with the sums of kp (NULL: the same as the range). */
+void bloom_row_box_src_kept_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
+                              int xa, int xb, int sw, bloom_d1_keep_t *kp);
 
 /* A bloom sample b at most max(A c, H0) cannot change the 8-bit sRGB code
  * c it is added to: the bound is at most t[c + 1] - dec(c) - 1 for every c
@@ -112,7 +132,7 @@ typedef void (*bloom_tent_fn)(const uint32_t *const u[3], int odd, const uint32_
                               int n, int sw);
 typedef void (*bloom_composite_fn)(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 typedef bool (*bloom_d1_fn)(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                            int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+                            int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp);
 typedef uint32_t (*bloom_vtent_fn)(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst,
                                    int n);
 typedef uint32_t (*bloom_htent_eo_fn)(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
@@ -298,7 +318,7 @@ void bloom_row_tent_sse2_any(const uint32_t *const u[3], int odd, const uint32_t
                              int n, int sw);
 void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp);
 uint32_t bloom_row_vtent_sse2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_sse2(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_sse2(uint32_t *x, int n, uint32_t intensity);
@@ -310,7 +330,7 @@ bool bloom_row_dark_copy_sse2(bloom_format_t fmt, const uint8_t *p, int n, const
 #define BLOOM_SIMD_AVX2 1
 bool bloom_cpu_avx2(void);
 bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp);
 void bloom_row_tent_avx2(const uint32_t *const u[3], int odd, const uint32_t *add, uint32_t *dst, int x0,
                          int n, int sw);
 uint32_t bloom_row_vtent_avx2(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
@@ -329,7 +349,7 @@ void bloom_row_tent_neon_any(const uint32_t *const u[3], int odd, const uint32_t
                              int n, int sw);
 void bloom_row_composite_neon_any(uint32_t *bl, const uint32_t *sv, int n, uint32_t intensity);
 bool bloom_row_d1_neon(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk);
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp);
 uint32_t bloom_row_vtent_neon(const uint32_t *a, const uint32_t *b, const uint32_t *c, uint32_t *dst, int n);
 uint32_t bloom_row_htent_eo_neon(const uint32_t *v, uint32_t *e, uint32_t *o, int n);
 void bloom_row_scale_neon(uint32_t *x, int n, uint32_t intensity);

@@ -37,258 +37,41 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     bloom_row_box_range_c(s, dst, 0, dw, sw);
 }
 
-#if BLOOM_SMALL
-/* One decoded pixel; fmt and lin are constants after inlining. */
-static BLOOM_ALWAYS_INLINE void dec_px(bloom_format_t fmt, bool lin, const uint8_t *p, uint32_t *o)
+/* One pixel's knee (at or below cut: zeros); the OR of its samples. */
+static BLOOM_ALWAYS_INLINE uint32_t knee_px(uint32_t *p, int64_t t, int64_t k, uint32_t cut)
 {
-    switch (fmt) {
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565:
-        BLOOM_DEC_RGB565(p, o, lin);
-        return;
-#endif
-#if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16:
-        BLOOM_DEC_RGBQ16(p, o);
-        return;
-#endif
-#if BLOOM_USE_RGBF32
-    case BLOOM_FMT_RGBF32:
-        BLOOM_DEC_RGBF32(p, o);
-        return;
-#endif
-#if BLOOM_USE_XRGB8888
-    case BLOOM_FMT_XRGB8888:
-        BLOOM_DEC_XRGB8888(p, o, lin);
-        return;
-#endif
-#if BLOOM_USE_RGB888
-    case BLOOM_FMT_RGB888:
-        BLOOM_DEC_RGB888(p, o, lin);
-        return;
-#endif
-    default: /* refused by bloom_query */
-        o[0] = o[1] = o[2] = 0;
-        return;
+    uint32_t bmax = p[0] > p[1] ? p[0] : p[1];
+    bmax = bmax > p[2] ? bmax : p[2];
+    if (bmax <= cut || bmax == 0) {
+        p[0] = p[1] = p[2] = 0;
+        return 0;
     }
-}
-
-static BLOOM_ALWAYS_INLINE void colsum4_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
-                                            size_t off, uint32_t out[3])
-{
-    uint32_t a[3], b[3], c[3], d[3];
-    dec_px(fmt, lin, s[0] + off, a);
-    dec_px(fmt, lin, s[1] + off, b);
-    dec_px(fmt, lin, s[2] + off, c);
-    dec_px(fmt, lin, s[3] + off, d);
-    for (int ch = 0; ch < 3; ch++)
-        out[ch] = a[ch] + b[ch] + c[ch] + d[ch];
-}
-
-static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin, size_t bpp,
-                                        uint32_t *dst, int dw, int sw)
-{
-    uint32_t a[3], b[3], c[3], d[3];
-    colsum4_src(s, fmt, lin, 0, a); /* column 2x-1 = -1 clamps to 0 */
-    b[0] = a[0];
-    b[1] = a[1];
-    b[2] = a[2];
-    for (int x = 0; x < dw; x++, dst += 3) {
-        colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp, c);
-        colsum4_src(s, fmt, lin, (size_t)imin(2 * x + 2, sw - 1) * bpp, d);
-        for (int ch = 0; ch < 3; ch++) {
-            dst[ch] = BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
-            a[ch] = c[ch];
-            b[ch] = d[ch];
-        }
+    int64_t xs = (int64_t)bmax - t + k; /* > 0 here */
+    if (xs > 2 * k)
+        xs = 2 * k;
+    /* soft = x^2 / (4K + 0.00004), rounded: 2x^2 <= 2^59, 8K + E < 2^32 */
+    uint32_t soft = 0;
+    if (k > 0) {
+        const uint32_t den = (uint32_t)(8 * k) + BLOOM_KNEE_E8;
+        soft = bloom_div_u64_u32(2u * (uint64_t)(xs * xs) + den / 2u, den);
     }
-}
-#else
-/* Channel ch (0 R, 1 G, 2 B) of the pixel at p, decoded; fmt, lin and ch
- * are constants after inlining, so the sums below stay in registers. */
-static BLOOM_ALWAYS_INLINE uint32_t dec_ch(bloom_format_t fmt, bool lin, const uint8_t *p, int ch)
-{
-    switch (fmt) {
-    case BLOOM_FMT_RGB565: {
-        const uint32_t w = (uint32_t)p[0] | ((uint32_t)p[1] << 8);
-        if (ch == 1)
-            return lin ? bloom_dec_linear((w >> 5) & 63u, 63) : bloom_srgb_dec6[(w >> 5) & 63u];
-        const uint32_t c = ch == 0 ? w >> 11 : w & 31u;
-        return lin ? bloom_dec_linear(c, 31) : bloom_srgb_dec5[c];
+    int64_t over = (int64_t)bmax - t;
+    uint64_t num = over > (int64_t)soft ? (uint64_t)over : soft;
+    if (num == 0) {
+        p[0] = p[1] = p[2] = 0;
+        return 0;
     }
-    case BLOOM_FMT_RGBQ16: {
-        uint32_t w;
-        memcpy(&w, p + 4 * ch, 4);
-        return (w > BLOOM_MAX_LINEAR ? BLOOM_MAX_LINEAR : w) << BLOOM_Q16_SHIFT;
+    /* f = num / max(bmax, 0.00001) in Q24, rounded (tiny bmax: exact
+     * product); num <= bmax, so f <= 2^24, num << 24 <= 2^53, c f <= 2^52 */
+    const uint32_t f = bmax < BLOOM_KNEE_TINY_B
+                           ? (uint32_t)num * BLOOM_KNEE_TINY_F
+                           : bloom_div_u64_u32((num << BLOOM_KNEE_FBITS) + (bmax >> 1), bmax);
+    uint32_t any = 0;
+    for (int ch = 0; ch < 3; ch++) {
+        p[ch] = (uint32_t)(((uint64_t)p[ch] * f + (1u << (BLOOM_KNEE_FBITS - 1))) >> BLOOM_KNEE_FBITS);
+        any |= p[ch];
     }
-    case BLOOM_FMT_RGBF32: {
-        uint32_t w;
-        memcpy(&w, p + 4 * ch, 4);
-        return bloom_f32_to_lin(w);
-    }
-    case BLOOM_FMT_XRGB8888:
-        return lin ? bloom_dec_linear(p[2 - ch], 255) : bloom_srgb_dec8[p[2 - ch]];
-    default:
-        return lin ? bloom_dec_linear(p[ch], 255) : bloom_srgb_dec8[p[ch]];
-    }
-}
-
-/* Channel ch summed over the four rows and two columns at byte offsets oa, ob. */
-static BLOOM_ALWAYS_INLINE uint32_t pair_ch(const uint8_t *s0, const uint8_t *s1, const uint8_t *s2,
-                                            const uint8_t *s3, bloom_format_t fmt, bool lin, size_t oa,
-                                            size_t ob, int ch)
-{
-    return ((dec_ch(fmt, lin, s0 + oa, ch) + dec_ch(fmt, lin, s1 + oa, ch)) +
-            (dec_ch(fmt, lin, s2 + oa, ch) + dec_ch(fmt, lin, s3 + oa, ch))) +
-           ((dec_ch(fmt, lin, s0 + ob, ch) + dec_ch(fmt, lin, s1 + ob, ch)) +
-            (dec_ch(fmt, lin, s2 + ob, ch) + dec_ch(fmt, lin, s3 + ob, ch)));
-}
-
-static BLOOM_ALWAYS_INLINE void pair_src(const uint8_t *s0, const uint8_t *s1, const uint8_t *s2,
-                                         const uint8_t *s3, bloom_format_t fmt, bool lin, size_t oa,
-                                         size_t ob, uint32_t out[3])
-{
-    out[0] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 0);
-    out[1] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 1);
-    out[2] = pair_ch(s0, s1, s2, s3, fmt, lin, oa, ob, 2);
-}
-
-/* The same sums (the box is exact in 32 bits), grouped by column pairs:
- * P(j) = columns 2j-1 and 2j, clamped; D(x) = (P(x) + P(x+1)) / 16, half to even.
- * The pairs with no clamp run without bound tests. */
-static BLOOM_ALWAYS_INLINE void box_src_range(const uint8_t *const s[4], bloom_format_t fmt, bool lin,
-                                              size_t bpp, uint32_t *dst, int xa, int dw, int sw)
-{
-    const uint8_t *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3];
-    uint32_t p[3], q[3];
-    /* columns 2 xa - 1 (-1 clamps to 0) and 2 xa */
-    pair_src(s0, s1, s2, s3, fmt, lin, (size_t)imin(imax(2 * xa - 1, 0), sw - 1) * bpp,
-             (size_t)imin(2 * xa, sw - 1) * bpp, p);
-    /* pair j = x + 1 needs no clamp while 2 (x + 1) <= sw - 1 */
-    const int xe = imin(dw, (sw - 1) / 2);
-    int x = xa;
-    dst += (size_t)xa * 3u;
-    {
-        uint32_t p0 = p[0], p1 = p[1], p2 = p[2];
-        const size_t c0 = (size_t)(2 * xa + 1) * bpp; /* column 2x + 1 */
-        const uint8_t *a0 = s0 + c0, *a1 = s1 + c0, *a2 = s2 + c0, *a3 = s3 + c0;
-        for (; x < xe; x++, dst += 3, a0 += 2 * bpp, a1 += 2 * bpp, a2 += 2 * bpp, a3 += 2 * bpp) {
-            const uint32_t q0 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 0);
-            const uint32_t q1 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 1);
-            const uint32_t q2 = pair_ch(a0, a1, a2, a3, fmt, lin, 0, bpp, 2);
-            dst[0] = BLOOM_BOX_RND(p0 + q0);
-            dst[1] = BLOOM_BOX_RND(p1 + q1);
-            dst[2] = BLOOM_BOX_RND(p2 + q2);
-            p0 = q0;
-            p1 = q1;
-            p2 = q2;
-        }
-        p[0] = p0;
-        p[1] = p1;
-        p[2] = p2;
-    }
-    for (; x < dw; x++, dst += 3) {
-        pair_src(s0, s1, s2, s3, fmt, lin, (size_t)imin(2 * x + 1, sw - 1) * bpp,
-                 (size_t)imin(2 * x + 2, sw - 1) * bpp, q);
-        for (int ch = 0; ch < 3; ch++) {
-            dst[ch] = BLOOM_BOX_RND(p[ch] + q[ch]);
-            p[ch] = q[ch];
-        }
-    }
-}
-
-static BLOOM_ALWAYS_INLINE void box_src(const uint8_t *const s[4], bloom_format_t fmt, bool lin, size_t bpp,
-                                        uint32_t *dst, int dw, int sw)
-{
-    box_src_range(s, fmt, lin, bpp, dst, 0, dw, sw);
-}
-
-void bloom_row_box_src_range_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst,
-                               int xa, int xb, int sw)
-{
-    if (xa >= xb)
-        return;
-    switch (fmt) {
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565:
-        if (linear)
-            box_src_range(s, BLOOM_FMT_RGB565, true, 2, dst, xa, xb, sw);
-        else
-            box_src_range(s, BLOOM_FMT_RGB565, false, 2, dst, xa, xb, sw);
-        return;
-#endif
-#if BLOOM_USE_RGBQ16 || BLOOM_USE_RGBF32 /* (the full build: size does not matter here) */
-    case BLOOM_FMT_RGBQ16:
-        box_src_range(s, BLOOM_FMT_RGBQ16, false, 12, dst, xa, xb, sw);
-        return;
-    case BLOOM_FMT_RGBF32:
-        box_src_range(s, BLOOM_FMT_RGBF32, false, 12, dst, xa, xb, sw);
-        return;
-#endif
-#if BLOOM_USE_RGB888
-    case BLOOM_FMT_RGB888:
-        if (linear)
-            box_src_range(s, BLOOM_FMT_RGB888, true, 3, dst, xa, xb, sw);
-        else
-            box_src_range(s, BLOOM_FMT_RGB888, false, 3, dst, xa, xb, sw);
-        return;
-#endif
-#if BLOOM_USE_XRGB8888
-    case BLOOM_FMT_XRGB8888:
-        if (linear)
-            box_src_range(s, BLOOM_FMT_XRGB8888, true, 4, dst, xa, xb, sw);
-        else
-            box_src_range(s, BLOOM_FMT_XRGB8888, false, 4, dst, xa, xb, sw);
-        return;
-#endif
-    default: /* refused by bloom_query */
-        (void)s, (void)linear, (void)dst, (void)sw;
-        return;
-    }
-}
-#endif
-
-void bloom_row_box_src_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                         int sw)
-{
-    switch (fmt) {
-#if BLOOM_USE_RGB565
-    case BLOOM_FMT_RGB565:
-        if (linear)
-            box_src(s, BLOOM_FMT_RGB565, true, 2, dst, dw, sw);
-        else
-            box_src(s, BLOOM_FMT_RGB565, false, 2, dst, dw, sw);
-        return;
-#endif
-#if BLOOM_USE_RGBQ16
-    case BLOOM_FMT_RGBQ16:
-        box_src(s, BLOOM_FMT_RGBQ16, false, 12, dst, dw, sw);
-        return;
-#endif
-#if BLOOM_USE_RGBF32
-    case BLOOM_FMT_RGBF32:
-        box_src(s, BLOOM_FMT_RGBF32, false, 12, dst, dw, sw);
-        return;
-#endif
-#if BLOOM_USE_XRGB8888
-    case BLOOM_FMT_XRGB8888:
-        if (linear)
-            box_src(s, BLOOM_FMT_XRGB8888, true, 4, dst, dw, sw);
-        else
-            box_src(s, BLOOM_FMT_XRGB8888, false, 4, dst, dw, sw);
-        return;
-#endif
-#if BLOOM_USE_RGB888
-    case BLOOM_FMT_RGB888:
-        if (linear)
-            box_src(s, BLOOM_FMT_RGB888, true, 3, dst, dw, sw);
-        else
-            box_src(s, BLOOM_FMT_RGB888, false, 3, dst, dw, sw);
-        return;
-#endif
-    default: /* refused by bloom_query */
-        return;
-    }
+    return any;
 }
 
 bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
@@ -297,62 +80,38 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
     const int64_t t = kn->t, k = kn->k;
     /* Below t - k nothing passes: the common case costs three compares. */
     const uint32_t cut = kn->t > kn->k ? kn->t - kn->k : 0u;
-    for (int x = 0; x < w; x++) {
-        uint32_t *p = row + 3 * x;
+    int x = 0;
 #if !BLOOM_SMALL
-        if ((x & 3) == 0 && x + 4 <= w) {
-            /* Four pixels at once: the OR of their samples bounds every
-             * sample from above, so OR <= cut means all four are zeroed. */
-            uint32_t o = 0;
+    /* Four pixels at once: the OR of their samples bounds every sample
+     * from above, so OR <= cut means all four are zeroed. */
+    for (; x + 4 <= w; x += 4) {
+        uint32_t *p = row + 3 * x, o = 0;
+        for (int i = 0; i < 12; i++)
+            o |= p[i];
+        if (o <= cut) {
             for (int i = 0; i < 12; i++)
-                o |= p[i];
-            if (o <= cut) {
-                for (int i = 0; i < 12; i++)
-                    p[i] = 0;
-                x += 3;
-                continue;
-            }
-        }
-#endif
-        uint32_t bmax = p[0] > p[1] ? p[0] : p[1];
-        bmax = bmax > p[2] ? bmax : p[2];
-        if (bmax <= cut || bmax == 0) {
-            p[0] = p[1] = p[2] = 0;
+                p[i] = 0;
             continue;
         }
-        int64_t xs = (int64_t)bmax - t + k; /* > 0 here */
-        if (xs > 2 * k)
-            xs = 2 * k;
-        /* soft = x^2 / (4K + 0.00004), rounded: 2x^2 <= 2^59, 8K + E < 2^32 */
-        uint32_t soft = 0;
-        if (k > 0) {
-            const uint32_t den = (uint32_t)(8 * k) + BLOOM_KNEE_E8;
-            soft = bloom_div_u64_u32(2u * (uint64_t)(xs * xs) + den / 2u, den);
-        }
-        int64_t over = (int64_t)bmax - t;
-        uint64_t num = over > (int64_t)soft ? (uint64_t)over : soft;
-        if (num == 0) {
-            p[0] = p[1] = p[2] = 0;
-            continue;
-        }
-        /* f = num / max(bmax, 0.00001) in Q24, rounded (tiny bmax: exact
-         * product); num <= bmax, so f <= 2^24, num << 24 <= 2^53, c f <= 2^52 */
-        const uint32_t f = bmax < BLOOM_KNEE_TINY_B
-                               ? (uint32_t)num * BLOOM_KNEE_TINY_F
-                               : bloom_div_u64_u32((num << BLOOM_KNEE_FBITS) + (bmax >> 1), bmax);
-        for (int ch = 0; ch < 3; ch++) {
-            p[ch] = (uint32_t)(((uint64_t)p[ch] * f + (1u << (BLOOM_KNEE_FBITS - 1))) >> BLOOM_KNEE_FBITS);
-            any |= p[ch];
-        }
+        for (int i = 0; i < 4; i++)
+            any |= knee_px(p + 3 * i, t, k, cut);
     }
+#endif
+    for (; x < w; x++)
+        any |= knee_px(row + 3 * x, t, k, cut);
     return any != 0;
 }
 
 bool bloom_row_d1_c(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                    const bloom_knee_t *kn, const bloom_dark_t *dk)
+                    const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp)
 {
     (void)dk;
+#if BLOOM_SMALL
+    (void)kp;
     bloom_row_box_src_c(s, fmt, linear, dst, dw, sw);
+#else
+    bloom_row_box_src_kept_c(s, fmt, linear, dst, 0, dw, sw, kp);
+#endif
     return bloom_row_knee_c(dst, dw, kn);
 }
 

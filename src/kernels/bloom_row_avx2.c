@@ -184,11 +184,11 @@ static inline bool bright18(const uint8_t *const s[4], size_t off, bool x8, __m2
  * no colour code above the dark code is written as zeros, the others run
  * the C box and knee in runs. */
 bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp)
 {
     const bool x8 = BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888;
     if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8)
-        return bloom_row_d1_sse2(s, fmt, linear, dst, dw, sw, kn, dk);
+        return bloom_row_d1_sse2(s, fmt, linear, dst, dw, sw, kn, dk, kp);
     const size_t bpp = x8 ? 4u : 3u, rd = x8 ? 96u : 64u, row = (size_t)sw * bpp;
     const __m256i c = _mm256_set1_epi8((char)dk->c8), zero = _mm256_setzero_si256();
     bool any = false;
@@ -198,7 +198,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         if (bright18(s, (size_t)(2 * x - 1) * bpp, x8, c))
             continue; /* computed with its run */
         if (run < x) {
-            bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);
+            bloom_row_box_src_kept_c(s, fmt, linear, dst, run, x, sw, kp);
             any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
         }
         uint32_t *d = dst + (size_t)x * 3u;
@@ -208,7 +208,7 @@ bool bloom_row_d1_avx2(const uint8_t *const s[4], bloom_format_t fmt, bool linea
         run = x + 8;
     }
     if (run < dw) {
-        bloom_row_box_src_range_c(s, fmt, linear, dst, run, dw, sw);
+        bloom_row_box_src_kept_c(s, fmt, linear, dst, run, dw, sw, kp);
         any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
     }
     return any;

@@ -269,12 +269,12 @@ static uint32_t htent_eo_flat(const uint32_t *v, uint32_t *e, uint32_t *o, int n
  * X bytes left out; reads 48) and BRIGHT20_565(s, off, c5, c6) (RGB565:
  * whether a field of the ten pixels exceeds its dark code; reads 32). */
 static bool d1_any(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw, int sw,
-                   const bloom_knee_t *kn, const bloom_dark_t *dk)
+                   const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp)
 {
     const bool x8 = BLOOM_USE_XRGB8888 && fmt == BLOOM_FMT_XRGB8888;
     const bool h5 = BLOOM_USE_RGB565 && fmt == BLOOM_FMT_RGB565;
     if (!(BLOOM_USE_RGB888 && fmt == BLOOM_FMT_RGB888) && !x8 && !h5)
-        return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);
+        return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk, kp);
     const size_t bpp = x8 ? 4u : h5 ? 2u : 3u, rd = x8 ? 48u : 32u, row = (size_t)sw * bpp;
     bool any = false;
     int run = 0; /* first pixel not written yet */
@@ -286,14 +286,14 @@ static bool d1_any(const uint8_t *const s[4], bloom_format_t fmt, bool linear, u
                  : BRIGHT30(s, off, dk->c8))
             continue; /* computed with its run */
         if (run < x) {
-            bloom_row_box_src_range_c(s, fmt, linear, dst, run, x, sw);
+            bloom_row_box_src_kept_c(s, fmt, linear, dst, run, x, sw, kp);
             any = bloom_row_knee_c(dst + (size_t)run * 3u, x - run, kn) || any;
         }
         memset(dst + (size_t)x * 3u, 0, 12u * sizeof *dst);
         run = x + 4;
     }
     if (run < dw) {
-        bloom_row_box_src_range_c(s, fmt, linear, dst, run, dw, sw);
+        bloom_row_box_src_kept_c(s, fmt, linear, dst, run, dw, sw, kp);
         any = bloom_row_knee_c(dst + (size_t)run * 3u, dw - run, kn) || any;
     }
     return any;

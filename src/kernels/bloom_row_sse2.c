@@ -123,12 +123,12 @@ void bloom_row_composite_sse2_any(uint32_t *bl, const uint32_t *sv, int n, uint3
 
 #if !BLOOM_SMALL
 bool bloom_row_d1_sse2(const uint8_t *const s[4], bloom_format_t fmt, bool linear, uint32_t *dst, int dw,
-                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk)
+                       int sw, const bloom_knee_t *kn, const bloom_dark_t *dk, bloom_d1_keep_t *kp)
 {
 #if BLOOM_USE_RGB888 || BLOOM_USE_XRGB8888 || BLOOM_USE_RGB565
-    return d1_any(s, fmt, linear, dst, dw, sw, kn, dk);
+    return d1_any(s, fmt, linear, dst, dw, sw, kn, dk, kp);
 #else
-    return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk);
+    return bloom_row_d1_c(s, fmt, linear, dst, dw, sw, kn, dk, kp);
 #endif
 }
 

@@ -12,16 +12,20 @@
 bool bg_fn_d1(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
               void *dst)
 {
-    (void)r;
     const uint8_t *const s[4] = {(const uint8_t *)in[0][0], (const uint8_t *)in[0][1],
                                  (const uint8_t *)in[0][2], (const uint8_t *)in[0][3]};
 #if BLOOM_SMALL
+    (void)r;
     bloom_row_box_src_c(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w, ctx->w0);
     return bloom_row_knee_c((uint32_t *)dst, n->w, &ctx->par.knee);
 #else
-    /* the same (the SIMD kernels skip the box where the knee zeroes anyway) */
+    /* the same (the SIMD kernels skip the box where the knee zeroes anyway),
+     * the upper rows' sums taken from the row before where it kept them */
+    bloom_d1_keep_t *kp = ctx->d1_keep;
+    if (kp)
+        kp->y = r;
     return ctx->kern.d1(s, ctx->par.out.in_fmt, ctx->par.out.linear, (uint32_t *)dst, n->w,
-                        bg_in_w(ctx, n, 0), &ctx->par.knee, &ctx->dark);
+                        bg_in_w(ctx, n, 0), &ctx->par.knee, &ctx->dark, kp);
 #endif
 }
 
