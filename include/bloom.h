@@ -295,8 +295,8 @@ const char *bloom_status_str(bloom_status_t st);
  * per source row (under 6*h), folded to the start-up, one period of 2^L
  * source rows and the end where L <= 6 (under 6*8*2^L: at most 28.5*2^L
  * bytes over widths 1 .. 4000, heights 1 .. 16384 and L = 1 .. 6); with
- * src_bpp >= 3 the level-1 box keeps a row's sums for the next, 16 bytes
- * per column pair (8*w + 16). Computed in unsigned long long: a configuration
+ * src_bpp 3 or 4 (RGB888, XRGB8888) the level-1 box keeps a row's sums
+ * for the next, 16 bytes per column pair (8*w + 16). Computed in unsigned long long: a configuration
  * too big for the target's address space fails to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
@@ -313,7 +313,8 @@ const char *bloom_status_str(bloom_status_t st);
           ? 6ull * ((levels) <= 6 && (8ull << (levels)) < (unsigned long long)(h) ? (8ull << (levels))       \
                                                                                   : (unsigned long long)(h)) \
           : 0ull) +                                                                                          \
-     (BLOOM_SCHED_TABLE && (src_bpp) >= 3 ? 8ull * (unsigned long long)(w) + 16ull : 0ull) +                 \
+     (BLOOM_SCHED_TABLE && ((src_bpp) == 3 || (src_bpp) == 4) ? 8ull * (unsigned long long)(w) + 16ull       \
+                                                              : 0ull) +                                      \
      ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]
 

@@ -77,7 +77,7 @@ split_table=$(join -t "$(printf '\t')" -a1 -a2 -e 0 -o 0,1.2,2.2 "$dir/fn.s0.tsv
         if (f ~ /^(run_row|gather_edge|walk_to_output|make_row|next_row|ensure|ensure_inputs|oldest_of|input_top|push_row|out_made|feed_push)$/ || f ~ /^bloom_sched_/) return "scheduler (bloom_sched.c)"
         if (f ~ /(box_src|knee|_d1|dark|bg_fn_d1)/) return "level 1 of the down chain (knee, dark test, box from the source)"
         if (f ~ /(row_box|box_blocks|bg_fn_box)/) return "deeper levels of the down chain (boxes)"
-        if (f ~ /(mem(cpy|move|set))/) return "memcpy, memset (the tile row copied out, dark rows)"
+        if (f ~ /(mem(cpy|move|set))/) return "memcpy, memset (dark rows, zeroed rows)"
         if (f ~ /(out_|encode|row_copy|bg_fn_out)/) return "output row (tent, composite, encode)"
         if (f ~ /(tent|il_add|htent|vtent)/) return "up chain (tents, sums)"
         if (f ~ /^(run_rows|bloom_process|bloom_push|bloom_pull)/) return "frame call"
@@ -177,8 +177,10 @@ out to multiples of 2^L (L the levels built) so that the window's levels
 halve exactly as the frame's do, and clips it to the frame, where the edge
 rule applies as before. The graph is built again over that window, and
 then each node's columns are cut to what its readers use (\`cut_node_columns\`,
-walked back from the tile): the output node makes the tile's columns (and
-up to 2 more on the left, which its clamped reads would spoil), the up
+walked back from the tile): the output node reads for the tile's columns
+and up to 2 more on the left (which its clamped reads would spoil) and,
+where its row function starts at a given column (the default's:
+\`bg_out_x0\`), writes only the tile's, in place in the caller's row; the up
 chain the tile and a few pixels, and only the down chain, which the deep
 levels read, spans the halo. The scheduler hands each row function its
 inputs from the first column it reads (\`bg_in_w\` gives the widths it
@@ -252,9 +254,13 @@ of blocks with one more block overlapping the last (the box, the tent's
 horizontal pass and its interleave: their outputs are not their inputs),
 so a narrow row's tail costs a block, not a C loop; the encoder's tail
 (\`bloom_encode_eo\`) and the box's clamped columns at a row's ends are
-still C. The output node makes 2 columns left of the tile (its clamped
-reads spoil them) into a row of the workspace, and the tile's part is
-copied out. A part can cost less in strips than untiled (the up chain
+still C. The default's output row is written in place (the tile's
+columns of the caller's row); a preset whose output row function starts
+at column 0 makes its row, 2 columns left of the tile included, in a row
+of the workspace, and the tile's part is copied out. The level-1 box
+keeps its lower rows' decoded sums for the next row
+(\`bloom_d1_keep_t\`): a row that follows the one before decodes its
+two lower source rows only, in the halo as everywhere. A part can cost less in strips than untiled (the up chain
 here): a row is skipped whole when every row it reads is
 zero, and a strip's narrower rows are zero more often.
 

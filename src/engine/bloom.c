@@ -168,6 +168,7 @@ bloom_status_t bloom_plan(bloom_t *g, const bloom_config_t *cfg, bg_node_t *node
             const int lead = g->tile_x0 - g->gr.node[g->gr.out_node].xa;
             g->out_direct = g->gr.out_from_x0 && !(lead & 1);
             g->row.out_x0 = g->out_direct ? lead : 0;
+            g->row.out_src_x = g->out_direct ? g->tile_x0 : 0; /* (input_step) */
         }
     }
 #endif
@@ -193,6 +194,8 @@ static uint32_t input_step(const bloom_t *g, const bg_node_t *n, int i)
 #if !BLOOM_SMALL
     if (g->row.tiled) {
         const int from = n->in[i].node;
+        if (g->out_direct && n == &g->gr.node[g->gr.out_node] && from == BG_SRC)
+            return 0; /* the row function adds the tile's column (bg_out_src_x) */
         const bg_node_t *src = from >= 0 ? &g->gr.node[from] : NULL;
         const int off = bg_base(n->in[i].map, n->xa) - (src ? src->xa : 0);
         const size_t bytes = src ? (size_t)src->ch * BG_SB(src)
@@ -300,11 +303,13 @@ uint64_t bloom_carve(bloom_t *g, uint8_t *base, size_t *per_level)
 #if !BLOOM_SMALL
     /* the default's level-1 node keeps its lower rows' sums for the next
      * row (bloom_d1_keep_t): one entry per column pair of its row, 8 bytes
-     * a source column; not for RGB565, the microcontrollers' format, whose
-     * QVGA frame stays within 48 KB (tests/test_core.c) */
+     * a source column; for RGB888 and XRGB8888 (bloom_row_box_src_kept_c),
+     * not RGB565, the microcontrollers' format, whose QVGA frame stays
+     * within 48 KB (tests/test_core.c) */
     g->d1_keep_n = 0;
     g->row.d1_keep = NULL;
-    for (int i = 0; bloom_format_bpp(g->cfg.in_fmt) >= 3 && i < g->gr.nnodes; i++) {
+    const bool keeps = g->cfg.in_fmt == BLOOM_FMT_RGB888 || g->cfg.in_fmt == BLOOM_FMT_XRGB8888;
+    for (int i = 0; keeps && i < g->gr.nnodes; i++) {
         const bg_node_t *n = &g->gr.node[i];
         if (n->fn != bg_fn_d1 && !(BLOOM_USE_S16 && n->fn == D1_16))
             continue;

@@ -209,6 +209,7 @@ struct bg_ctx {
     int win_x, win_y;          /* the window's first column and row in the frame */
 #if !BLOOM_SMALL
     int out_x0;               /* bg_out_x0 */
+    int out_src_x;            /* bg_out_src_x */
     bloom_d1_keep_t *d1_keep; /* the level-1 box's sums kept for the next row (bg_fn_d1), or NULL */
 #endif
 };
@@ -306,6 +307,20 @@ static inline int bg_out_x0(const bg_ctx_t *ctx)
 {
 #if !BLOOM_SMALL
     return ctx->out_x0;
+#else
+    (void)ctx;
+    return 0;
+#endif
+}
+/* Where the output node's source row pointer (its BG_SRC input) is read
+ * from for its first column written, in pixels: where a tile's row is
+ * written in place the pointer is the window's column 0 (the gather adds
+ * no offset to the caller's rows) and this is the tile's first column;
+ * else the pointer is at the first column and this is 0. */
+static inline int bg_out_src_x(const bg_ctx_t *ctx)
+{
+#if !BLOOM_SMALL
+    return ctx->out_src_x;
 #else
     (void)ctx;
     return 0;

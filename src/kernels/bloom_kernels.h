@@ -90,7 +90,8 @@ void bloom_row_scale_c(uint32_t *x, int n, uint32_t intensity);
  * them again where tag[j] = y (the caller sets y before each row; -1: none
  * kept, as bloom_begin sets them). The sums are exact (the box's are in 32
  * bits): the same bits, half the decoding where a row follows the one
- * before. Not in BLOOM_SMALL builds. */
+ * before. RGB888 and XRGB8888 only (the others ignore kp); not in
+ * BLOOM_SMALL builds. */
 typedef struct {
     uint32_t *sum; /* 3 (w + 1) for D_1 rows of w pixels */
     int32_t *tag;  /* w + 1 */

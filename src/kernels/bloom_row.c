@@ -10,8 +10,15 @@
 static inline void colsum4(const uint32_t *const s[4], int c, uint32_t out[3])
 {
     const size_t i = (size_t)c * 3u;
+#if BLOOM_SMALL /* (the loop: less code) */
     for (int ch = 0; ch < 3; ch++)
         out[ch] = s[0][i + ch] + s[1][i + ch] + s[2][i + ch] + s[3][i + ch];
+#else /* (the SIMD boxes' edge columns: gcc -O2 keeps a 3-step loop a loop) */
+    const uint32_t *a = s[0] + i, *b = s[1] + i, *c2 = s[2] + i, *d = s[3] + i;
+    out[0] = a[0] + b[0] + c2[0] + d[0];
+    out[1] = a[1] + b[1] + c2[1] + d[1];
+    out[2] = a[2] + b[2] + c2[2] + d[2];
+#endif
 }
 
 void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, int xb, int sw)
@@ -24,11 +31,20 @@ void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, in
     for (int x = xa; x < xb; x++) {
         colsum4(s, imin(2 * x + 1, sw - 1), c);
         colsum4(s, imin(2 * x + 2, sw - 1), d);
+#if BLOOM_SMALL
         for (int ch = 0; ch < 3; ch++) {
             dst[3 * x + ch] = BLOOM_BOX_RND(a[ch] + b[ch] + c[ch] + d[ch]);
             a[ch] = c[ch];
             b[ch] = d[ch];
         }
+#else
+        uint32_t *o = dst + 3 * (size_t)x;
+        o[0] = BLOOM_BOX_RND(a[0] + b[0] + c[0] + d[0]);
+        o[1] = BLOOM_BOX_RND(a[1] + b[1] + c[1] + d[1]);
+        o[2] = BLOOM_BOX_RND(a[2] + b[2] + c[2] + d[2]);
+        memcpy(a, c, sizeof a);
+        memcpy(b, d, sizeof b);
+#endif
     }
 }
 
@@ -37,14 +53,14 @@ void bloom_row_box_c(const uint32_t *const s[4], uint32_t *dst, int dw, int sw)
     bloom_row_box_range_c(s, dst, 0, dw, sw);
 }
 
-/* One pixel's knee (at or below cut: zeros); the OR of its samples. */
-static BLOOM_ALWAYS_INLINE uint32_t knee_px(uint32_t *p, int64_t t, int64_t k, uint32_t cut)
+/* One pixel's knee (at or below cut: zeros), its samples ORed into *any. */
+static BLOOM_ALWAYS_INLINE void knee_px(uint32_t *p, int64_t t, int64_t k, uint32_t cut, uint32_t *any)
 {
     uint32_t bmax = p[0] > p[1] ? p[0] : p[1];
     bmax = bmax > p[2] ? bmax : p[2];
     if (bmax <= cut || bmax == 0) {
         p[0] = p[1] = p[2] = 0;
-        return 0;
+        return;
     }
     int64_t xs = (int64_t)bmax - t + k; /* > 0 here */
     if (xs > 2 * k)
@@ -59,19 +75,17 @@ static BLOOM_ALWAYS_INLINE uint32_t knee_px(uint32_t *p, int64_t t, int64_t k, u
     uint64_t num = over > (int64_t)soft ? (uint64_t)over : soft;
     if (num == 0) {
         p[0] = p[1] = p[2] = 0;
-        return 0;
+        return;
     }
     /* f = num / max(bmax, 0.00001) in Q24, rounded (tiny bmax: exact
      * product); num <= bmax, so f <= 2^24, num << 24 <= 2^53, c f <= 2^52 */
     const uint32_t f = bmax < BLOOM_KNEE_TINY_B
                            ? (uint32_t)num * BLOOM_KNEE_TINY_F
                            : bloom_div_u64_u32((num << BLOOM_KNEE_FBITS) + (bmax >> 1), bmax);
-    uint32_t any = 0;
     for (int ch = 0; ch < 3; ch++) {
         p[ch] = (uint32_t)(((uint64_t)p[ch] * f + (1u << (BLOOM_KNEE_FBITS - 1))) >> BLOOM_KNEE_FBITS);
-        any |= p[ch];
+        *any |= p[ch];
     }
-    return any;
 }
 
 bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
@@ -94,11 +108,11 @@ bool bloom_row_knee_c(uint32_t *row, int w, const bloom_knee_t *kn)
             continue;
         }
         for (int i = 0; i < 4; i++)
-            any |= knee_px(p + 3 * i, t, k, cut);
+            knee_px(p + 3 * i, t, k, cut, &any);
     }
 #endif
     for (; x < w; x++)
-        any |= knee_px(row + 3 * x, t, k, cut);
+        knee_px(row + 3 * x, t, k, cut, &any);
     return any != 0;
 }
 

@@ -150,8 +150,9 @@ static void out_chunks(const bloom_kernels_t *k, const void *const u[3], int sh,
 
 /* Columns x0 .. w - 1 of one output row (src and dst from column x0 on)
  * from 32-bit U rows, or 16-bit ones widened by sh. */
-static void out_row(const bloom_kernels_t *k, const void *const u[3], int sh, int odd, const uint8_t *src,
-                    uint8_t *dst, int x0, int w, int sw, const bloom_out_t *o)
+static BLOOM_ALWAYS_INLINE void out_row(const bloom_kernels_t *k, const void *const u[3], int sh, int odd,
+                                        const uint8_t *src, uint8_t *dst, int x0, int w, int sw,
+                                        const bloom_out_t *o)
 {
 #if !BLOOM_SMALL
     if (k->vtent && sw >= 1 && sw >= (w + 1) / 2 && o->intensity <= OUT_FAST_MAX_I &&

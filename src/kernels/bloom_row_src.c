@@ -250,7 +250,9 @@ static BLOOM_ALWAYS_INLINE void box_src_any(const uint8_t *const s[4], bloom_for
                                             size_t bpp, uint32_t *dst, int xa, int xb, int sw,
                                             bloom_d1_keep_t *kp)
 {
-    if (kp)
+    /* (kept sums for the 8-bit formats only, as the engine carves them:
+     * the others' copies would be code no frame runs) */
+    if ((fmt == BLOOM_FMT_RGB888 || fmt == BLOOM_FMT_XRGB8888) && kp)
         box_src_kept(s, fmt, lin, bpp, dst, xa, xb, sw, kp);
     else
         box_src_range(s, fmt, lin, bpp, dst, xa, xb, sw);

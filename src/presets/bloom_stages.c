@@ -67,7 +67,7 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
                    void *dst)
 {
     const int x0 = bg_out_x0(ctx); /* (a tile's row in place: dst is column x0) */
-    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)x0 * ctx->src_bpp;
+    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)bg_out_src_x(ctx) * ctx->src_bpp;
     const int sw = bg_node_in_w(ctx, n, 0);
     const uint32_t *const u[3] = {(const uint32_t *)in[0][0], (const uint32_t *)in[0][1],
                                   (const uint32_t *)in[0][2]};
@@ -143,7 +143,7 @@ static bool fn_out_add16(const bg_ctx_t *ctx, const bg_node_t *n, int r,
                          const void *const *const in[BG_MAX_IN], void *dst)
 {
     const int x0 = bg_out_x0(ctx);
-    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)x0 * ctx->src_bpp;
+    const uint8_t *src = (const uint8_t *)in[1][0] + (size_t)bg_out_src_x(ctx) * ctx->src_bpp;
     const uint16_t *const u[3] = {(const uint16_t *)in[0][0], (const uint16_t *)in[0][1],
                                   (const uint16_t *)in[0][2]};
     if (bg_in_zero(ctx, 0, 0, 2))
