@@ -281,7 +281,7 @@ const char *bloom_status_str(bloom_status_t st);
 
 /* Static workspace: an upper bound of bloom_workspace_size() usable in a
  * constant expression (tests check it against the exact size over a grid of
- * sizes and depths) for the default preset without a tile (a tile adds an
+ * sizes and depths) for the default preset without a tile (a tile may add an
  * output row; the other presets need their own bytes: ask
  * bloom_workspace_size). src_bpp is the input bytes per pixel, copy 1 with
  * BLOOM_FLAG_COPY_SOURCE. Rows held per level (sim/docs/streaming.md): 12 at
@@ -296,8 +296,10 @@ const char *bloom_status_str(bloom_status_t st);
  * source rows and the end where L <= 6 (under 6*8*2^L: at most 28.5*2^L
  * bytes over widths 1 .. 4000, heights 1 .. 16384 and L = 1 .. 6); with
  * src_bpp 3 or 4 (RGB888, XRGB8888) the level-1 box keeps a row's sums
- * for the next, 16 bytes per column pair (8*w + 16). Computed in unsigned long long: a configuration
- * too big for the target's address space fails to compile as a static
+ * for the next, 16 bytes per column pair (under 8*w + 40: at most
+ * (w + 3)/2 pairs, two arrays rounded up to 8 bytes). Computed in unsigned
+ * long long: a configuration too big for the target's address space fails
+ * to compile as a static
  * array instead of wrapping around. */
 #define BLOOM_WORKSPACE_MAX(w, h, levels, src_bpp, copy)                                                     \
     BLOOM_WORKSPACE_MAX_S(w, h, levels, src_bpp, copy, 32)
@@ -313,7 +315,7 @@ const char *bloom_status_str(bloom_status_t st);
           ? 6ull * ((levels) <= 6 && (8ull << (levels)) < (unsigned long long)(h) ? (8ull << (levels))       \
                                                                                   : (unsigned long long)(h)) \
           : 0ull) +                                                                                          \
-     (BLOOM_SCHED_TABLE && ((src_bpp) == 3 || (src_bpp) == 4) ? 8ull * (unsigned long long)(w) + 16ull       \
+     (BLOOM_SCHED_TABLE && ((src_bpp) == 3 || (src_bpp) == 4) ? 8ull * (unsigned long long)(w) + 40ull       \
                                                               : 0ull) +                                      \
      ((copy) ? ((4ull << (levels)) + 8u) * (unsigned long long)(w) * (unsigned long long)(src_bpp) : 0ull))
 #define BLOOM_WORKSPACE_DEFINE(name, bytes) static uint64_t name[((bytes) + 7u) / 8u]

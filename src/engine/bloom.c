@@ -164,9 +164,12 @@ bloom_status_t bloom_plan(bloom_t *g, const bloom_config_t *cfg, bg_node_t *node
             bloom_tile_cut(g);
             /* the tile's row written in place when the output row function
              * can start at the tile's column (an even one: the tents pair
-             * the output's columns), else made into out_row and copied out */
-            const int lead = g->tile_x0 - g->gr.node[g->gr.out_node].xa;
-            g->out_direct = g->gr.out_from_x0 && !(lead & 1);
+             * the output's columns; with the flat kernels, which every set
+             * but the size build's has), else made into out_row and copied
+             * out */
+            const bg_node_t *o = &g->gr.node[g->gr.out_node];
+            const int lead = g->tile_x0 - o->xa;
+            g->out_direct = bg_out_from_x0(o->fn) && !(lead & 1) && g->row.kern.htent_eo;
             g->row.out_x0 = g->out_direct ? lead : 0;
             g->row.out_src_x = g->out_direct ? g->tile_x0 : 0; /* (input_step) */
         }

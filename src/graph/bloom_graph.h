@@ -224,10 +224,6 @@ typedef struct {
     bg_node_t *node;
     int nnodes, node_cap, out_node;
     bool failed; /* out of nodes, or a malformed input */
-#if !BLOOM_SMALL
-    bool out_from_x0; /* the output node's row function can write a tile's row
-                         in place, from column bg_out_x0 on (bg_build_out_add) */
-#endif
 } bg_graph_t;
 
 #define BG_SCRATCH 4
@@ -300,7 +296,7 @@ static inline bool bg_tiled(const bg_ctx_t *ctx)
     return !BLOOM_SMALL && ctx->tiled;
 }
 /* The output node's first column written: where a tile's row is written in
- * place (bg_graph_t.out_from_x0), the tile's first, and the output row
+ * place (an output row function that honours it: bg_out_from_x0), the tile's first, and the output row
  * function's dst and source row then point at it (the columns before it
  * are read, not made: its inputs' clamped reads spoil them); else 0. */
 static inline int bg_out_x0(const bg_ctx_t *ctx)

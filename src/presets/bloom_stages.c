@@ -75,7 +75,7 @@ bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *c
         bg_copy_row(ctx, src, (uint8_t *)dst, n->w - x0);
     else if (!BLOOM_SMALL && ctx->kern.htent_eo) /* the flat kernels: every set but BLOOM_SMALL's */
         bloom_row_out_k(&ctx->kern, u, r & 1, src, (uint8_t *)dst, x0, n->w, sw, &ctx->par.out);
-    else
+    else /* (x0 0: bloom_plan writes a row in place only with the flat kernels) */
         bloom_row_out_c(u, r & 1, src, (uint8_t *)dst, n->w, sw, &ctx->par.out);
     return true;
 }
@@ -219,3 +219,14 @@ int bg_build_updown(bg_graph_t *g, bg_row_fn d1_fn, bool d1_aux)
     }
     return U;
 }
+
+#if !BLOOM_SMALL
+bool bg_out_from_x0(bg_row_fn fn)
+{
+#if BLOOM_USE_S16
+    if (fn == fn_out_add16)
+        return true;
+#endif
+    return fn == bg_fn_out_add;
+}
+#endif

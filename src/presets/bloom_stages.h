@@ -13,6 +13,9 @@ bool bg_fn_add_tent(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *
                     void *dst);
 bool bg_fn_out_add(const bg_ctx_t *ctx, const bg_node_t *n, int r, const void *const *const in[BG_MAX_IN],
                    void *dst);
+/* Whether output row function fn writes a tile's row in place from
+ * column bg_out_x0 (bg_fn_out_add and its 16-bit twin): bloom_plan asks. */
+bool bg_out_from_x0(bg_row_fn fn);
 
 /* The default pipeline's graph (built) turned to 16-bit rows (cfg.sample_bits
  * = 16) on levels 1 .. BLOOM_S16_LEVELS: its stages' 16-bit twins, d1_16
@@ -40,9 +43,6 @@ static inline int bg_build_out_add(bg_graph_t *g, int u1)
     const int o = bg_node(g, bg_fn_out_add, g->w[0], g->h[0], 3, 0);
     bg_input(g, o, u1, BG_UP, -1, 1);
     bg_input(g, o, BG_SRC, BG_SAME, 0, 0);
-#if !BLOOM_SMALL
-    g->out_from_x0 = true; /* bg_fn_out_add (and its 16-bit twin) write from bg_out_x0 */
-#endif
     return g->out_node = o;
 }
 
