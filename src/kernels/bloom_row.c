@@ -42,8 +42,8 @@ void bloom_row_box_range_c(const uint32_t *const s[4], uint32_t *dst, int xa, in
         o[0] = BLOOM_BOX_RND(a[0] + b[0] + c[0] + d[0]);
         o[1] = BLOOM_BOX_RND(a[1] + b[1] + c[1] + d[1]);
         o[2] = BLOOM_BOX_RND(a[2] + b[2] + c[2] + d[2]);
-        memcpy(a, c, sizeof a);
-        memcpy(b, d, sizeof b);
+        a[0] = c[0], a[1] = c[1], a[2] = c[2]; /* (not memcpy: -Os calls it) */
+        b[0] = d[0], b[1] = d[1], b[2] = d[2];
 #endif
     }
 }
