@@ -37,7 +37,7 @@ stage_of() {
     bloom_row_out_k|bloom_row_out_c|out_fast) echo "output: chunk control" ;;
     bloom_row_copy_c|__memmove*|__memcpy*|memcpy|memmove) echo "output: rows and chunks copied (no bloom)" ;;
     bloom_row_vtent*|bloom_row_htent*|vtent8) echo "output: tent to full resolution" ;;
-    bloom_row_tent*|tent_*|il_add|vtent_in) echo "inner tents (levels 1..L-1)" ;;
+    bloom_row_tent*|tent_*|il_add*|vtent_in) echo "inner tents (levels 1..L-1)" ;;
     bloom_row_d1*|bloom_row_box_src*|bloom_row_knee*|bloom_div_u64_u32*|d1_*|bright*) echo "level-1 box from the source + knee" ;;
     bloom_row_box*|box_*) echo "box down, levels 2.." ;;
     bloom_row_dark*|max_bytes) echo "dark-row test on push" ;;
