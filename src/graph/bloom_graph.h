@@ -295,10 +295,11 @@ static inline bool bg_tiled(const bg_ctx_t *ctx)
 {
     return !BLOOM_SMALL && ctx->tiled;
 }
-/* The output node's first column written: where a tile's row is written in
- * place (an output row function that honours it: bg_out_from_x0), the tile's first, and the output row
- * function's dst and source row then point at it (the columns before it
- * are read, not made: its inputs' clamped reads spoil them); else 0. */
+/* The output node's first column written, counted from the node's first
+ * column: where a tile's row is written in place (an output row function
+ * that honours it: bg_out_from_x0), the tile's first column, at which the
+ * function's dst then points (the columns before it are read, not made:
+ * its inputs' clamped reads spoil them); else 0. */
 static inline int bg_out_x0(const bg_ctx_t *ctx)
 {
 #if !BLOOM_SMALL
